@@ -1,0 +1,332 @@
+// commands.cpp — render, plot, check and the preview fallback.
+#include "cli/commands.h"
+
+#include "core/file_io.h"
+#include "core/plot.h"
+#include "core/preset.h"
+#include "platform/headless_gl.h"
+#include "render/offscreen.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+
+namespace lab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void printDiagnostics(const Diagnostics& diagnostics) {
+    std::fputs(toString(diagnostics).c_str(), stderr);
+}
+
+// The headless GL context and renderer, created on first use.
+struct Gpu {
+    HeadlessGl gl;
+    OffscreenRenderer renderer;
+
+    bool start() {
+        std::string error;
+        if (!gl.create(error)) {
+            std::fprintf(stderr, "lab: %s\n", error.c_str());
+            return false;
+        }
+        Diagnostics diagnostics;
+        if (!renderer.init(diagnostics)) {
+            std::fprintf(stderr, "lab: the built-in shaders do not compile on %s:\n", gl.renderer().c_str());
+            printDiagnostics(diagnostics);
+            return false;
+        }
+        return true;
+    }
+};
+
+// Loads every preset, reporting all problems; nullopt entries for those that failed.
+std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<fs::path>& files, bool& anyBad) {
+    std::vector<std::optional<LoadedPreset>> loaded;
+    for (const fs::path& f : files) {
+        Diagnostics diagnostics;
+        loaded.push_back(loadPreset(f, diagnostics));
+        if (!loaded.back()) {
+            printDiagnostics(diagnostics);
+            anyBad = true;
+        }
+    }
+    return loaded;
+}
+
+void printNotes(const fs::path& preset, const std::vector<std::string>& notes) {
+    for (const std::string& n : notes) {
+        std::fprintf(stderr, "%s: note: %s\n", preset.string().c_str(), n.c_str());
+    }
+}
+
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+} // namespace
+
+std::optional<Size> parseSize(const std::string& text, std::string& error) {
+    Size s;
+    std::size_t x = text.find_first_of("xX");
+    auto number = [](std::string_view t, int& v) {
+        auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+        return ec == std::errc{} && p == t.data() + t.size();
+    };
+    if (x == std::string::npos || !number(std::string_view(text).substr(0, x), s.width) ||
+        !number(std::string_view(text).substr(x + 1), s.height)) {
+        error = "--size: expected WIDTHxHEIGHT such as 512x512, got \"" + text + "\"";
+        return std::nullopt;
+    }
+    if (s.width < 1 || s.height < 1 || s.width > kMaxRenderSide || s.height > kMaxRenderSide) {
+        error = "--size: each side must be from 1 to " + std::to_string(kMaxRenderSide) + ", got \"" + text + "\"";
+        return std::nullopt;
+    }
+    return s;
+}
+
+//----------------------------------------------------------------------------------------
+// lab render
+//----------------------------------------------------------------------------------------
+
+int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size size) {
+    bool anyBad = false;
+    auto loaded = loadAll(presets, anyBad);
+    bool toFolder = presets.size() > 1;
+    if (toFolder) {
+        std::error_code ec;
+        fs::create_directories(out, ec);
+        if (!fs::is_directory(out)) {
+            std::fprintf(stderr, "lab render: --out %s: with several presets --out must be a folder (%s)\n",
+                         out.string().c_str(), ec ? ec.message().c_str() : "it is a file");
+            return kExitBadInput;
+        }
+        // Two presets with the same file name would overwrite each other's PNG.
+        std::map<std::string, fs::path> names;
+        for (const fs::path& p : presets) {
+            auto [it, fresh] = names.emplace(p.stem().string(), p);
+            if (!fresh && it->second != p) {
+                std::fprintf(stderr, "lab render: %s and %s would both write %s.png\n", it->second.string().c_str(),
+                             p.string().c_str(), p.stem().string().c_str());
+                return kExitBadInput;
+            }
+        }
+    }
+    if (std::none_of(loaded.begin(), loaded.end(), [](const auto& p) { return p.has_value(); })) {
+        return kExitBadInput;
+    }
+    Gpu gpu;
+    if (!gpu.start()) {
+        return kExitFailure;
+    }
+    for (const auto& preset : loaded) {
+        if (!preset) {
+            continue;
+        }
+        Diagnostics diagnostics;
+        std::vector<std::string> notes;
+        std::optional<Image> image = gpu.renderer.render(*preset, size.width, size.height, diagnostics, &notes);
+        printNotes(preset->file, notes);
+        if (!image) {
+            printDiagnostics(diagnostics);
+            anyBad = true;
+            continue;
+        }
+        fs::path target = toFolder ? out / (preset->file.stem().string() + ".png") : out;
+        std::string error;
+        if (!writePng(*image, target, error)) {
+            std::fprintf(stderr, "lab render: %s\n", error.c_str());
+            anyBad = true;
+            continue;
+        }
+        std::printf("%s\n", target.string().c_str());
+    }
+    return anyBad ? kExitBadInput : kExitOk;
+}
+
+//----------------------------------------------------------------------------------------
+// lab plot
+//----------------------------------------------------------------------------------------
+
+int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float> incidentDeg) {
+    Diagnostics diagnostics;
+    std::optional<LoadedPreset> preset = loadPreset(presetFile, diagnostics);
+    if (!preset) {
+        printDiagnostics(diagnostics);
+        return kExitBadInput;
+    }
+    float angle = incidentDeg.value_or(preset->preset.plotIncidentDeg);
+    if (!(angle >= -90.0f && angle <= 90.0f)) {
+        std::fprintf(stderr, "lab plot: --incident-deg must be in [-90, 90], got %g\n", double(angle));
+        return kExitBadInput;
+    }
+    std::string error;
+    if (!writeFileAtomic(out, plotCsv(reflectedIntensity(preset->preset, angle)), error)) {
+        std::fprintf(stderr, "lab plot: %s\n", error.c_str());
+        return kExitBadInput;
+    }
+    std::printf("%s\n", out.string().c_str());
+    return kExitOk;
+}
+
+//----------------------------------------------------------------------------------------
+// lab check
+//----------------------------------------------------------------------------------------
+
+int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) {
+    if (!options.update && !fs::is_directory(options.golden)) {
+        std::fprintf(stderr, "lab check: --golden %s: no such folder\n", options.golden.string().c_str());
+        return kExitBadInput;
+    }
+    std::error_code ec;
+    fs::create_directories(options.update ? options.golden : options.report, ec);
+    bool anyBad = false;
+    auto loaded = loadAll(presets, anyBad);
+    Gpu gpu;
+    if (!gpu.start()) {
+        return kExitFailure;
+    }
+    std::string report;
+    auto line = [&](const std::string& s) {
+        std::printf("%s\n", s.c_str());
+        report += s + "\n";
+    };
+    int passed = 0, failed = 0;
+    bool reportFolderReady = false;
+    for (std::size_t i = 0; i < presets.size(); ++i) {
+        std::string name = presets[i].stem().string();
+        if (!loaded[i]) {
+            line("ERROR    " + name + ": the preset does not load (see above)");
+            ++failed;
+            continue;
+        }
+        Diagnostics diagnostics;
+        std::optional<Image> actual =
+            gpu.renderer.render(*loaded[i], options.size.width, options.size.height, diagnostics);
+        if (!actual) {
+            printDiagnostics(diagnostics);
+            line("ERROR    " + name + ": render failed");
+            ++failed;
+            continue;
+        }
+        fs::path goldenFile = options.golden / (name + ".png");
+        std::string error;
+        std::optional<Image> golden;
+        if (fs::exists(goldenFile)) {
+            golden = readPng(goldenFile, error);
+            if (!golden) {
+                line("ERROR    " + name + ": golden " + goldenFile.string() + ": " + error);
+                ++failed;
+                continue;
+            }
+        }
+        std::optional<Comparison> cmp;
+        if (golden) {
+            cmp = compareImages(*actual, *golden, options.tolerance);
+        }
+        std::string figures;
+        if (cmp && cmp->sameSize) {
+            figures = "max " + std::to_string(cmp->maxDifference) + "  mean " + fixed(cmp->meanDifference, 3) +
+                      "  over tolerance " + fixed(cmp->failingShare * 100.0, 3) + "%";
+        } else if (cmp) {
+            figures = "size " + std::to_string(actual->width) + "x" + std::to_string(actual->height) + " vs golden " +
+                      std::to_string(golden->width) + "x" + std::to_string(golden->height);
+        }
+        if (options.update) {
+            if (cmp && cmp->sameSize && cmp->maxDifference == 0) {
+                line("SAME     " + name);
+            } else if (!writePng(*actual, goldenFile, error)) {
+                line("ERROR    " + name + ": " + error);
+                ++failed;
+                continue;
+            } else {
+                line((golden ? "UPDATED  " : "CREATED  ") + name + (figures.empty() ? "" : "  (" + figures + ")"));
+            }
+            ++passed;
+            continue;
+        }
+        if (!golden) {
+            line("MISSING  " + name + ": no golden " + goldenFile.string() + " (create it with --update)");
+            ++failed;
+            continue;
+        }
+        if (cmp->passes(options.tolerance)) {
+            line("PASS     " + name + "  " + figures);
+            ++passed;
+            continue;
+        }
+        ++failed;
+        if (!reportFolderReady) {
+            fs::create_directories(options.report, ec);
+            reportFolderReady = true;
+        }
+        fs::path actualFile = options.report / (name + ".actual.png");
+        fs::path diffFile = options.report / (name + ".diff.png");
+        std::string written;
+        if (writePng(*actual, actualFile, error) && (!cmp->sameSize || writePng(cmp->diff, diffFile, error))) {
+            written = "  -> " + actualFile.string() + (cmp->sameSize ? ", " + diffFile.string() : "");
+        } else {
+            written = "  (could not write the images: " + error + ")";
+        }
+        line("FAIL     " + name + "  " + figures + written);
+    }
+    line(std::to_string(passed) + " passed, " + std::to_string(failed) + " failed");
+    if (!options.update) {
+        std::string error;
+        fs::create_directories(options.report, ec);
+        if (!writeFileAtomic(options.report / "report.txt", report, error)) {
+            std::fprintf(stderr, "lab check: %s\n", error.c_str());
+        }
+    }
+    if (failed > 0) {
+        return anyBad ? kExitBadInput : kExitFailure;
+    }
+    return kExitOk;
+}
+
+//----------------------------------------------------------------------------------------
+// lab (no GUI available)
+//----------------------------------------------------------------------------------------
+
+int runPreview(const std::optional<fs::path>& presetFile) {
+    LoadedPreset preset{Preset{}, {}};
+    preset.preset.name = "Default";
+    if (presetFile) {
+        Diagnostics diagnostics;
+        std::optional<LoadedPreset> loaded = loadPreset(*presetFile, diagnostics);
+        if (!loaded) {
+            printDiagnostics(diagnostics);
+            return kExitBadInput;
+        }
+        preset = std::move(*loaded);
+    }
+    std::error_code ec;
+    fs::path folder = fs::temp_directory_path(ec) / "lighting-lab";
+    fs::create_directories(folder, ec);
+    fs::path out = folder / ((presetFile ? presetFile->stem().string() : std::string("default")) + ".png");
+    Gpu gpu;
+    if (!gpu.start()) {
+        return kExitFailure;
+    }
+    Diagnostics diagnostics;
+    std::optional<Image> image = gpu.renderer.render(preset, 512, 512, diagnostics);
+    if (!image) {
+        printDiagnostics(diagnostics);
+        return kExitBadInput;
+    }
+    std::string error;
+    if (!writePng(*image, out, error)) {
+        std::fprintf(stderr, "lab: %s\n", error.c_str());
+        return kExitFailure;
+    }
+    std::printf("No window available: rendered \"%s\" to %s\n", preset.preset.name.c_str(), out.string().c_str());
+    return kExitOk;
+}
+
+} // namespace lab

@@ -1,0 +1,98 @@
+// file_io.cpp — bounded reads and atomic writes (POSIX).
+#include "core/file_io.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace lab {
+
+namespace fs = std::filesystem;
+
+std::optional<std::string> readFile(const fs::path& path, std::size_t maxBytes, std::string& error) {
+    // open() first and fstat() the descriptor, so the checks apply to what is actually read.
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) {
+        error = errno == ENOENT ? "no such file" : std::strerror(errno);
+        return std::nullopt;
+    }
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        error = S_ISDIR(st.st_mode) ? "is a folder, not a file" : "not a regular file";
+        return std::nullopt;
+    }
+    if (static_cast<std::uint64_t>(st.st_size) > maxBytes) {
+        ::close(fd);
+        error = "file is " + std::to_string(st.st_size) + " bytes, more than the limit of " +
+                std::to_string(maxBytes);
+        return std::nullopt;
+    }
+    std::string bytes(static_cast<std::size_t>(st.st_size), '\0');
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) {
+            continue;
+        }
+        if (n <= 0) {
+            break; // the file shrank or failed under us: keep what was read and report below
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+    if (done != bytes.size()) {
+        error = "could not read the whole file";
+        return std::nullopt;
+    }
+    return bytes;
+}
+
+bool writeFileAtomic(const fs::path& path, std::string_view bytes, std::string& error) {
+    fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    std::string tmpl = (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
+    int fd = ::mkstemp(tmpl.data());
+    if (fd < 0) {
+        error = "cannot create a file in " + folder.string() + ": " + std::strerror(errno);
+        return false;
+    }
+    auto fail = [&](const char* what) {
+        error = std::string(what) + " " + path.string() + ": " + std::strerror(errno);
+        ::close(fd);
+        ::unlink(tmpl.c_str());
+        return false;
+    };
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) {
+            continue;
+        }
+        if (n < 0) {
+            return fail("cannot write");
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    // mkstemp creates 0600; give the file the usual permissions, as an ordinary write would.
+    mode_t mask = ::umask(0);
+    ::umask(mask);
+    if (::fchmod(fd, 0666 & ~mask) != 0 || ::fsync(fd) != 0) {
+        return fail("cannot write");
+    }
+    if (::close(fd) != 0) {
+        error = "cannot write " + path.string() + ": " + std::strerror(errno);
+        ::unlink(tmpl.c_str());
+        return false;
+    }
+    if (::rename(tmpl.c_str(), path.c_str()) != 0) {
+        error = "cannot replace " + path.string() + ": " + std::strerror(errno);
+        ::unlink(tmpl.c_str());
+        return false;
+    }
+    return true;
+}
+
+} // namespace lab

@@ -1,0 +1,39 @@
+// gltf.h — loading a glTF 2.0 model (.gltf or .glb) into one Mesh, safely.
+//
+// tinygltf 2.7.0 parses the file but does not check what it parsed: accessors past their
+// buffers, out-of-range indices and node cycles all get through, and it opens any path a URI
+// names. This loader is the guard. It:
+//   * reads only regular files inside the model's own folder (its own file-system callbacks),
+//   * refuses every index and byte range it cannot prove in bounds (with overflow checks),
+//   * bounds vertex, index and triangle counts before allocating,
+//   * skips images (the lab uses the preset's material, not glTF materials or textures).
+// Every triangle primitive (triangles, strips, fans) of the default scene contributes, with
+// the node transforms applied; missing normals are computed (area-weighted). No rescaling.
+#pragma once
+
+#include "core/diagnostics.h"
+#include "core/mesh.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace lab {
+
+struct GltfLimits {
+    std::size_t maxFileBytes = std::size_t{512} << 20;  // the .gltf/.glb and each external buffer
+    std::size_t maxTriangles = 20'000'000;
+    std::size_t maxVertices = 20'000'000;
+    int maxNodeDepth = 64;
+};
+
+struct GltfResult {
+    Mesh mesh;
+    std::vector<std::string> notes; // things skipped that the user may want to know about
+};
+
+// `displayName` prefixes diagnostics. Returns nullopt after adding at least one diagnostic.
+std::optional<GltfResult> loadGltf(const std::filesystem::path& file, const std::string& displayName,
+                                   Diagnostics& diagnostics, const GltfLimits& limits = {});
+
+} // namespace lab

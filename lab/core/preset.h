@@ -1,0 +1,158 @@
+// preset.h — the scene as plain data, and its JSON file format ("lighting-lab-preset" v1).
+//
+// The preset is the scene: the renderer draws a Preset, `lab check` renders one, and the GUI
+// edits one in place. There is no second copy of the state.
+//
+// This file owns: the Preset struct with the documented defaults, loading with full
+// validation (every problem reported with its JSON path), and atomic saving of every key.
+// It does not load meshes (mesh.h, gltf.h) or touch GL.
+#pragma once
+
+#include "core/diagnostics.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lab {
+
+inline constexpr std::string_view kPresetFormat = "lighting-lab-preset";
+inline constexpr int kPresetVersion = 1;
+inline constexpr int kMaxLights = 8;
+
+enum class Builtin { Sphere, Cube, Plane, Torus };
+enum class Shading { Flat, Gouraud, Phong };
+enum class NormalMatrixMode { InverseTranspose, ModelView };
+enum class BrdfModel { Phong, BlinnPhong, CookTorrance };
+enum class Distribution { Beckmann, Gaussian, Ggx };
+enum class FresnelMode { Schlick, Full };
+enum class LightType { Point, Directional, Spot };
+
+struct Model {
+    // Exactly one source: a built-in (gltf empty) or a glTF path relative to the preset file.
+    Builtin builtin = Builtin::Sphere;
+    std::string gltf;
+    glm::ivec2 subdivisions{64, 32}; // sphere [slices, stacks], plane [nx, nz], torus [major, minor], cube [n, n] per face
+    glm::vec3 scale{1.0f};
+    glm::vec3 rotateDeg{0.0f};
+    glm::vec3 translate{0.0f};
+    bool operator==(const Model&) const = default;
+};
+
+struct Camera {
+    glm::vec3 eye{0.0f, 0.0f, 4.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovyDeg = 45.0f;
+    float near = 0.1f;
+    float far = 100.0f;
+    bool operator==(const Camera&) const = default;
+};
+
+struct CookTorrance {
+    Distribution distribution = Distribution::Beckmann;
+    float roughness = 0.3f;
+    FresnelMode fresnel = FresnelMode::Schlick;
+    float ior = 1.5f;
+    bool geometry = true;
+    bool operator==(const CookTorrance&) const = default;
+};
+
+struct MaterialDesc {
+    glm::vec3 emissive{0.0f};
+    glm::vec3 ambient{0.2f};
+    glm::vec3 diffuse{0.8f};
+    glm::vec3 specular{1.0f};
+    float shininess = 32.0f;
+    bool operator==(const MaterialDesc&) const = default;
+};
+
+struct LightDesc {
+    LightType type = LightType::Point;
+    glm::vec3 position{2.0f, 2.0f, 2.0f};
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};
+    glm::vec3 ambient{0.0f};
+    glm::vec3 diffuse{1.0f};
+    glm::vec3 specular{1.0f};
+    glm::vec3 attenuation{1.0f, 0.0f, 0.0f}; // c0, c1, c2
+    float cutoffDeg = 30.0f;
+    float exponent = 8.0f;
+    bool enabled = true;
+    bool operator==(const LightDesc&) const = default;
+};
+
+struct TermSwitches {
+    bool emissive = true;
+    bool ambient = true;
+    bool diffuse = true;
+    bool specular = true;
+    bool operator==(const TermSwitches&) const = default;
+};
+
+struct Preset {
+    std::string name = "Untitled";
+    std::string description;
+    Model model;
+    Camera camera;
+    Shading shading = Shading::Phong;
+    NormalMatrixMode normalMatrix = NormalMatrixMode::InverseTranspose;
+    BrdfModel brdf = BrdfModel::Phong;
+    CookTorrance cookTorrance;
+    MaterialDesc material;
+    glm::vec3 ambientLight{0.1f};
+    std::vector<LightDesc> lights{LightDesc{}};
+    TermSwitches terms;
+    glm::vec3 background{0.05f, 0.05f, 0.08f};
+    float plotIncidentDeg = 45.0f;
+    bool operator==(const Preset&) const = default;
+};
+
+// Default subdivisions of each built-in when the preset does not give them.
+glm::ivec2 defaultSubdivisions(Builtin builtin);
+
+// A preset together with where it came from; the folder is what glTF paths are relative to.
+struct LoadedPreset {
+    Preset preset;
+    std::filesystem::path file; // empty when parsed from memory
+    std::filesystem::path folder() const { return file.empty() ? std::filesystem::path{} : file.parent_path(); }
+};
+
+// Parses and validates preset JSON text. `displayName` prefixes every diagnostic ("red.json").
+// `folder`, when given, is where a glTF model path is resolved and must stay inside; when
+// absent, a glTF model is refused (nothing to resolve it against).
+std::optional<Preset> parsePreset(std::string_view text, const std::string& displayName,
+                                  const std::optional<std::filesystem::path>& folder,
+                                  Diagnostics& diagnostics);
+
+// Reads, parses and validates a preset file (at most kMaxPresetBytes).
+std::optional<LoadedPreset> loadPreset(const std::filesystem::path& file, Diagnostics& diagnostics);
+
+// The preset as JSON text with every key, in the documented order. Never writes non-finite values.
+std::string presetToJson(const Preset& preset);
+
+// Writes presetToJson(preset) atomically (temporary file, flush, rename).
+bool savePreset(const Preset& preset, const std::filesystem::path& file, Diagnostics& diagnostics);
+
+// Resolves a preset's glTF path against its folder, refusing absolute paths, paths that leave
+// the folder (symbolic links included) and anything that is not an existing regular file.
+std::optional<std::filesystem::path> resolveModelPath(const std::string& gltf,
+                                                      const std::filesystem::path& folder,
+                                                      std::string& error);
+
+inline constexpr std::size_t kMaxPresetBytes = 1u << 20;
+
+// Names as they appear in preset files, shared by the loader, the saver, the CLI and the GUI.
+std::string_view toString(Builtin v);
+std::string_view toString(Shading v);
+std::string_view toString(NormalMatrixMode v);
+std::string_view toString(BrdfModel v);
+std::string_view toString(Distribution v);
+std::string_view toString(FresnelMode v);
+std::string_view toString(LightType v);
+
+} // namespace lab

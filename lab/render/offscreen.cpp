@@ -1,0 +1,55 @@
+// offscreen.cpp — load the model (cached), draw into a framebuffer, read it back.
+#include "render/offscreen.h"
+
+#include "core/model_loader.h"
+
+namespace lab {
+
+namespace {
+
+std::string modelKey(const LoadedPreset& p) {
+    const Model& m = p.preset.model;
+    if (m.gltf.empty()) {
+        return std::string(toString(m.builtin)) + ":" + std::to_string(m.subdivisions.x) + "x" +
+               std::to_string(m.subdivisions.y);
+    }
+    std::error_code ec;
+    return "gltf:" + std::filesystem::weakly_canonical(p.folder() / m.gltf, ec).string();
+}
+
+} // namespace
+
+bool OffscreenRenderer::init(Diagnostics& diagnostics) { return renderer_.init(diagnostics); }
+
+std::optional<Image> OffscreenRenderer::render(const LoadedPreset& preset, int width, int height,
+                                               Diagnostics& diagnostics, std::vector<std::string>* notes) {
+    std::string key = modelKey(preset);
+    if (key != meshKey_) {
+        Diagnostics problems;
+        std::optional<Mesh> mesh = loadModel(preset.preset.model, preset.folder(), problems, notes);
+        if (!mesh) {
+            for (Diagnostic& d : problems) {
+                if (d.file.empty()) {
+                    d.file = preset.file.string();
+                } else {
+                    d.file = preset.file.string() + ": " + d.file;
+                }
+            }
+            diagnostics.insert(diagnostics.end(), problems.begin(), problems.end());
+            return std::nullopt;
+        }
+        renderer_.setMesh(std::move(*mesh));
+        meshKey_ = key;
+    }
+    Framebuffer target(width, height);
+    if (!target.complete()) {
+        diagnostics.push_back({"", "", "cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
+                                           " framebuffer"});
+        return std::nullopt;
+    }
+    target.bind();
+    renderer_.draw(preset.preset, width, height);
+    return target.readRgb();
+}
+
+} // namespace lab

@@ -1,0 +1,34 @@
+// offscreen.h — presets to images without a window: what `lab render` and `lab check` run.
+//
+// Owns a Renderer and keeps the last mesh, so rendering many presets of the same model loads
+// it once. Test renders are deterministic: fixed size, no MSAA, no dithering, no UI.
+// Needs a current GL context (platform/headless_gl.h).
+#pragma once
+
+#include "core/image.h"
+#include "core/preset.h"
+#include "render/renderer.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lab {
+
+inline constexpr int kMaxRenderSide = 8192;
+
+class OffscreenRenderer {
+public:
+    bool init(Diagnostics& diagnostics);
+
+    // Renders at width × height. Problems with the preset's model are reported with the
+    // preset's file name; `notes` gets what the model loader skipped.
+    std::optional<Image> render(const LoadedPreset& preset, int width, int height, Diagnostics& diagnostics,
+                                std::vector<std::string>* notes = nullptr);
+
+private:
+    Renderer renderer_;
+    std::string meshKey_; // which model the renderer holds now
+};
+
+} // namespace lab

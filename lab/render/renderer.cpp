@@ -1,0 +1,319 @@
+// renderer.cpp — programs, uniforms, mesh buffers and the draw.
+#include "render/renderer.h"
+
+#include "core/image.h"
+
+#include <array>
+#include <cstddef>
+#include <string>
+
+namespace lab {
+
+namespace {
+
+// Uniform locations of one program, looked up once after linking.
+struct Uniforms {
+    GLint modelView = -1, projection = -1, normalMatrix = -1;
+    GLint emissive = -1, ambient = -1, diffuse = -1, specular = -1, shininess = -1;
+    GLint brdfModel = -1, distribution = -1, fresnel = -1, geometry = -1, roughness = -1, ior = -1;
+    GLint termEmissive = -1, termAmbient = -1, termDiffuse = -1, termSpecular = -1;
+    GLint ambientLight = -1, lightCount = -1;
+    struct Light {
+        GLint type, position, direction, ambient, diffuse, specular, attenuation, cosCutoff, exponent;
+    };
+    std::array<Light, glsl::MAX_LIGHTS> lights{};
+
+    explicit Uniforms(GLuint p) {
+        auto at = [p](const std::string& name) { return glGetUniformLocation(p, name.c_str()); };
+        modelView = at("u_modelView");
+        projection = at("u_projection");
+        normalMatrix = at("u_normalMatrix");
+        emissive = at("u_material.emissive");
+        ambient = at("u_material.ambient");
+        diffuse = at("u_material.diffuse");
+        specular = at("u_material.specular");
+        shininess = at("u_material.shininess");
+        brdfModel = at("u_brdf.model");
+        distribution = at("u_brdf.distribution");
+        fresnel = at("u_brdf.fresnel");
+        geometry = at("u_brdf.geometry");
+        roughness = at("u_brdf.roughness");
+        ior = at("u_brdf.ior");
+        termEmissive = at("u_terms.emissive");
+        termAmbient = at("u_terms.ambient");
+        termDiffuse = at("u_terms.diffuse");
+        termSpecular = at("u_terms.specular");
+        ambientLight = at("u_ambientLight");
+        lightCount = at("u_lightCount");
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            std::string l = "u_lights[" + std::to_string(i) + "].";
+            lights[i] = {at(l + "type"),     at(l + "position"),    at(l + "direction"),
+                         at(l + "ambient"),  at(l + "diffuse"),     at(l + "specular"),
+                         at(l + "attenuation"), at(l + "cosCutoff"), at(l + "exponent")};
+        }
+    }
+
+    // Uploads exactly what the CPU face evaluates with (packShading).
+    void upload(const Transforms& t, const ShadingInputs& in) const {
+        glUniformMatrix4fv(modelView, 1, GL_FALSE, &t.modelView[0][0]);
+        glUniformMatrix4fv(projection, 1, GL_FALSE, &t.projection[0][0]);
+        glUniformMatrix3fv(normalMatrix, 1, GL_FALSE, &t.normalMatrix[0][0]);
+        glUniform3fv(emissive, 1, &in.material.emissive[0]);
+        glUniform3fv(ambient, 1, &in.material.ambient[0]);
+        glUniform3fv(diffuse, 1, &in.material.diffuse[0]);
+        glUniform3fv(specular, 1, &in.material.specular[0]);
+        glUniform1f(shininess, in.material.shininess);
+        glUniform1i(brdfModel, in.brdf.model);
+        glUniform1i(distribution, in.brdf.distribution);
+        glUniform1i(fresnel, in.brdf.fresnel);
+        glUniform1i(geometry, in.brdf.geometry);
+        glUniform1f(roughness, in.brdf.roughness);
+        glUniform1f(ior, in.brdf.ior);
+        glUniform1i(termEmissive, in.terms.emissive);
+        glUniform1i(termAmbient, in.terms.ambient);
+        glUniform1i(termDiffuse, in.terms.diffuse);
+        glUniform1i(termSpecular, in.terms.specular);
+        glUniform3fv(ambientLight, 1, &in.ambientLight[0]);
+        glUniform1i(lightCount, in.lightCount);
+        for (int i = 0; i < in.lightCount; ++i) {
+            const glsl::Light& l = in.lights[i];
+            const Light& u = lights[static_cast<std::size_t>(i)];
+            glUniform1i(u.type, l.type);
+            glUniform3fv(u.position, 1, &l.position[0]);
+            glUniform3fv(u.direction, 1, &l.direction[0]);
+            glUniform3fv(u.ambient, 1, &l.ambient[0]);
+            glUniform3fv(u.diffuse, 1, &l.diffuse[0]);
+            glUniform3fv(u.specular, 1, &l.specular[0]);
+            glUniform3fv(u.attenuation, 1, &l.attenuation[0]);
+            glUniform1f(u.cosCutoff, l.cosCutoff);
+            glUniform1f(u.exponent, l.exponent);
+        }
+    }
+};
+
+struct Program {
+    GLuint id = 0;
+    std::unique_ptr<Uniforms> uniforms;
+    void reset(GLuint p) {
+        if (id) {
+            glDeleteProgram(id);
+        }
+        id = p;
+        uniforms = p ? std::make_unique<Uniforms>(p) : nullptr;
+    }
+};
+
+struct GpuBuffers {
+    GLuint vao = 0, vbo = 0, ebo = 0;
+    GLsizei count = 0;
+    void release() {
+        if (vao) glDeleteVertexArrays(1, &vao);
+        if (vbo) glDeleteBuffers(1, &vbo);
+        if (ebo) glDeleteBuffers(1, &ebo);
+        vao = vbo = ebo = 0;
+        count = 0;
+    }
+};
+
+// Attribute 2 (the point the lighting is evaluated at) is the vertex itself for smooth
+// shading and the triangle's centroid for flat shading.
+void bindFlatLayout() {
+    const auto stride = static_cast<GLsizei>(sizeof(FlatVertex));
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(FlatVertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(FlatVertex, faceNormal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(FlatVertex, centroid)));
+}
+
+void uploadFlat(GpuBuffers& b, const std::vector<FlatVertex>& vertices) {
+    glGenVertexArrays(1, &b.vao);
+    glBindVertexArray(b.vao);
+    glGenBuffers(1, &b.vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(FlatVertex)), vertices.data(),
+                 GL_STATIC_DRAW);
+    bindFlatLayout();
+    b.count = static_cast<GLsizei>(vertices.size());
+    glBindVertexArray(0);
+}
+
+} // namespace
+
+struct Renderer::Impl {
+    StageSources sources;
+    Program perVertex, perPixel;
+    Mesh mesh;
+    GpuBuffers smooth, flat;
+    bool flatValid = false;
+
+    bool build(const StageSources& s, Diagnostics& diagnostics) {
+        std::optional<GLuint> v = buildProgram(s, {"LAB_PER_VERTEX 1"}, diagnostics);
+        if (!v) {
+            return false;
+        }
+        std::optional<GLuint> p = buildProgram(s, {"LAB_PER_PIXEL 1"}, diagnostics);
+        if (!p) {
+            glDeleteProgram(*v);
+            return false;
+        }
+        perVertex.reset(*v);
+        perPixel.reset(*p);
+        sources = s;
+        return true;
+    }
+
+    const Program& programFor(Shading shading) const {
+        return shading == Shading::Phong ? perPixel : perVertex;
+    }
+};
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
+
+Renderer::~Renderer() {
+    impl_->perVertex.reset(0);
+    impl_->perPixel.reset(0);
+    impl_->smooth.release();
+    impl_->flat.release();
+}
+
+bool Renderer::init(Diagnostics& diagnostics) { return impl_->build(builtinStageSources(), diagnostics); }
+
+bool Renderer::setStageSources(const StageSources& sources, Diagnostics& diagnostics) {
+    return impl_->build(sources, diagnostics);
+}
+
+const StageSources& Renderer::stageSources() const { return impl_->sources; }
+
+void Renderer::setMesh(Mesh mesh) {
+    Impl& m = *impl_;
+    m.smooth.release();
+    m.flat.release();
+    m.flatValid = false;
+    m.mesh = std::move(mesh);
+
+    // Interleaved position + normal; attribute 2 aliases the position.
+    std::vector<float> interleaved;
+    interleaved.reserve(m.mesh.positions.size() * 6);
+    for (std::size_t i = 0; i < m.mesh.positions.size(); ++i) {
+        const glm::vec3& p = m.mesh.positions[i];
+        const glm::vec3& n = m.mesh.normals[i];
+        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+    }
+    GpuBuffers& b = m.smooth;
+    glGenVertexArrays(1, &b.vao);
+    glBindVertexArray(b.vao);
+    glGenBuffers(1, &b.vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)), interleaved.data(),
+                 GL_STATIC_DRAW);
+    const GLsizei stride = 6 * sizeof(float);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glGenBuffers(1, &b.ebo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ebo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.mesh.indices.size() * sizeof(std::uint32_t)),
+                 m.mesh.indices.data(), GL_STATIC_DRAW);
+    b.count = static_cast<GLsizei>(m.mesh.indices.size());
+    glBindVertexArray(0);
+}
+
+void Renderer::draw(const Preset& preset, int width, int height) {
+    Impl& m = *impl_;
+    glViewport(0, 0, width, height);
+    glDisable(GL_DITHER);
+    glClearColor(preset.background.r, preset.background.g, preset.background.b, 1.0f);
+    glClearDepthf(1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE); // no two-sided lighting, as in the classic pipeline; a plane seen from behind stays visible
+    if (m.smooth.count == 0) {
+        return;
+    }
+    const Program& program = m.programFor(preset.shading);
+    glUseProgram(program.id);
+    Transforms t = computeTransforms(preset, static_cast<float>(width) / static_cast<float>(height));
+    program.uniforms->upload(t, packShading(preset, t.view));
+    if (preset.shading == Shading::Flat) {
+        if (!m.flatValid) {
+            uploadFlat(m.flat, expandFlat(m.mesh));
+            m.flatValid = true;
+        }
+        glBindVertexArray(m.flat.vao);
+        glDrawArrays(GL_TRIANGLES, 0, m.flat.count);
+    } else {
+        glBindVertexArray(m.smooth.vao);
+        glDrawElements(GL_TRIANGLES, m.smooth.count, GL_UNSIGNED_INT, nullptr);
+    }
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+void Renderer::drawPoints(const Preset& preset, const std::vector<FlatVertex>& vertices, int width, int height) {
+    glViewport(0, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    const Program& program = impl_->programFor(preset.shading);
+    glUseProgram(program.id);
+    Transforms t = computeTransforms(preset, static_cast<float>(width) / static_cast<float>(height));
+    program.uniforms->upload(t, packShading(preset, t.view));
+    GpuBuffers points;
+    uploadFlat(points, vertices);
+    glBindVertexArray(points.vao);
+    glDrawArrays(GL_POINTS, 0, points.count);
+    glBindVertexArray(0);
+    points.release();
+    glUseProgram(0);
+}
+
+//----------------------------------------------------------------------------------------
+// Framebuffer
+//----------------------------------------------------------------------------------------
+
+Framebuffer::Framebuffer(int width, int height) : width_(width), height_(height) {
+    glGenFramebuffers(1, &fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glGenRenderbuffers(1, &color_);
+    glBindRenderbuffer(GL_RENDERBUFFER, color_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+    glGenRenderbuffers(1, &depth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    complete_ = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+Framebuffer::~Framebuffer() {
+    glDeleteFramebuffers(1, &fbo_);
+    glDeleteRenderbuffers(1, &color_);
+    glDeleteRenderbuffers(1, &depth_);
+}
+
+void Framebuffer::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, fbo_); }
+
+Image Framebuffer::readRgb() const {
+    bind();
+    std::vector<std::uint8_t> rgba(std::size_t(width_) * std::size_t(height_) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    Image image{width_, height_, std::vector<std::uint8_t>(std::size_t(width_) * std::size_t(height_) * 3)};
+    // GL's first row is the bottom one.
+    for (int y = 0; y < height_; ++y) {
+        const std::uint8_t* src = rgba.data() + std::size_t(height_ - 1 - y) * std::size_t(width_) * 4;
+        std::uint8_t* dst = image.rgb.data() + std::size_t(y) * std::size_t(width_) * 3;
+        for (int x = 0; x < width_; ++x) {
+            dst[3 * x + 0] = src[4 * x + 0];
+            dst[3 * x + 1] = src[4 * x + 1];
+            dst[3 * x + 2] = src[4 * x + 2];
+        }
+    }
+    return image;
+}
+
+} // namespace lab

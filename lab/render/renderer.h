@@ -1,0 +1,70 @@
+// renderer.h — draws a Preset with the lab's shaders. GL only: no windows, no ImGui.
+//
+// The renderer owns the GL programs (one per evaluation site: per vertex for flat and Gouraud,
+// per pixel for Phong) and the GPU copies of the current mesh. draw() reads the Preset and
+// writes into whatever framebuffer is bound; it never changes the Preset.
+// It does not create GL contexts (lab/platform) or load files (lab/core).
+#pragma once
+
+#include "core/image.h"
+#include "core/lighting.h"
+#include "core/mesh.h"
+#include "core/preset.h"
+#include "render/gl.h"
+#include "render/shader.h"
+
+#include <memory>
+
+namespace lab {
+
+class Renderer {
+public:
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Compiles the built-in shaders. Needs a current GL ES 3.0 context.
+    bool init(Diagnostics& diagnostics);
+
+    // Replaces the shader stage bodies; on failure keeps the previous programs running.
+    bool setStageSources(const StageSources& sources, Diagnostics& diagnostics);
+    const StageSources& stageSources() const;
+
+    // Uploads a mesh; the flat-shading copy is built the first time flat shading needs it.
+    void setMesh(Mesh mesh);
+
+    // Clears to the background and draws the model into the bound framebuffer, viewport
+    // (0, 0, width, height).
+    void draw(const Preset& preset, int width, int height);
+
+    // Draws `vertices` as single-pixel points with the preset's shading, transforms and
+    // lights (no clear). The CPU–GPU parity test places probes with it.
+    void drawPoints(const Preset& preset, const std::vector<FlatVertex>& vertices, int width, int height);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// An offscreen RGBA8 + 24-bit depth framebuffer, read back as a top-row-first RGB image.
+class Framebuffer {
+public:
+    Framebuffer(int width, int height);
+    ~Framebuffer();
+    Framebuffer(const Framebuffer&) = delete;
+    Framebuffer& operator=(const Framebuffer&) = delete;
+
+    bool complete() const { return complete_; }
+    void bind() const;
+    Image readRgb() const;
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+private:
+    int width_, height_;
+    GLuint fbo_ = 0, color_ = 0, depth_ = 0;
+    bool complete_ = false;
+};
+
+} // namespace lab

@@ -1,0 +1,93 @@
+// lighting_api.glsl - the lighting model's constants, structs and function prototypes.
+//
+// Valid GLSL ES 3.00 and valid C++20 with GLM, like lighting.glsl, which holds the definitions.
+// C++ includes this file from lab/core/lighting.h (any number of translation units may), and
+// lighting.glsl from lab/core/lighting.cpp only. The shaders get both, this one first.
+// A definition that drifts from its prototype fails to link in both languages.
+
+const float PI = 3.14159265358979f;
+const int MAX_LIGHTS = 8;
+
+const int LIGHT_POINT = 0;
+const int LIGHT_DIRECTIONAL = 1;
+const int LIGHT_SPOT = 2;
+
+const int BRDF_PHONG = 0;
+const int BRDF_BLINN_PHONG = 1;
+const int BRDF_COOK_TORRANCE = 2;
+
+const int DISTRIBUTION_BECKMANN = 0;
+const int DISTRIBUTION_GAUSSIAN = 1;
+const int DISTRIBUTION_GGX = 2;
+
+const int FRESNEL_SCHLICK = 0;
+const int FRESNEL_FULL = 1;
+
+struct Material {
+    vec3 emissive;
+    vec3 ambient;
+    vec3 diffuse;
+    vec3 specular;
+    float shininess;
+};
+
+// `brdf` picks the specular lobe; the other fields are Cook-Torrance's.
+struct Brdf {
+    int model;
+    int distribution;
+    int fresnel;
+    bool geometry;
+    float roughness;
+    float ior;
+};
+
+struct Terms {
+    bool emissive;
+    bool ambient;
+    bool diffuse;
+    bool specular;
+};
+
+// A light already in eye space: position transformed by the view matrix, direction by its
+// upper 3x3 and normalized. Only enabled lights are packed.
+struct Light {
+    int type;
+    vec3 position;
+    vec3 direction;
+    vec3 ambient;
+    vec3 diffuse;
+    vec3 specular;
+    vec3 attenuation; // c0, c1, c2
+    float cosCutoff;
+    float exponent;
+};
+
+// Light falloff
+float attenuation(vec3 c, float d);
+float spotFactor(vec3 L, vec3 S, float cosCutoff, float exponent);
+
+// Specular lobes
+vec3 reflectionVector(vec3 N, vec3 L);
+vec3 halfVector(vec3 L, vec3 V);
+float phongSpecular(vec3 N, vec3 L, vec3 V, float shininess);
+float blinnPhongSpecular(vec3 N, vec3 L, vec3 V, float shininess);
+
+// Cook-Torrance terms
+float distributionBeckmann(float NoH, float m);
+float distributionGaussian(float NoH, float m);
+float distributionGGX(float NoH, float m);
+float fresnelF0(float ior);
+float fresnelSchlick(float VoH, float F0);
+float fresnelDielectric(float VoH, float ior);
+float geometryCookTorrance(float NoH, float NoV, float NoL, float VoH);
+float distributionTerm(float NoH, Brdf b);
+float fresnelTerm(float VoH, Brdf b);
+float geometryTerm(float NoH, float NoV, float NoL, float VoH, Brdf b);
+float cookTorranceSpecular(vec3 N, vec3 L, vec3 V, Brdf b);
+float specularFactor(vec3 N, vec3 L, vec3 V, float shininess, Brdf b);
+
+// The whole model
+vec3 lightVector(Light l, vec3 p);
+float lightAttenuation(Light l, vec3 p, vec3 L);
+vec3 shade(Material m, Brdf b, Terms t, vec3 ambientLight, Light lights[MAX_LIGHTS],
+           int lightCount, vec3 p, vec3 N);

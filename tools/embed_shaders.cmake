@@ -1,0 +1,20 @@
+# embed_shaders.cmake — writes shader_sources.h with the text of each GLSL file in shaders/.
+# Run by the build (see CMakeLists.txt) whenever a shader changes:
+#   cmake -DOUT=<header> -DFILES="a;b" -P embed_shaders.cmake
+set(body "// Generated from shaders/ by tools/embed_shaders.cmake. Do not edit.\n#pragma once\n#include <string_view>\nnamespace lab {\nstruct EmbeddedShader { std::string_view name; std::string_view text; };\ninline constexpr EmbeddedShader kEmbeddedShaders[] = {\n")
+foreach(file IN LISTS FILES)
+  file(READ "${file}" text)
+  string(FIND "${text}" ")lab_glsl\"" clash)
+  if(NOT clash EQUAL -1)
+    message(FATAL_ERROR "${file} contains the raw-string delimiter )lab_glsl\"")
+  endif()
+  if(text MATCHES "[^\t\n\r -~]")
+    message(FATAL_ERROR "${file} has a non-ASCII character; GLSL ES and WebGL accept ASCII only")
+  endif()
+  get_filename_component(name "${file}" NAME)
+  string(APPEND body "    {\"${name}\", R\"lab_glsl(${text})lab_glsl\"},\n")
+endforeach()
+string(APPEND body "};\n} // namespace lab\n")
+file(WRITE "${OUT}.tmp" "${body}")
+file(COPY_FILE "${OUT}.tmp" "${OUT}" ONLY_IF_DIFFERENT)
+file(REMOVE "${OUT}.tmp")
