@@ -3,6 +3,7 @@
 
 #include "core/file_io.h"
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <glm/geometric.hpp>
@@ -29,7 +30,16 @@ namespace {
 struct FileGuard {
     fs::path folder; // canonical
     std::size_t maxBytes = 0;
-    std::string refusal; // why the last refused file was refused, for the diagnostic
+    std::string refusal; // why the first refused file was refused, for the diagnostic
+
+    // tinygltf tries the model's folder first, then the process's working folder; the first
+    // answer is the one that explains the failure.
+    bool refuse(const char* why) {
+        if (refusal.empty()) {
+            refusal = why;
+        }
+        return false;
+    }
 };
 
 bool isInside(const fs::path& folder, const fs::path& path) {
@@ -44,17 +54,14 @@ bool guardedFileExists(const std::string& path, void* user) {
     std::error_code ec;
     fs::path canonical = fs::weakly_canonical(fs::path(path), ec);
     if (ec || !isInside(guard->folder, canonical)) {
-        guard->refusal = "leaves the model's folder";
-        return false;
+        return guard->refuse("leaves the model's folder");
     }
     fs::file_status status = fs::status(canonical, ec);
     if (!fs::exists(status)) {
-        guard->refusal = "file not found";
-        return false;
+        return guard->refuse("file not found");
     }
     if (!fs::is_regular_file(status)) {
-        guard->refusal = "not a regular file";
-        return false;
+        return guard->refuse("not a regular file");
     }
     return true;
 }
@@ -73,7 +80,7 @@ bool guardedReadWholeFile(std::vector<unsigned char>* out, std::string* err, con
     std::string error;
     std::optional<std::string> bytes = readFile(path, guard->maxBytes, error);
     if (!bytes) {
-        guard->refusal = error;
+        guard->refuse(error.c_str()); // copied before `error` goes
         if (err) {
             *err += error;
         }
@@ -474,6 +481,52 @@ bool checkGlbHeader(const std::string& bytes, std::string& error) {
     return true;
 }
 
+// Refuses, with the URI and its JSON path, every buffer or image URI that is absolute, has a
+// scheme, or climbs out of the model's folder, before tinygltf tries to open anything. The
+// file-system callbacks above stay as the second line of defence (symbolic links, for one).
+bool checkUris(std::string_view json, const std::string& file, Diagnostics& out) {
+    nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
+    if (doc.is_discarded() || !doc.is_object()) {
+        return true; // tinygltf reports malformed JSON in its own words
+    }
+    bool ok = true;
+    for (const char* list : {"buffers", "images"}) {
+        auto items = doc.find(list);
+        if (items == doc.end() || !items->is_array()) {
+            continue;
+        }
+        for (std::size_t i = 0; i < items->size(); ++i) {
+            const nlohmann::json& item = (*items)[i];
+            if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) {
+                continue;
+            }
+            std::string uri = item["uri"].get<std::string>();
+            if (uri.rfind("data:", 0) == 0) {
+                continue;
+            }
+            std::string where = std::string(list) + "[" + std::to_string(i) + "].uri";
+            std::size_t colon = uri.find(':'), slash = uri.find('/');
+            if (uri.empty() || uri[0] == '/' || uri[0] == '\\' || (colon != std::string::npos && colon < slash)) {
+                out.push_back({file, where, "\"" + uri + "\" is absolute or has a scheme; only paths relative to the model's folder are read"});
+                ok = false;
+                continue;
+            }
+            int depth = 0;
+            for (const fs::path& part : fs::path(uri).lexically_normal()) {
+                depth += part == ".." ? -1 : (part == "." || part.empty()) ? 0 : 1;
+                if (depth < 0) {
+                    break;
+                }
+            }
+            if (depth < 0) {
+                out.push_back({file, where, "\"" + uri + "\" leaves the model's folder"});
+                ok = false;
+            }
+        }
+    }
+    return ok;
+}
+
 } // namespace
 
 std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& displayName, Diagnostics& diagnostics,
@@ -501,9 +554,17 @@ std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& disp
             diagnostics.push_back({displayName, "", error});
             return std::nullopt;
         }
+        std::uint32_t jsonLength;
+        std::memcpy(&jsonLength, bytes->data() + 12, 4);
+        if (!checkUris(std::string_view(*bytes).substr(20, jsonLength), displayName, diagnostics)) {
+            return std::nullopt;
+        }
         ok = gltf.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes->data()),
                                        static_cast<unsigned>(bytes->size()), guard.folder.string());
     } else {
+        if (!checkUris(*bytes, displayName, diagnostics)) {
+            return std::nullopt;
+        }
         ok = gltf.LoadASCIIFromString(&model, &err, &warn, bytes->data(), static_cast<unsigned>(bytes->size()),
                                       guard.folder.string());
     }

@@ -42,8 +42,9 @@ Mesh makeSphere(int slices, int stacks) {
     addGrid(m, slices, stacks, [](float u, float v) {
         float phi = u * kTau;
         float theta = v * glm::pi<float>();
-        glm::vec3 n(-std::sin(theta) * std::cos(phi), -std::cos(theta), std::sin(theta) * std::sin(phi));
-        // Seen from outside with u increasing eastwards (phi towards -z... ) this winding faces out.
+        // Exactly on the axis at the poles, so the pole triangles are exactly degenerate.
+        float s = (v <= 0.0f || v >= 1.0f) ? 0.0f : std::sin(theta);
+        glm::vec3 n(-s * std::cos(phi), -std::cos(theta), s * std::sin(phi));
         return std::pair{n, n};
     });
     // Drop the degenerate triangles at the poles (two corners on the same pole).

@@ -489,6 +489,15 @@ std::optional<Preset> parsePreset(std::string_view text, const std::string& disp
         std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
         diagnostics.push_back({file, lineColumn(text, e.byte == 0 ? 0 : e.byte - 1), "invalid JSON: " + detail});
         return std::nullopt;
+    } catch (const Json::out_of_range& e) {
+        // A number too large for a double, e.g. 1e999: "... number overflow parsing '1e999'".
+        std::string what = e.what();
+        std::size_t open = what.find('\''), close = what.rfind('\'');
+        std::string number = open < close ? what.substr(open + 1, close - open - 1) : "";
+        std::size_t at = number.empty() ? std::string_view::npos : text.find(number);
+        diagnostics.push_back({file, at == std::string_view::npos ? "" : lineColumn(text, at),
+                               "number out of range: " + (number.empty() ? what : number)});
+        return std::nullopt;
     } catch (const Json::exception& e) {
         diagnostics.push_back({file, "", std::string("invalid JSON: ") + e.what()});
         return std::nullopt;
@@ -681,12 +690,12 @@ void emit(const Json& j, std::string& out, int indent) {
 
 namespace {
 
-bool containsNull(const Json& j) {
-    if (j.is_null()) {
-        return true;
+bool hasNonFinite(const Json& j) {
+    if (j.is_number_float()) {
+        return !std::isfinite(j.get<double>());
     }
     if (j.is_structured()) {
-        return std::any_of(j.begin(), j.end(), containsNull);
+        return std::any_of(j.begin(), j.end(), hasNonFinite);
     }
     return false;
 }
@@ -759,7 +768,7 @@ bool savePreset(const Preset& preset, const fs::path& file, Diagnostics& diagnos
     // A preset in memory can hold non-finite values only through a bug elsewhere (JSON has no
     // NaN, so they would come out as null); refuse to write a file that would not load.
     Json json = presetJson(preset);
-    if (containsNull(json)) {
+    if (hasNonFinite(json)) {
         diagnostics.push_back({file.string(), "", "refusing to save a preset with non-finite numbers"});
         return false;
     }

@@ -3,54 +3,64 @@
 
 #include "render/shader_sources.h"
 
-#include <array>
+#include <cctype>
 #include <sstream>
 
 namespace lab {
 
 namespace {
 
-// Source-string numbers used in `#line 1 N`, so logs can be mapped back to names.
-constexpr std::array<std::string_view, 4> kPartNames{"(prelude)", "lighting_api.glsl", "lighting.glsl", ""};
+// The parts of an assembled stage start at these line numbers (`#line`), so a line in a
+// compiler log tells which file it is in. Source-string numbers in `#line` would be neater, but
+// Mesa reports every error as source 0.
+constexpr int kApiFirstLine = 100001;
+constexpr int kLightingFirstLine = 200001;
 
-std::string assemble(std::string_view body, std::string_view bodyName, const std::vector<std::string>& defines) {
+std::string assemble(std::string_view body, const std::vector<std::string>& defines) {
     std::string s = "#version 300 es\nprecision highp float;\nprecision highp int;\n";
     for (const std::string& d : defines) {
         s += "#define " + d + "\n";
     }
-    s += "#line 1 1\n";
+    s += "#line " + std::to_string(kApiFirstLine) + "\n";
     s += shaderSource("lighting_api.glsl");
-    s += "\n#line 1 2\n";
+    s += "\n#line " + std::to_string(kLightingFirstLine) + "\n";
     s += shaderSource("lighting.glsl");
-    s += "\n#line 1 3\n";
+    s += "\n#line 1\n";
     s += body;
-    (void)bodyName;
     return s;
 }
 
-// Mesa writes "3:12(5): error: ..."; ANGLE and others "ERROR: 3:12: ...". Replace the
-// source-string number with the file name.
-std::string readableLog(const std::string& log, std::string_view bodyName, const std::string& stage,
-                        Diagnostics& out) {
+// "file:line" for a line number of the assembled source.
+std::string place(long line, std::string_view bodyName) {
+    if (line >= kLightingFirstLine) {
+        return "lighting.glsl:" + std::to_string(line - kLightingFirstLine + 1);
+    }
+    if (line >= kApiFirstLine) {
+        return "lighting_api.glsl:" + std::to_string(line - kApiFirstLine + 1);
+    }
+    return std::string(bodyName) + ":" + std::to_string(line);
+}
+
+// Mesa writes "0:12(5): error: ...", ANGLE "ERROR: 0:12: ...". Rewrite "0:12" as "lit.frag:12".
+void readableLog(const std::string& log, std::string_view bodyName, Diagnostics& out) {
     std::istringstream lines(log);
-    std::string line, all;
+    std::string line;
     while (std::getline(lines, line)) {
         if (line.empty()) {
             continue;
         }
-        for (std::size_t i = 0; i < 4; ++i) {
-            std::string number = std::to_string(i) + ":";
-            std::size_t at = line.find(number);
-            if (at != std::string::npos && (at == 0 || line[at - 1] == ' ')) {
-                std::string name(i == 3 ? bodyName : kPartNames[i]);
-                line.replace(at, number.size(), name + ":");
-                break;
+        std::size_t at = line.find("0:");
+        if (at != std::string::npos && (at == 0 || line[at - 1] == ' ') && at + 2 < line.size() &&
+            std::isdigit(static_cast<unsigned char>(line[at + 2]))) {
+            std::size_t end = at + 2;
+            long number = 0;
+            while (end < line.size() && std::isdigit(static_cast<unsigned char>(line[end]))) {
+                number = number * 10 + (line[end++] - '0');
             }
+            line.replace(at, end - at, place(number, bodyName));
         }
-        out.push_back({stage, "", line});
-        all += line + "\n";
+        out.push_back({"", "", line});
     }
-    return all;
 }
 
 GLuint compile(GLenum type, const std::string& source, std::string_view bodyName, Diagnostics& out) {
@@ -67,7 +77,7 @@ GLuint compile(GLenum type, const std::string& source, std::string_view bodyName
         glGetShaderInfoLog(shader, length, nullptr, log.data());
         log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
         std::size_t before = out.size();
-        readableLog(log, bodyName, std::string(bodyName), out);
+        readableLog(log, bodyName, out);
         if (out.size() == before) {
             out.push_back({std::string(bodyName), "", "does not compile (the driver gave no log)"});
         }
@@ -94,8 +104,8 @@ StageSources builtinStageSources() {
 
 std::optional<GLuint> buildProgram(const StageSources& sources, const std::vector<std::string>& defines,
                                    Diagnostics& diagnostics) {
-    GLuint vs = compile(GL_VERTEX_SHADER, assemble(sources.vertex, "lit.vert", defines), "lit.vert", diagnostics);
-    GLuint fs = compile(GL_FRAGMENT_SHADER, assemble(sources.fragment, "lit.frag", defines), "lit.frag", diagnostics);
+    GLuint vs = compile(GL_VERTEX_SHADER, assemble(sources.vertex, defines), "lit.vert", diagnostics);
+    GLuint fs = compile(GL_FRAGMENT_SHADER, assemble(sources.fragment, defines), "lit.frag", diagnostics);
     if (!vs || !fs) {
         if (vs) {
             glDeleteShader(vs);

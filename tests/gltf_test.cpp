@@ -1,0 +1,294 @@
+// gltf_test.cpp — glTF loading on real files: a valid base model, then one mutation per way a
+// file can be broken, each of which must be refused with an error naming the place.
+#include "core/gltf.h"
+
+#include "test_files.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <functional>
+
+namespace lab {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+// A unit quad in the z = 0 plane (two counter-clockwise triangles, so its computed normal is +z),
+// positions and 16-bit indices in an external buffer "quad.bin", under one node.
+struct Fixture {
+    Json gltf;
+    std::string bin;
+
+    Fixture() {
+        const float positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+        const std::uint16_t indices[] = {0, 1, 2, 0, 2, 3};
+        bin.append(reinterpret_cast<const char*>(positions), sizeof positions);
+        bin.append(reinterpret_cast<const char*>(indices), sizeof indices);
+        gltf = Json::parse(R"({
+          "asset": {"version": "2.0"},
+          "scene": 0,
+          "scenes": [{"nodes": [0]}],
+          "nodes": [{"mesh": 0}],
+          "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+          "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
+            {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+          "bufferViews": [
+            {"buffer": 0, "byteOffset": 0, "byteLength": 48},
+            {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+          "buffers": [{"uri": "quad.bin", "byteLength": 60}]
+        })");
+    }
+
+    // Writes model/quad.gltf and model/quad.bin under `dir` and loads the .gltf.
+    std::optional<GltfResult> load(const fs::path& dir, Diagnostics& d) const {
+        fs::create_directories(dir / "model");
+        writeText(dir / "model" / "quad.bin", bin);
+        writeText(dir / "model" / "quad.gltf", gltf.dump());
+        return loadGltf(dir / "model" / "quad.gltf", "quad.gltf", d);
+    }
+};
+
+TEST(Gltf, ValidFileLoadsWithComputedNormals) {
+    TempFolder dir;
+    Fixture f;
+    Diagnostics d;
+    std::optional<GltfResult> r = f.load(dir.path(), d);
+    ASSERT_TRUE(r) << toString(d);
+    EXPECT_EQ(r->mesh.positions.size(), 4u);
+    EXPECT_EQ(r->mesh.triangleCount(), 2u);
+    for (const glm::vec3& n : r->mesh.normals) {
+        EXPECT_NEAR(n.z, 1.0f, 1e-6f);
+    }
+    bool noted = false;
+    for (const std::string& note : r->notes) {
+        noted |= note.find("normals computed") != std::string::npos;
+    }
+    EXPECT_TRUE(noted);
+}
+
+TEST(Gltf, ComputedNormalsAreAreaWeighted) {
+    // Vertex 0 is shared by a large triangle facing +z and a small one facing +x; the
+    // average leans towards +z in proportion to the areas (2 : 0.5).
+    TempFolder dir;
+    Fixture f;
+    const float positions[] = {0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 0, 1, 0, -1, 0};
+    const std::uint16_t indices[] = {0, 1, 2, 0, 3, 4};
+    f.bin.assign(reinterpret_cast<const char*>(positions), sizeof positions);
+    f.bin.append(reinterpret_cast<const char*>(indices), sizeof indices);
+    f.gltf["accessors"][0]["count"] = 5;
+    f.gltf["accessors"][0]["max"] = {2, 2, 1};
+    f.gltf["accessors"][0]["min"] = {0, -1, 0};
+    f.gltf["bufferViews"][0]["byteLength"] = 60;
+    f.gltf["bufferViews"][1]["byteOffset"] = 60;
+    f.gltf["buffers"][0]["byteLength"] = 72;
+    Diagnostics d;
+    std::optional<GltfResult> r = f.load(dir.path(), d);
+    ASSERT_TRUE(r) << toString(d);
+    glm::vec3 expected = glm::normalize(glm::vec3(0, 0, 0) + 4.0f * glm::vec3(0, 0, 1) + 1.0f * glm::vec3(1, 0, 0));
+    EXPECT_NEAR(glm::distance(r->mesh.normals[0], expected), 0.0f, 1e-6f);
+}
+
+TEST(Gltf, NodeTransformsApplyToPositionsAndNormals) {
+    TempFolder dir;
+    Fixture f;
+    // Parent translates by (10, 0, 0); child rotates 90 degrees about y (quaternion x, y, z, w).
+    f.gltf["nodes"] = Json::parse(R"([{"translation": [10, 0, 0], "children": [1]},
+                                      {"mesh": 0, "rotation": [0, 0.70710678, 0, 0.70710678]}])");
+    Diagnostics d;
+    std::optional<GltfResult> r = f.load(dir.path(), d);
+    ASSERT_TRUE(r) << toString(d);
+    // (1, 0, 0) turns to (0, 0, -1), then moves to (10, 0, -1); the +z normal turns to +x.
+    EXPECT_NEAR(glm::distance(r->mesh.positions[1], glm::vec3(10, 0, -1)), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::distance(r->mesh.normals[0], glm::vec3(1, 0, 0)), 0.0f, 1e-5f);
+}
+
+TEST(Gltf, GivenNormalsUseTheInverseTranspose) {
+    TempFolder dir;
+    Fixture f;
+    const float normals[] = {1, 1, 0, 1, 1, 0, 1, 1, 0, 1, 1, 0};
+    f.bin.append(reinterpret_cast<const char*>(normals), sizeof normals);
+    f.gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 48}});
+    f.gltf["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}});
+    f.gltf["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2;
+    f.gltf["buffers"][0]["byteLength"] = 108;
+    f.gltf["nodes"][0]["scale"] = {3, 1, 1};
+    Diagnostics d;
+    std::optional<GltfResult> r = f.load(dir.path(), d);
+    ASSERT_TRUE(r) << toString(d);
+    EXPECT_NEAR(glm::distance(r->mesh.normals[0], glm::normalize(glm::vec3(1, 3, 0))), 0.0f, 1e-6f);
+}
+
+struct Mutation {
+    const char* name;
+    std::function<void(Fixture&, const fs::path& dir)> apply;
+    const char* where;   // the diagnostic's place ("" = the file itself)
+    const char* message; // words it must contain
+};
+
+class GltfErrors : public testing::TestWithParam<Mutation> {};
+
+TEST_P(GltfErrors, AreRefusedWithTheirPlace) {
+    const Mutation& m = GetParam();
+    TempFolder dir;
+    Fixture f;
+    fs::create_directories(dir.path() / "model");
+    m.apply(f, dir.path());
+    Diagnostics d;
+    std::optional<GltfResult> r = f.load(dir.path(), d);
+    EXPECT_FALSE(r) << m.name;
+    ASSERT_FALSE(d.empty()) << m.name;
+    bool found = false;
+    for (const Diagnostic& x : d) {
+        found |= x.where == m.where && x.message.find(m.message) != std::string::npos;
+    }
+    EXPECT_TRUE(found) << m.name << ": expected \"" << m.where << ": ..." << m.message << "...\", got\n" << toString(d);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Malformed, GltfErrors,
+    testing::Values(
+        Mutation{"accessor beyond its buffer", [](Fixture& f, const fs::path&) { f.gltf["accessors"][0]["count"] = 400; },
+                 "accessors[0]", "reads beyond its bufferView"},
+        Mutation{"accessor offset beyond its buffer",
+                 [](Fixture& f, const fs::path&) { f.gltf["accessors"][0]["byteOffset"] = 40; }, "accessors[0]",
+                 "reads beyond its bufferView"},
+        Mutation{"huge count overflows",
+                 [](Fixture& f, const fs::path&) { f.gltf["accessors"][1]["count"] = 4611686018427387904ull; },
+                 "accessors[1]", "reads beyond its bufferView"},
+        Mutation{"bufferView beyond its buffer",
+                 [](Fixture& f, const fs::path&) { f.gltf["bufferViews"][1]["byteLength"] = 1000; }, "bufferViews[1]",
+                 "beyond its buffer"},
+        Mutation{"index beyond the vertex count",
+                 [](Fixture& f, const fs::path&) { f.bin[48 + 10] = 9; }, "accessors[1]",
+                 "index 9 at element 5 is beyond the 4 vertices"},
+        Mutation{"bad component type for POSITION",
+                 [](Fixture& f, const fs::path&) { f.gltf["accessors"][0]["componentType"] = 5123; }, "accessors[0]",
+                 "expected FLOAT VEC3"},
+        Mutation{"bad component type for indices",
+                 [](Fixture& f, const fs::path&) { f.gltf["accessors"][1]["componentType"] = 5126; }, "accessors[1]",
+                 "expected UNSIGNED_BYTE"},
+        Mutation{"bad stride", [](Fixture& f, const fs::path&) { f.gltf["bufferViews"][0]["byteStride"] = 6; },
+                 "", "`byteStride' must be the multiple of 4"}, // tinygltf's own check
+        Mutation{"stride shorter than an element",
+                 [](Fixture& f, const fs::path&) { f.gltf["bufferViews"][0]["byteStride"] = 8; }, "bufferViews[0]",
+                 "byteStride 8 is invalid for elements of 12 bytes"},
+        Mutation{"missing accessor",
+                 [](Fixture& f, const fs::path&) { f.gltf["meshes"][0]["primitives"][0]["indices"] = 7; },
+                 "", "indices accessor out of bounds"}, // tinygltf's own check
+        Mutation{"missing attribute accessor",
+                 [](Fixture& f, const fs::path&) { f.gltf["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9; },
+                 "meshes[0].primitives[0].attributes.POSITION", "accessor 9 does not exist"},
+        Mutation{"missing bufferView", [](Fixture& f, const fs::path&) { f.gltf["accessors"][0]["bufferView"] = 5; },
+                 "accessors[0]", "bufferView 5 does not exist"},
+        Mutation{"no POSITION",
+                 [](Fixture& f, const fs::path&) {
+                     f.gltf["meshes"][0]["primitives"][0]["attributes"] = Json::object({{"NORMAL", 0}});
+                 },
+                 "meshes[0].primitives[0]", "no POSITION"},
+        Mutation{"node cycle",
+                 [](Fixture& f, const fs::path&) {
+                     f.gltf["nodes"] = Json::parse(R"([{"children": [1]}, {"mesh": 0, "children": [0]}])");
+                 },
+                 "nodes[0]", "node cycle"},
+        Mutation{"missing node", [](Fixture& f, const fs::path&) { f.gltf["scenes"][0]["nodes"] = {3}; }, "nodes[3]",
+                 "does not exist"},
+        Mutation{"missing mesh", [](Fixture& f, const fs::path&) { f.gltf["nodes"][0]["mesh"] = 4; }, "nodes[0]",
+                 "mesh 4 does not exist"},
+        Mutation{"no scene",
+                 [](Fixture& f, const fs::path&) {
+                     f.gltf.erase("scenes");
+                     f.gltf.erase("scene");
+                 },
+                 "scenes", "no scene"},
+        Mutation{"URI leaving the model's folder",
+                 [](Fixture& f, const fs::path& dir) {
+                     writeText(dir / "secret.bin", f.bin);
+                     f.gltf["buffers"][0]["uri"] = "../secret.bin";
+                 },
+                 "buffers[0].uri", "\"../secret.bin\" leaves the model's folder"},
+        Mutation{"absolute URI",
+                 [](Fixture& f, const fs::path& dir) {
+                     writeText(dir / "secret.bin", f.bin);
+                     f.gltf["buffers"][0]["uri"] = (dir / "secret.bin").string();
+                 },
+                 "buffers[0].uri", "absolute"},
+        Mutation{"URI with a scheme", [](Fixture& f, const fs::path&) { f.gltf["buffers"][0]["uri"] = "file:///etc/hostname"; },
+                 "buffers[0].uri", "absolute"},
+        Mutation{"URI climbing out after a detour",
+                 [](Fixture& f, const fs::path&) { f.gltf["buffers"][0]["uri"] = "sub/../../quad.bin"; },
+                 "buffers[0].uri", "leaves the model's folder"},
+        Mutation{"URI naming a folder",
+                 [](Fixture& f, const fs::path& dir) {
+                     fs::create_directories(dir / "model" / "sub");
+                     f.gltf["buffers"][0]["uri"] = "sub";
+                 },
+                 "", "not a regular file"},
+        Mutation{"URI naming a missing file", [](Fixture& f, const fs::path&) { f.gltf["buffers"][0]["uri"] = "nope.bin"; },
+                 "", "file not found"},
+        Mutation{"shell expansion in a URI is not performed",
+                 [](Fixture& f, const fs::path&) { f.gltf["buffers"][0]["uri"] = "$(touch%20pwned).bin"; }, "",
+                 "file not found"},
+        Mutation{"buffer shorter than declared", [](Fixture& f, const fs::path&) { f.gltf["buffers"][0]["byteLength"] = 600; },
+                 "", "size mismatch"},
+        Mutation{"non-finite position",
+                 [](Fixture& f, const fs::path&) {
+                     float inf = std::numeric_limits<float>::infinity();
+                     std::memcpy(f.bin.data() + 12, &inf, 4);
+                 },
+                 "accessors[0]", "not a finite number"},
+        Mutation{"not JSON", [](Fixture& f, const fs::path&) { f.gltf = "not a gltf"; }, "", ""}));
+
+TEST(Gltf, GlbWhoseHeaderClaimsMoreThanTheFileHolds) {
+    TempFolder dir;
+    std::string glb = "glTF";
+    auto u32 = [&](std::uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
+    u32(2);
+    u32(1000);   // total length: a lie
+    u32(8);      // JSON chunk length
+    u32(0x4E4F534Au);
+    glb += "{}      ";
+    writeText(dir.path() / "lie.glb", glb);
+    Diagnostics d;
+    EXPECT_FALSE(loadGltf(dir.path() / "lie.glb", "lie.glb", d));
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_NE(d[0].message.find("claims 1000 bytes"), std::string::npos) << d[0].str();
+}
+
+TEST(Gltf, LimitsAreCheckedBeforeAllocating) {
+    TempFolder dir;
+    Fixture f;
+    GltfLimits limits;
+    limits.maxTriangles = 1;
+    fs::create_directories(dir.path() / "model");
+    writeText(dir.path() / "model" / "quad.bin", f.bin);
+    writeText(dir.path() / "model" / "quad.gltf", f.gltf.dump());
+    Diagnostics d;
+    EXPECT_FALSE(loadGltf(dir.path() / "model" / "quad.gltf", "quad.gltf", d, limits));
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_NE(d[0].message.find("more than 1 triangles"), std::string::npos) << d[0].str();
+}
+
+TEST(Gltf, ShippedModelIsUpToDateAndLoads) {
+    // The repository generates its own model; regenerating must give the committed bytes.
+    TempFolder dir;
+    std::string command = std::string(LAB_GEN_MODELS) + " " + dir.path().string() + " > /dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    fs::path shipped = fs::path(LAB_SOURCE_DIR) / "presets" / "models" / "trefoil.glb";
+    EXPECT_EQ(readText(dir.path() / "trefoil.glb"), readText(shipped))
+        << "presets/models/trefoil.glb is stale: run lab_gen_models presets/models";
+    Diagnostics d;
+    std::optional<GltfResult> r = loadGltf(shipped, "trefoil.glb", d);
+    ASSERT_TRUE(r) << toString(d);
+    EXPECT_EQ(r->mesh.triangleCount(), 192u * 16u * 2u);
+    for (const glm::vec3& n : r->mesh.normals) {
+        ASSERT_NEAR(glm::length(n), 1.0f, 1e-5f);
+    }
+}
+
+} // namespace
+} // namespace lab

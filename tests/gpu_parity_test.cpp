@@ -1,0 +1,189 @@
+// gpu_parity_test.cpp — the GLSL face of the lighting model equals the C++ face.
+//
+// Renders single-pixel probes through the real shaders (lit.vert/lit.frag, real uniforms, real
+// model-view and normal matrices) with headless EGL, and compares every probe with the C++
+// evaluation of the same point and normal (lab::shade). Each probe's object-space position is
+// chosen so that it projects onto the centre of its own pixel. Per-vertex shading (flat,
+// Gouraud) evaluates in lit.vert, Phong shading in lit.frag: both paths are covered for every BRDF.
+#include "core/lighting.h"
+#include "platform/headless_gl.h"
+#include "render/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <random>
+
+namespace lab {
+namespace {
+
+constexpr int kSize = 48; // 48 x 48 probes, one per pixel
+
+struct Variant {
+    const char* name;
+    BrdfModel brdf;
+    Distribution distribution;
+    FresnelMode fresnel;
+    bool geometry;
+    Shading shading;
+};
+
+std::string variantName(const testing::TestParamInfo<Variant>& info) {
+    return std::string(info.param.name) + "_" + std::string(toString(info.param.shading));
+}
+
+Preset probePreset(const Variant& v) {
+    Preset p;
+    p.brdf = v.brdf;
+    p.shading = v.shading;
+    p.cookTorrance = {v.distribution, 0.35f, v.fresnel, 1.6f, v.geometry};
+    p.model.scale = {1.2f, 0.8f, 1.0f};
+    p.model.rotateDeg = {10.0f, 20.0f, 30.0f};
+    p.model.translate = {0.2f, -0.1f, 0.3f};
+    p.camera.eye = {1.0f, 2.0f, 5.0f};
+    p.material = {{0.05f, 0.02f, 0.0f}, {0.3f, 0.3f, 0.4f}, {0.5f, 0.4f, 0.3f}, {0.6f, 0.6f, 0.5f}, 24.0f};
+    p.ambientLight = {0.1f, 0.1f, 0.1f};
+    LightDesc point;
+    point.position = {2.0f, 3.0f, 2.0f};
+    point.attenuation = {1.0f, 0.1f, 0.02f};
+    point.ambient = {0.05f, 0.05f, 0.05f};
+    LightDesc spot;
+    spot.type = LightType::Spot;
+    spot.position = {-1.0f, 3.0f, 3.0f};
+    spot.direction = {0.3f, -0.6f, -0.5f};
+    spot.cutoffDeg = 35.0f;
+    spot.exponent = 4.0f;
+    spot.diffuse = {0.6f, 0.6f, 0.9f};
+    spot.specular = {0.5f, 0.5f, 0.5f};
+    LightDesc sun;
+    sun.type = LightType::Directional;
+    sun.direction = {-0.5f, -1.0f, -0.3f};
+    sun.diffuse = {0.3f, 0.25f, 0.2f};
+    sun.specular = {0.4f, 0.4f, 0.4f};
+    LightDesc off; // disabled lights must not count on either side
+    off.enabled = false;
+    off.diffuse = glm::vec3(10.0f);
+    p.lights = {point, off, spot, sun};
+    return p;
+}
+
+class GpuParity : public testing::TestWithParam<Variant> {
+protected:
+    static void SetUpTestSuite() {
+        gl_ = new HeadlessGl;
+        std::string error;
+        ASSERT_TRUE(gl_->create(error)) << error;
+        renderer_ = new Renderer;
+        Diagnostics d;
+        ASSERT_TRUE(renderer_->init(d)) << toString(d);
+    }
+    static void TearDownTestSuite() {
+        delete renderer_;
+        delete gl_;
+    }
+    static HeadlessGl* gl_;
+    static Renderer* renderer_;
+};
+
+HeadlessGl* GpuParity::gl_ = nullptr;
+Renderer* GpuParity::renderer_ = nullptr;
+
+TEST_P(GpuParity, ShadersMatchTheCpuWithinOneLevel) {
+    ASSERT_NE(renderer_, nullptr);
+    const Preset preset = probePreset(GetParam());
+    const Transforms t = computeTransforms(preset, 1.0f);
+    const ShadingInputs inputs = packShading(preset, t.view);
+    const glm::mat4 toObject = glm::inverse(t.modelView);
+    const glm::mat3 normalToObject = glm::inverse(t.normalMatrix);
+    const float tanHalf = std::tan(glm::radians(preset.camera.fovyDeg) / 2.0f);
+
+    std::mt19937 random(1234);
+    std::uniform_real_distribution<float> depth(2.5f, 6.5f), unit(-1.0f, 1.0f);
+    std::vector<FlatVertex> probes;
+    std::vector<glm::vec3> expected;
+    for (int py = 0; py < kSize; ++py) {
+        for (int px = 0; px < kSize; ++px) {
+            // The eye-space point on the ray through this pixel's centre, at a random depth.
+            float z = -depth(random);
+            glm::vec2 ndc(2.0f * (px + 0.5f) / kSize - 1.0f, 2.0f * (py + 0.5f) / kSize - 1.0f);
+            glm::vec3 eye(ndc.x * -z * tanHalf, ndc.y * -z * tanHalf, z);
+            // A random normal, mostly towards the viewer, some grazing or turned away.
+            glm::vec3 N = glm::normalize(glm::vec3(unit(random), unit(random), unit(random)) + 0.6f * glm::normalize(-eye));
+            glm::vec3 position = glm::vec3(toObject * glm::vec4(eye, 1.0f));
+            glm::vec3 normal = normalToObject * N;
+            probes.push_back({position, normal, position});
+            // The C++ face, from the same object-space data through the same matrices.
+            glm::vec3 p = glm::vec3(t.modelView * glm::vec4(position, 1.0f));
+            expected.push_back(shade(inputs, p, glm::normalize(t.normalMatrix * normal)));
+        }
+    }
+
+    Framebuffer target(kSize, kSize);
+    ASSERT_TRUE(target.complete());
+    target.bind();
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    renderer_->drawPoints(preset, probes, kSize, kSize);
+    Image image = target.readRgb(); // top row first
+
+    int lit = 0, worstLevel = 0;
+    float worst = 0.0f;
+    for (int py = 0; py < kSize; ++py) {
+        for (int px = 0; px < kSize; ++px) {
+            const glm::vec3& cpu = expected[std::size_t(py * kSize + px)];
+            const std::uint8_t* gpu = &image.rgb[std::size_t(((kSize - 1 - py) * kSize + px) * 3)];
+            for (int k = 0; k < 3; ++k) {
+                float d = std::abs(float(gpu[k]) - cpu[k] * 255.0f);
+                if (d > worst) {
+                    worst = d;
+                    worstLevel = gpu[k];
+                }
+                ASSERT_LE(d, 1.0f) << "probe (" << px << ", " << py << ") channel " << k << ": GPU " << int(gpu[k])
+                                   << ", CPU " << cpu[k] * 255.0f;
+            }
+            lit += cpu.r > 0.1f;
+        }
+    }
+    // The probes must exercise the lighting, not compare black with black.
+    EXPECT_GT(lit, kSize * kSize / 2);
+    RecordProperty("worst_difference_levels", std::to_string(worst));
+    (void)worstLevel;
+}
+
+std::vector<Variant> variants() {
+    std::vector<Variant> v;
+    for (Shading s : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
+        v.push_back({"phong", BrdfModel::Phong, Distribution::Beckmann, FresnelMode::Schlick, true, s});
+        v.push_back({"blinnphong", BrdfModel::BlinnPhong, Distribution::Beckmann, FresnelMode::Schlick, true, s});
+        v.push_back({"ct_beckmann_schlick", BrdfModel::CookTorrance, Distribution::Beckmann, FresnelMode::Schlick, true, s});
+        v.push_back({"ct_gaussian_full", BrdfModel::CookTorrance, Distribution::Gaussian, FresnelMode::Full, true, s});
+        v.push_back({"ct_ggx_schlick_nogeometry", BrdfModel::CookTorrance, Distribution::Ggx, FresnelMode::Schlick, false, s});
+    }
+    return v;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryBrdfAndShading, GpuParity, testing::ValuesIn(variants()), variantName);
+
+TEST(Shaders, CompileErrorsNameTheFileAndLine) {
+    HeadlessGl gl;
+    std::string error;
+    ASSERT_TRUE(gl.create(error)) << error;
+    Renderer renderer;
+    Diagnostics d;
+    ASSERT_TRUE(renderer.init(d)) << toString(d);
+    StageSources broken = renderer.stageSources();
+    broken.fragment = "out vec4 o_color;\nvoid main() {\n    o_color = vec4(undefinedThing, 1.0);\n}\n";
+    EXPECT_FALSE(renderer.setStageSources(broken, d));
+    ASSERT_FALSE(d.empty());
+    bool named = false;
+    for (const Diagnostic& x : d) {
+        named |= x.message.find("lit.frag:3") != std::string::npos && x.message.find("undefinedThing") != std::string::npos;
+    }
+    EXPECT_TRUE(named) << toString(d);
+    // The previous programs keep running.
+    EXPECT_EQ(renderer.stageSources().fragment, builtinStageSources().fragment);
+}
+
+} // namespace
+} // namespace lab

@@ -1,0 +1,79 @@
+// image_test.cpp — the screenshot comparison's thresholds, and PNG round trips.
+#include "core/image.h"
+
+#include "test_files.h"
+
+#include <gtest/gtest.h>
+
+namespace lab {
+namespace {
+
+Image flat(int w, int h, std::uint8_t v) { return Image{w, h, std::vector<std::uint8_t>(std::size_t(w * h * 3), v)}; }
+
+TEST(ImageCompare, IdenticalImagesPass) {
+    Comparison c = compareImages(flat(100, 100, 40), flat(100, 100, 40), Tolerance{});
+    EXPECT_TRUE(c.passes(Tolerance{}));
+    EXPECT_EQ(c.maxDifference, 0);
+    EXPECT_EQ(c.failingPixels, 0u);
+}
+
+TEST(ImageCompare, ThreeLevelsOnFewPixelsPassFourDoNot) {
+    // 100 x 100 = 10000 pixels; the limit is 0.1% = 10 failing pixels.
+    Image a = flat(100, 100, 100);
+    Image b = a;
+    for (int i = 0; i < 20; ++i) {
+        b.rgb[std::size_t(3 * i * 37)] = 103; // 20 pixels off by 3: within the pixel tolerance
+    }
+    EXPECT_TRUE(compareImages(b, a, Tolerance{}).passes(Tolerance{}));
+    for (int i = 0; i < 10; ++i) {
+        b.rgb[std::size_t(3 * i * 37)] = 104; // 10 pixels off by 4: exactly 0.1%, still allowed
+    }
+    Comparison c = compareImages(b, a, Tolerance{});
+    EXPECT_EQ(c.failingPixels, 10u);
+    EXPECT_TRUE(c.passes(Tolerance{}));
+    b.rgb[3 * 5000 + 2] = 0; // an 11th failing pixel
+    c = compareImages(b, a, Tolerance{});
+    EXPECT_EQ(c.failingPixels, 11u);
+    EXPECT_EQ(c.maxDifference, 100);
+    EXPECT_FALSE(c.passes(Tolerance{}));
+    EXPECT_EQ(c.diff.rgb[3 * 5000], 255); // failing pixels are magenta in the diff image
+    EXPECT_EQ(c.diff.rgb[3 * 5000 + 1], 0);
+}
+
+TEST(ImageCompare, MeanDifferenceAloneCanFail) {
+    // Every channel off by 1: no pixel fails, but the mean 1.0 exceeds 0.5 levels.
+    Comparison c = compareImages(flat(10, 10, 11), flat(10, 10, 10), Tolerance{});
+    EXPECT_EQ(c.failingPixels, 0u);
+    EXPECT_DOUBLE_EQ(c.meanDifference, 1.0);
+    EXPECT_FALSE(c.passes(Tolerance{}));
+}
+
+TEST(ImageCompare, DifferentSizesFail) {
+    Comparison c = compareImages(flat(10, 10, 0), flat(10, 11, 0), Tolerance{});
+    EXPECT_FALSE(c.sameSize);
+    EXPECT_FALSE(c.passes(Tolerance{}));
+}
+
+TEST(Png, RoundTrips) {
+    TempFolder dir;
+    Image a{3, 2, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18}};
+    std::string error;
+    ASSERT_TRUE(writePng(a, dir.path() / "a.png", error)) << error;
+    std::optional<Image> b = readPng(dir.path() / "a.png", error);
+    ASSERT_TRUE(b) << error;
+    EXPECT_EQ(b->width, 3);
+    EXPECT_EQ(b->height, 2);
+    EXPECT_EQ(b->rgb, a.rgb);
+}
+
+TEST(Png, BrokenFilesAreRefused) {
+    TempFolder dir;
+    writeText(dir.path() / "bad.png", "\x89PNG\r\n\x1a\n garbage");
+    std::string error;
+    EXPECT_FALSE(readPng(dir.path() / "bad.png", error));
+    EXPECT_FALSE(error.empty());
+    EXPECT_FALSE(readPng(dir.path() / "missing.png", error));
+}
+
+} // namespace
+} // namespace lab

@@ -1,0 +1,64 @@
+// plot_test.cpp — the polar-plot samples follow the documented geometry and the lighting model.
+#include "core/plot.h"
+
+#include "core/lighting.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace lab {
+namespace {
+
+TEST(Plot, SamplesEveryDegreeFromMinus90To90) {
+    std::vector<PlotSample> s = reflectedIntensity(Preset{}, 45.0f);
+    ASSERT_EQ(s.size(), 181u);
+    EXPECT_EQ(s.front().thetaOutDeg, -90.0f);
+    EXPECT_EQ(s[90].thetaOutDeg, 0.0f);
+    EXPECT_EQ(s.back().thetaOutDeg, 90.0f);
+}
+
+TEST(Plot, DiffuseIsLambertAndTheSameInEveryDirection) {
+    Preset p;
+    p.material.diffuse = {0.5f, 0.25f, 1.0f};
+    std::vector<PlotSample> s = reflectedIntensity(p, 60.0f);
+    float expected = (0.2126f * 0.5f + 0.7152f * 0.25f + 0.0722f * 1.0f) * 0.5f; // luminance(Kd) cos 60
+    for (const PlotSample& x : s) {
+        EXPECT_NEAR(x.diffuse, expected, 1e-6f);
+        EXPECT_FLOAT_EQ(x.total, x.diffuse + x.specular);
+    }
+}
+
+TEST(Plot, PhongLobePeaksAtTheMirrorAngle) {
+    Preset p;
+    p.material.shininess = 50.0f;
+    std::vector<PlotSample> s = reflectedIntensity(p, 30.0f);
+    auto peak = std::max_element(s.begin(), s.end(), [](auto& a, auto& b) { return a.specular < b.specular; });
+    EXPECT_EQ(peak->thetaOutDeg, 30.0f);
+    EXPECT_NEAR(peak->specular, luminance(p.material.specular), 1e-5f);
+    EXPECT_EQ(s[0].specular, 0.0f); // -90 degrees: R.V < 0
+}
+
+TEST(Plot, SpecularMatchesTheSharedLightingFunctions) {
+    for (BrdfModel model : {BrdfModel::Phong, BrdfModel::BlinnPhong, BrdfModel::CookTorrance}) {
+        Preset p;
+        p.brdf = model;
+        p.material.specular = {1.0f, 0.5f, 0.25f};
+        std::vector<PlotSample> s = reflectedIntensity(p, 25.0f);
+        for (int deg : {-60, -10, 0, 25, 40, 89}) {
+            float ti = glm::radians(25.0f), to = glm::radians(float(deg));
+            float S = glsl::specularFactor(glm::vec3(0, 1, 0), glm::vec3(-std::sin(ti), std::cos(ti), 0),
+                                           glm::vec3(std::sin(to), std::cos(to), 0), p.material.shininess, packBrdf(p));
+            EXPECT_FLOAT_EQ(s[std::size_t(deg + 90)].specular, luminance(p.material.specular * S)) << deg;
+        }
+    }
+}
+
+TEST(Plot, CsvHasTheDocumentedHeaderAndOneRowPerDegree) {
+    std::string csv = plotCsv(reflectedIntensity(Preset{}, 45.0f));
+    EXPECT_EQ(csv.rfind("theta_out_deg,diffuse,specular,total\n-90,", 0), 0u) << csv.substr(0, 80);
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 182);
+}
+
+} // namespace
+} // namespace lab
