@@ -130,6 +130,8 @@ struct Mutation {
     const char* message; // words it must contain
 };
 
+void PrintTo(const Mutation& m, std::ostream* os) { *os << m.name; }
+
 class GltfErrors : public testing::TestWithParam<Mutation> {};
 
 TEST_P(GltfErrors, AreRefusedWithTheirPlace) {

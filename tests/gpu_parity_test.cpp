@@ -29,6 +29,8 @@ struct Variant {
     Shading shading;
 };
 
+void PrintTo(const Variant& v, std::ostream* os) { *os << v.name << "/" << toString(v.shading); }
+
 std::string variantName(const testing::TestParamInfo<Variant>& info) {
     return std::string(info.param.name) + "_" + std::string(toString(info.param.shading));
 }

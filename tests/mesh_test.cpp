@@ -14,6 +14,8 @@ struct Shape {
     std::size_t triangles;
 };
 
+void PrintTo(const Shape& s, std::ostream* os) { *os << toString(s.builtin) << " " << s.subdivisions.x << "x" << s.subdivisions.y; }
+
 class BuiltinMeshes : public testing::TestWithParam<Shape> {};
 
 TEST_P(BuiltinMeshes, WindCounterClockwiseAroundOutwardUnitNormals) {

@@ -81,6 +81,8 @@ struct BadCase {
     const char* message;
 };
 
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.body; }
+
 class PresetErrors : public testing::TestWithParam<BadCase> {};
 
 TEST_P(PresetErrors, AreReportedWithTheirJsonPath) {
