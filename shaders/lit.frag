@@ -15,6 +15,7 @@ uniform Terms u_terms;
 uniform vec3 u_ambientLight;
 uniform Light u_lights[MAX_LIGHTS];
 uniform int u_lightCount;
+uniform bool u_showNormals; // the per-term view's "normals as colours"
 #endif
 
 out vec4 o_color;
@@ -24,7 +25,8 @@ void main() {
     o_color = vec4(v_color, 1.0f);
 #else
     vec3 N = normalize(v_normal);
-    o_color = vec4(shade(u_material, u_brdf, u_terms, u_ambientLight, u_lights, u_lightCount,
-                         v_position, N), 1.0f);
+    o_color = u_showNormals ? vec4(N * 0.5f + 0.5f, 1.0f)
+                            : vec4(shade(u_material, u_brdf, u_terms, u_ambientLight, u_lights, u_lightCount,
+                                         v_position, N), 1.0f);
 #endif
 }

@@ -21,6 +21,7 @@ uniform Terms u_terms;
 uniform vec3 u_ambientLight;
 uniform Light u_lights[MAX_LIGHTS];
 uniform int u_lightCount;
+uniform bool u_showNormals; // the per-term view's "normals as colours"
 
 #ifdef LAB_PER_VERTEX
 out vec3 v_color;
@@ -33,7 +34,8 @@ void main() {
     vec3 p = (u_modelView * vec4(a_shadePosition, 1.0f)).xyz;
     vec3 N = normalize(u_normalMatrix * a_normal);
 #ifdef LAB_PER_VERTEX
-    v_color = shade(u_material, u_brdf, u_terms, u_ambientLight, u_lights, u_lightCount, p, N);
+    v_color = u_showNormals ? N * 0.5f + 0.5f
+                            : shade(u_material, u_brdf, u_terms, u_ambientLight, u_lights, u_lightCount, p, N);
 #else
     v_position = p;
     v_normal = N;

@@ -38,7 +38,7 @@ std::optional<Image> OffscreenRenderer::render(const LoadedPreset& preset, int w
             diagnostics.insert(diagnostics.end(), problems.begin(), problems.end());
             return std::nullopt;
         }
-        renderer_.setMesh(std::move(*mesh));
+        mesh_ = std::make_unique<GpuMesh>(std::move(*mesh));
         meshKey_ = key;
     }
     Framebuffer target(width, height);
@@ -48,7 +48,7 @@ std::optional<Image> OffscreenRenderer::render(const LoadedPreset& preset, int w
         return std::nullopt;
     }
     target.bind();
-    renderer_.draw(preset.preset, width, height);
+    renderer_.draw(preset.preset, *mesh_, Viewport{0, 0, width, height});
     return target.readRgb();
 }
 

@@ -9,6 +9,7 @@
 #include "core/preset.h"
 #include "render/renderer.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,7 +29,8 @@ public:
 
 private:
     Renderer renderer_;
-    std::string meshKey_; // which model the renderer holds now
+    std::unique_ptr<GpuMesh> mesh_;
+    std::string meshKey_; // which model mesh_ holds
 };
 
 } // namespace lab

@@ -17,7 +17,7 @@ struct Uniforms {
     GLint emissive = -1, ambient = -1, diffuse = -1, specular = -1, shininess = -1;
     GLint brdfModel = -1, distribution = -1, fresnel = -1, geometry = -1, roughness = -1, ior = -1;
     GLint termEmissive = -1, termAmbient = -1, termDiffuse = -1, termSpecular = -1;
-    GLint ambientLight = -1, lightCount = -1;
+    GLint ambientLight = -1, lightCount = -1, showNormals = -1;
     struct Light {
         GLint type, position, direction, ambient, diffuse, specular, attenuation, cosCutoff, exponent;
     };
@@ -45,6 +45,7 @@ struct Uniforms {
         termSpecular = at("u_terms.specular");
         ambientLight = at("u_ambientLight");
         lightCount = at("u_lightCount");
+        showNormals = at("u_showNormals");
         for (std::size_t i = 0; i < lights.size(); ++i) {
             std::string l = "u_lights[" + std::to_string(i) + "].";
             lights[i] = {at(l + "type"),     at(l + "position"),    at(l + "direction"),
@@ -103,18 +104,6 @@ struct Program {
     }
 };
 
-struct GpuBuffers {
-    GLuint vao = 0, vbo = 0, ebo = 0;
-    GLsizei count = 0;
-    void release() {
-        if (vao) glDeleteVertexArrays(1, &vao);
-        if (vbo) glDeleteBuffers(1, &vbo);
-        if (ebo) glDeleteBuffers(1, &ebo);
-        vao = vbo = ebo = 0;
-        count = 0;
-    }
-};
-
 // Attribute 2 (the point the lighting is evaluated at) is the vertex itself for smooth
 // shading and the triangle's centroid for flat shading.
 void bindFlatLayout() {
@@ -127,16 +116,17 @@ void bindFlatLayout() {
     glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(FlatVertex, centroid)));
 }
 
-void uploadFlat(GpuBuffers& b, const std::vector<FlatVertex>& vertices) {
-    glGenVertexArrays(1, &b.vao);
-    glBindVertexArray(b.vao);
-    glGenBuffers(1, &b.vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+// A vertex array over a new buffer of FlatVertex; returns the vertex count.
+GLsizei uploadFlat(GLuint& vao, GLuint& vbo, const std::vector<FlatVertex>& vertices) {
+    glGenVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    glGenBuffers(1, &vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(FlatVertex)), vertices.data(),
                  GL_STATIC_DRAW);
     bindFlatLayout();
-    b.count = static_cast<GLsizei>(vertices.size());
     glBindVertexArray(0);
+    return static_cast<GLsizei>(vertices.size());
 }
 
 } // namespace
@@ -144,9 +134,6 @@ void uploadFlat(GpuBuffers& b, const std::vector<FlatVertex>& vertices) {
 struct Renderer::Impl {
     StageSources sources;
     Program perVertex, perPixel;
-    Mesh mesh;
-    GpuBuffers smooth, flat;
-    bool flatValid = false;
 
     bool build(const StageSources& s, Diagnostics& diagnostics) {
         std::optional<GLuint> v = buildProgram(s, {"LAB_PER_VERTEX 1"}, diagnostics);
@@ -174,8 +161,6 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
 Renderer::~Renderer() {
     impl_->perVertex.reset(0);
     impl_->perPixel.reset(0);
-    impl_->smooth.release();
-    impl_->flat.release();
 }
 
 bool Renderer::init(Diagnostics& diagnostics) { return impl_->build(builtinStageSources(), diagnostics); }
@@ -186,73 +171,33 @@ bool Renderer::setStageSources(const StageSources& sources, Diagnostics& diagnos
 
 const StageSources& Renderer::stageSources() const { return impl_->sources; }
 
-void Renderer::setMesh(Mesh mesh) {
+void Renderer::draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewport, const DrawOptions& options) {
     Impl& m = *impl_;
-    m.smooth.release();
-    m.flat.release();
-    m.flatValid = false;
-    m.mesh = std::move(mesh);
-
-    // Interleaved position + normal; attribute 2 aliases the position.
-    std::vector<float> interleaved;
-    interleaved.reserve(m.mesh.positions.size() * 6);
-    for (std::size_t i = 0; i < m.mesh.positions.size(); ++i) {
-        const glm::vec3& p = m.mesh.positions[i];
-        const glm::vec3& n = m.mesh.normals[i];
-        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
-    }
-    GpuBuffers& b = m.smooth;
-    glGenVertexArrays(1, &b.vao);
-    glBindVertexArray(b.vao);
-    glGenBuffers(1, &b.vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)), interleaved.data(),
-                 GL_STATIC_DRAW);
-    const GLsizei stride = 6 * sizeof(float);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-    glGenBuffers(1, &b.ebo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ebo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.mesh.indices.size() * sizeof(std::uint32_t)),
-                 m.mesh.indices.data(), GL_STATIC_DRAW);
-    b.count = static_cast<GLsizei>(m.mesh.indices.size());
-    glBindVertexArray(0);
-}
-
-void Renderer::draw(const Preset& preset, int width, int height) {
-    Impl& m = *impl_;
-    glViewport(0, 0, width, height);
+    glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
+    glScissor(viewport.x, viewport.y, viewport.width, viewport.height);
+    glEnable(GL_SCISSOR_TEST);
     glDisable(GL_DITHER);
+    glDisable(GL_BLEND);
     glClearColor(preset.background.r, preset.background.g, preset.background.b, 1.0f);
     glClearDepthf(1.0f);
+    glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE); // no two-sided lighting, as in the classic pipeline; a plane seen from behind stays visible
-    if (m.smooth.count == 0) {
-        return;
-    }
     const Program& program = m.programFor(preset.shading);
     glUseProgram(program.id);
-    Transforms t = computeTransforms(preset, static_cast<float>(width) / static_cast<float>(height));
+    Transforms t = computeTransforms(preset, static_cast<float>(viewport.width) / static_cast<float>(viewport.height));
     program.uniforms->upload(t, packShading(preset, t.view));
+    glUniform1i(program.uniforms->showNormals, options.showNormals);
     if (preset.shading == Shading::Flat) {
-        if (!m.flatValid) {
-            uploadFlat(m.flat, expandFlat(m.mesh));
-            m.flatValid = true;
-        }
-        glBindVertexArray(m.flat.vao);
-        glDrawArrays(GL_TRIANGLES, 0, m.flat.count);
+        mesh.drawFlat();
     } else {
-        glBindVertexArray(m.smooth.vao);
-        glDrawElements(GL_TRIANGLES, m.smooth.count, GL_UNSIGNED_INT, nullptr);
+        mesh.drawSmooth();
     }
-    glBindVertexArray(0);
     glUseProgram(0);
+    glDisable(GL_DEPTH_TEST);
 }
 
 void Renderer::drawPoints(const Preset& preset, const std::vector<FlatVertex>& vertices, int width, int height) {
@@ -262,13 +207,73 @@ void Renderer::drawPoints(const Preset& preset, const std::vector<FlatVertex>& v
     glUseProgram(program.id);
     Transforms t = computeTransforms(preset, static_cast<float>(width) / static_cast<float>(height));
     program.uniforms->upload(t, packShading(preset, t.view));
-    GpuBuffers points;
-    uploadFlat(points, vertices);
-    glBindVertexArray(points.vao);
-    glDrawArrays(GL_POINTS, 0, points.count);
+    glUniform1i(program.uniforms->showNormals, 0);
+    GLuint vao = 0, vbo = 0;
+    GLsizei count = uploadFlat(vao, vbo, vertices);
+    glBindVertexArray(vao);
+    glDrawArrays(GL_POINTS, 0, count);
     glBindVertexArray(0);
-    points.release();
+    glDeleteVertexArrays(1, &vao);
+    glDeleteBuffers(1, &vbo);
     glUseProgram(0);
+}
+
+//----------------------------------------------------------------------------------------
+// GpuMesh
+//----------------------------------------------------------------------------------------
+
+GpuMesh::GpuMesh(Mesh mesh) : mesh_(std::move(mesh)) {
+    // Interleaved position + normal; attribute 2 (the shading point) aliases the position.
+    std::vector<float> interleaved;
+    interleaved.reserve(mesh_.positions.size() * 6);
+    for (std::size_t i = 0; i < mesh_.positions.size(); ++i) {
+        const glm::vec3& p = mesh_.positions[i];
+        const glm::vec3& n = mesh_.normals[i];
+        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+    }
+    glGenVertexArrays(1, &vao_);
+    glBindVertexArray(vao_);
+    glGenBuffers(1, &vbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)), interleaved.data(),
+                 GL_STATIC_DRAW);
+    const GLsizei stride = 6 * sizeof(float);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glGenBuffers(1, &ebo_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh_.indices.size() * sizeof(std::uint32_t)),
+                 mesh_.indices.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+}
+
+GpuMesh::~GpuMesh() {
+    glDeleteVertexArrays(1, &vao_);
+    glDeleteBuffers(1, &vbo_);
+    glDeleteBuffers(1, &ebo_);
+    if (flatVao_) {
+        glDeleteVertexArrays(1, &flatVao_);
+        glDeleteBuffers(1, &flatVbo_);
+    }
+}
+
+void GpuMesh::drawSmooth() const {
+    glBindVertexArray(vao_);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh_.indices.size()), GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
+}
+
+void GpuMesh::drawFlat() {
+    if (!flatVao_) {
+        flatCount_ = uploadFlat(flatVao_, flatVbo_, expandFlat(mesh_));
+    }
+    glBindVertexArray(flatVao_);
+    glDrawArrays(GL_TRIANGLES, 0, flatCount_);
+    glBindVertexArray(0);
 }
 
 //----------------------------------------------------------------------------------------

@@ -17,6 +17,36 @@
 
 namespace lab {
 
+// A mesh on the GPU: the indexed buffers for smooth shading, and the de-indexed copy for flat
+// shading, built the first time flat shading draws it. Keeps the CPU mesh (the probe and the
+// flat copy need it).
+class GpuMesh {
+public:
+    explicit GpuMesh(Mesh mesh);
+    ~GpuMesh();
+    GpuMesh(const GpuMesh&) = delete;
+    GpuMesh& operator=(const GpuMesh&) = delete;
+
+    const Mesh& cpu() const { return mesh_; }
+    void drawSmooth() const;
+    void drawFlat();
+
+private:
+    Mesh mesh_;
+    GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
+    GLuint flatVao_ = 0, flatVbo_ = 0;
+    GLsizei flatCount_ = 0;
+};
+
+// A rectangle of the bound framebuffer, in GL's convention (origin at the bottom left).
+struct Viewport {
+    int x = 0, y = 0, width = 0, height = 0;
+};
+
+struct DrawOptions {
+    bool showNormals = false; // colour = N * 0.5 + 0.5 instead of the lighting
+};
+
 class Renderer {
 public:
     Renderer();
@@ -31,12 +61,9 @@ public:
     bool setStageSources(const StageSources& sources, Diagnostics& diagnostics);
     const StageSources& stageSources() const;
 
-    // Uploads a mesh; the flat-shading copy is built the first time flat shading needs it.
-    void setMesh(Mesh mesh);
-
-    // Clears to the background and draws the model into the bound framebuffer, viewport
-    // (0, 0, width, height).
-    void draw(const Preset& preset, int width, int height);
+    // Clears the viewport to the background and draws the mesh with the preset's shading,
+    // transforms and lights into the bound framebuffer. Aspect = viewport width / height.
+    void draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewport, const DrawOptions& options = {});
 
     // Draws `vertices` as single-pixel points with the preset's shading, transforms and
     // lights (no clear). The CPU–GPU parity test places probes with it.
