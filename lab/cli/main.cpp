@@ -8,9 +8,14 @@
 // Exit status: 0 success, 2 bad input (message on stderr), 1 internal failure or failed check.
 #include "cli/commands.h"
 
+#ifdef LAB_GUI
+#include "platform/window.h"
+#endif
+
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <unistd.h>
 
 #ifndef LAB_VERSION
 #define LAB_VERSION "0.0.0"
@@ -35,8 +40,14 @@ int main(int argc, char** argv) {
     CLI::App app{"Lighting Lab: an interactive lab for local illumination (Phong, Blinn-Phong, Cook-Torrance)", "lab"};
     app.set_version_flag("--version", "lab " LAB_VERSION);
     app.require_subcommand(0, 1);
-    std::string preset;
-    app.add_option("--preset", preset, "Open the lab with this preset")->check(CLI::ExistingFile);
+    std::string preset, screenshotDir = ".", layoutFile;
+    bool presenter = false, fullscreen = false;
+    app.add_option("--preset", preset, "Open the lab with this preset");
+    app.add_flag("--presenter", presenter, "Start in presenter mode (large UI for a projector)");
+    app.add_flag("--fullscreen", fullscreen, "Start fullscreen");
+    app.add_option("--screenshot-dir", screenshotDir, "Folder for screenshots (F12)")->capture_default_str();
+    // For GUI tests: the screen rectangles of the main widgets, rewritten when they change.
+    app.add_option("--layout-file", layoutFile, "")->group("");
 
     std::vector<std::string> renderPresets;
     std::string renderOut, renderSize = "512x512";
@@ -90,5 +101,41 @@ int main(int argc, char** argv) {
         lab::CheckOptions options{checkGolden, checkReport, update, *lab::parseSize(checkSize, error), tolerance};
         return lab::runCheck(toPaths(checkPresets), options);
     }
-    return lab::runPreview(preset.empty() ? std::nullopt : std::optional<std::filesystem::path>(preset));
+    std::optional<std::filesystem::path> presetPath;
+    if (!preset.empty()) {
+        presetPath = preset;
+    }
+#ifdef LAB_GUI
+    lab::AppOptions options;
+    options.preset = presetPath;
+    options.presenter = presenter;
+    options.screenshotFolder = screenshotDir;
+    if (!layoutFile.empty()) {
+        options.layoutFile = layoutFile;
+    }
+    // The preset list: the shipped presets beside the program, else those of the source tree.
+    char exe[4096];
+    ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n > 0) {
+        exe[n] = '\0';
+        options.presetFolders.push_back(std::filesystem::path(exe).parent_path().parent_path() / "presets");
+    }
+    options.presetFolders.push_back(LAB_SOURCE_PRESETS);
+    lab::App lab(std::move(options));
+    lab::WindowOptions window;
+    window.fullscreen = fullscreen;
+    switch (lab::runWindow(lab, window, error)) {
+    case lab::WindowResult::Closed: return lab::kExitOk;
+    case lab::WindowResult::Failed:
+        std::fprintf(stderr, "lab: %s\n", error.c_str());
+        return lab::kExitFailure;
+    case lab::WindowResult::NoDisplay:
+        std::fprintf(stderr, "lab: no display (DISPLAY and WAYLAND_DISPLAY are unset); rendering a preview instead\n");
+        break;
+    }
+#else
+    (void)presenter;
+    (void)fullscreen;
+#endif
+    return lab::runPreview(presetPath);
 }

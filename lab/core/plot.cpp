@@ -3,7 +3,9 @@
 
 #include "core/lighting.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 
 namespace lab {
 
@@ -40,6 +42,58 @@ std::string plotCsv(const std::vector<PlotSample>& samples) {
         put(s.total, '\n');
     }
     return out;
+}
+
+float componentOf(const PlotSample& s, PlotComponent c) {
+    switch (c) {
+    case PlotComponent::Diffuse: return s.diffuse;
+    case PlotComponent::Specular: return s.specular;
+    case PlotComponent::Total: return s.total;
+    }
+    return 0.0f;
+}
+
+float plotRadius(float intensity, float maxIntensity, RadialScale scale) {
+    if (!(intensity > 0.0f) || !(maxIntensity > 0.0f)) {
+        return 0.0f;
+    }
+    float ratio = intensity / maxIntensity;
+    if (scale == RadialScale::Linear) {
+        return std::min(ratio, 1.0f);
+    }
+    return std::clamp(1.0f + std::log10(ratio) / kLogDecades, 0.0f, 1.0f);
+}
+
+std::vector<glm::vec2> lobePoints(const std::vector<PlotSample>& samples, PlotComponent component,
+                                  float maxIntensity, RadialScale scale) {
+    std::vector<glm::vec2> points;
+    points.reserve(samples.size());
+    for (const PlotSample& s : samples) {
+        float r = plotRadius(componentOf(s, component), maxIntensity, scale);
+        float to = glm::radians(s.thetaOutDeg);
+        points.emplace_back(r * std::sin(to), r * std::cos(to));
+    }
+    return points;
+}
+
+float maxTotal(const std::vector<std::vector<PlotSample>>& sets) {
+    float m = 1e-6f;
+    for (const auto& set : sets) {
+        for (const PlotSample& s : set) {
+            m = std::max(m, s.total);
+        }
+    }
+    return m;
+}
+
+std::vector<glm::vec2> attenuationCurve(const glm::vec3& coefficients, float maxDistance, int samples) {
+    std::vector<glm::vec2> points;
+    points.reserve(static_cast<std::size_t>(samples));
+    for (int i = 0; i < samples; ++i) {
+        float d = maxDistance * static_cast<float>(i) / static_cast<float>(samples - 1);
+        points.emplace_back(d, glsl::attenuation(coefficients, d));
+    }
+    return points;
 }
 
 } // namespace lab

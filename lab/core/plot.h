@@ -8,6 +8,8 @@
 
 #include "core/preset.h"
 
+#include <glm/vec2.hpp>
+
 #include <string>
 #include <vector>
 
@@ -25,5 +27,32 @@ std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentD
 
 // "theta_out_deg,diffuse,specular,total" and one line per sample.
 std::string plotCsv(const std::vector<PlotSample>& samples);
+
+//----------------------------------------------------------------------------------------
+// Plot geometry: what the GUI draws, as numbers (tested against the lighting functions)
+//----------------------------------------------------------------------------------------
+
+enum class PlotComponent { Diffuse, Specular, Total };
+enum class RadialScale { Linear, Log };
+
+// How many decades below the outer circle the logarithmic scale shows.
+inline constexpr float kLogDecades = 3.0f;
+
+float componentOf(const PlotSample& s, PlotComponent c);
+
+// The radius, in [0, 1], at which `intensity` is drawn when `maxIntensity` is the outer circle:
+// linear I/Imax, or logarithmic 1 + log10(I/Imax)/kLogDecades (0 below that range).
+float plotRadius(float intensity, float maxIntensity, RadialScale scale);
+
+// A lobe in the plot's unit half-disc, one point per sample: radius × (sin θo, cos θo), x along
+// the surface towards the viewer's side, y along N.
+std::vector<glm::vec2> lobePoints(const std::vector<PlotSample>& samples, PlotComponent component,
+                                  float maxIntensity, RadialScale scale);
+
+// The largest total over several sample sets (the outer circle when lobes are overlaid); 1e-6 at least.
+float maxTotal(const std::vector<std::vector<PlotSample>>& sets);
+
+// (d, Att(d)) for d from 0 to maxDistance, with the lighting model's attenuation().
+std::vector<glm::vec2> attenuationCurve(const glm::vec3& coefficients, float maxDistance, int samples);
 
 } // namespace lab

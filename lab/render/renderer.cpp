@@ -218,6 +218,15 @@ void Renderer::drawPoints(const Preset& preset, const std::vector<FlatVertex>& v
     glUseProgram(0);
 }
 
+void bindDefaultFramebuffer() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+
+void clearFramebuffer(const glm::vec3& color, int width, int height) {
+    glViewport(0, 0, width, height);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(color.r, color.g, color.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
 //----------------------------------------------------------------------------------------
 // GpuMesh
 //----------------------------------------------------------------------------------------

@@ -74,6 +74,12 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+// Binds the window's own framebuffer (after offscreen work).
+void bindDefaultFramebuffer();
+
+// Clears the whole bound framebuffer (size width × height) to `color`.
+void clearFramebuffer(const glm::vec3& color, int width, int height);
+
 // An offscreen RGBA8 + 24-bit depth framebuffer, read back as a top-row-first RGB image.
 class Framebuffer {
 public:

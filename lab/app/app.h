@@ -1,0 +1,76 @@
+// app.h — the interactive lab: one frame function that every windowed platform calls.
+//
+// The app owns the document (the preset being edited), the renderer and the UI state. Each
+// frame it builds the UI (ImGui), carries out what the UI asked for (open, save, undo, load a
+// model...), records undo steps, and draws the 3D view into the bound framebuffer; the platform
+// then renders ImGui's draw data on top and presents. The loop belongs to the platform
+// (platform/window.h); the app never sees GLFW or the browser.
+//
+// Implemented: live panel, plots, presets list, open/save/revert with unsaved-changes prompt,
+// drag-and-drop of presets and models, undo/redo, orbit/pan/zoom, light markers and dragging,
+// compare mode, per-term views, pixel probe, shader editor, screenshots, presenter mode,
+// help overlay, frame time. Errors are shown in the window and never change the scene.
+#pragma once
+
+#include "core/diagnostics.h"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lab {
+
+// A key press as the platform saw it: a GLFW key code (letters and digits are their ASCII
+// codes) with the modifiers held. Queued by the platform, because ImGui 1.86 polls key state
+// once a frame and misses a press and release that fall within one frame.
+struct KeyPress {
+    int key = 0;
+    bool ctrl = false, shift = false, alt = false;
+};
+
+struct FrameInput {
+    float windowWidth = 0, windowHeight = 0; // ImGui's units (screen coordinates)
+    int framebufferWidth = 0, framebufferHeight = 0;
+    float deltaTime = 1.0f / 60.0f;
+    std::vector<std::string> droppedFiles;
+    std::vector<KeyPress> keys;  // pressed since the last frame, in order
+    bool closeRequested = false; // the user closed the window
+};
+
+struct FrameOutput {
+    bool quit = false;
+    bool toggleFullscreen = false;
+    float uiScale = 1.0f; // the platform rebuilds fonts and style when this changes
+    std::string title;
+};
+
+struct AppOptions {
+    std::optional<std::filesystem::path> preset;      // opened at start; the defaults otherwise
+    bool presenter = false;                            // start in presenter mode
+    std::filesystem::path screenshotFolder = ".";
+    std::vector<std::filesystem::path> presetFolders;  // the first that exists fills the preset list
+    std::optional<std::filesystem::path> layoutFile;   // GUI tests: widget rectangles written here
+};
+
+class App {
+public:
+    explicit App(AppOptions options);
+    ~App();
+    App(const App&) = delete;
+    App& operator=(const App&) = delete;
+
+    // Needs the GL context and the ImGui context. False (with diagnostics) if the built-in
+    // shaders do not compile; a preset that fails to open is shown as an error in the window.
+    bool init(Diagnostics& diagnostics);
+
+    // Between ImGui::NewFrame() and ImGui::Render(), with the default framebuffer bound.
+    FrameOutput frame(const FrameInput& input);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace lab

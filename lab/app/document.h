@@ -1,0 +1,61 @@
+// document.h — the preset being edited: where it lives, what is on disk, and its history.
+//
+// The GUI edits `preset` in place, every frame, through plain references. The document turns
+// those edits into undo steps by comparing snapshots: commit() at the end of a frame records the
+// change since the last step, unless the user is still in the middle of a gesture (a slider
+// drag, a camera orbit), so one drag is one step. No GL and no ImGui here.
+#pragma once
+
+#include "core/preset.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lab {
+
+class Document {
+public:
+    Document();
+
+    // Replaces everything: a freshly opened file (or the defaults when `file` is empty). The
+    // history starts anew. `folder` is where glTF paths resolve for an untitled document.
+    void reset(Preset preset, std::filesystem::path file, std::filesystem::path folder = {});
+
+    Preset preset; // edited in place by the UI
+
+    const std::filesystem::path& file() const { return file_; }
+    std::filesystem::path folder() const;
+    std::string displayName() const; // file name, or the preset's name when untitled
+    bool dirty() const { return preset != saved_; }
+    const Preset& saved() const { return saved_; }
+
+    // Records the edits since the last step as one undo step, unless `gestureInProgress`.
+    // Returns true if a step was recorded.
+    bool commit(bool gestureInProgress);
+
+    bool canUndo() const { return !undo_.empty() || preset != committed_; }
+    bool canRedo() const { return !redo_.empty(); }
+    bool undo();
+    bool redo();
+    std::size_t undoDepth() const { return undo_.size(); }
+
+    // After a successful save to `file` (which may be a new path: save-as).
+    void markSaved(std::filesystem::path file);
+
+    // Back to what is on disk (or the defaults), as one undoable step.
+    void revert();
+
+    void setFolder(std::filesystem::path folder) { folder_ = std::move(folder); }
+
+    static constexpr std::size_t kMaxHistory = 500;
+
+private:
+    std::filesystem::path file_;
+    std::filesystem::path folder_; // for untitled documents
+    Preset saved_;
+    Preset committed_; // the state after the last recorded step
+    std::vector<Preset> undo_, redo_;
+};
+
+} // namespace lab

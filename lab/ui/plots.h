@@ -1,0 +1,32 @@
+// plots.h — the live plots beside the model, redrawn every frame from the lighting functions.
+//
+//   * the reflection lobe in the plane of incidence for the preset's incident angle: diffuse,
+//     specular and total, with N, L, R, V (and H for Blinn-Phong and Cook-Torrance) as arrows;
+//     drag L to change the incident angle, drag V to read the intensities in that direction;
+//   * the lobes for several incident angles overlaid (the classic 60°/25°/10° figure);
+//   * linear or logarithmic radial scale, polar or Cartesian;
+//   * the attenuation curve Att(d) of a light, with a marker at its distance to the model.
+// The numbers come from core/plot.h (the same code as `lab plot`); this file only draws.
+#pragma once
+
+#include "core/plot.h"
+#include "core/probe.h"
+
+#include <optional>
+
+namespace lab::ui {
+
+struct PlotSettings {
+    RadialScale scale = RadialScale::Linear;
+    bool cartesian = false;
+    float viewerDeg = 20.0f;                  // V in the lobe plot
+    glm::vec3 overlayDeg{60.0f, 25.0f, 10.0f}; // the overlaid incident angles
+    int attenuationLight = 0;
+    int dragging = 0; // 0 none, 1 L, 2 V
+};
+
+// Draws the plots into the current ImGui window. Dragging L edits a.plotIncidentDeg (part of the
+// preset, so it is undoable and saved). `b` is the compare set, overlaid when given.
+void plotsPanel(Preset& a, const Preset* b, PlotSettings& settings, const ProbeResult* probe);
+
+} // namespace lab::ui

@@ -1,0 +1,160 @@
+// tools.cpp — probe, shader editor and help windows.
+#include "ui/tools.h"
+
+#include "ui/widgets.h"
+
+#include <imgui_stdlib.h>
+
+namespace lab::ui {
+
+const std::vector<Shortcut>& shortcuts() {
+    static const std::vector<Shortcut> list = {
+        {"F1", "show or hide this help"},
+        {"Left / Right", "previous / next preset in the list"},
+        {"1 / 2 / 3", "flat / Gouraud / Phong shading"},
+        {"B", "next BRDF: Phong, Blinn-Phong, Cook-Torrance"},
+        {"M", "normal matrix: correct / wrong"},
+        {"V", "next per-term view: lit, emissive, ambient, diffuse, specular, normals"},
+        {"C", "compare mode: the view split in two"},
+        {"Tab", "hide or show the panels"},
+        {"P", "presenter mode (large UI)"},
+        {"Ctrl + = / Ctrl + -", "presenter scale up / down (1.5x to 2.5x)"},
+        {"F11", "fullscreen"},
+        {"R", "reset the camera to the preset's"},
+        {"F12", "screenshot of the 3D view to PNG"},
+        {"Ctrl+Z / Ctrl+Y", "undo / redo (Ctrl+Shift+Z redoes too)"},
+        {"Ctrl+S / Ctrl+Shift+S", "save / save as (the path field)"},
+        {"Ctrl+O", "open a preset by path (the path field)"},
+        {"Ctrl+E", "shader editor; Ctrl+Enter compiles"},
+        {"Left drag / Right drag / Wheel", "orbit / pan / zoom; drag a light marker to move the light"},
+        {"Click", "probe the pixel under the mouse"},
+        {"Drop a file", ".json opens a preset, .gltf/.glb loads a model"},
+    };
+    return list;
+}
+
+void helpWindow(bool& open) {
+    if (!open) {
+        return;
+    }
+    ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    if (ImGui::Begin("Keyboard shortcuts (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+        if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+            for (const Shortcut& s : shortcuts()) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(s.keys);
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(s.action);
+            }
+            ImGui::EndTable();
+        }
+    }
+    mark("help");
+    ImGui::End();
+}
+
+namespace {
+
+void vec(const char* name, const glm::vec3& v) { ImGui::Text("%-3s (%+.3f, %+.3f, %+.3f)", name, v.x, v.y, v.z); }
+void rgb(const char* name, const glm::vec3& v) { ImGui::Text("%-18s %.4f  %.4f  %.4f", name, v.x, v.y, v.z); }
+
+} // namespace
+
+void probeWindow(const ProbeResult& probe, const Preset& preset, bool& open, float x, float y) {
+    if (!open) {
+        return;
+    }
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 26, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    if (ImGui::Begin("Pixel probe", &open)) {
+        ImGui::TextDisabled("Eye space. Shading: %s%s", std::string(toString(preset.shading)).c_str(),
+                            preset.shading == Shading::Gouraud ? " (the pixel interpolates vertex colours; this is the per-pixel value)" : "");
+        vec("p", probe.positionEye);
+        vec("N", probe.N);
+        vec("V", probe.V);
+        rgb("emissive", probe.emissive);
+        rgb("global ambient", probe.globalAmbient);
+        for (const ProbeLight& l : probe.lights) {
+            ImGui::Separator();
+            ImGui::Text("Light %d", l.index + 1);
+            vec("L", l.L);
+            vec(preset.brdf == BrdfModel::Phong ? "R" : "H", preset.brdf == BrdfModel::Phong ? l.R : l.H);
+            ImGui::Text("N.L %+.4f  R.V %+.4f  N.H %+.4f  V.H %+.4f  N.V %+.4f", l.NoL, l.RoV, l.NoH, l.VoH, l.NoV);
+            if (l.distance > 0.0f) {
+                ImGui::Text("d %.3f  Att %.4f", l.distance, l.attenuation);
+            } else {
+                ImGui::Text("directional: Att %.4f", l.attenuation);
+            }
+            if (preset.brdf == BrdfModel::CookTorrance) {
+                ImGui::Text("D %.4f  F %.4f  G %.4f", l.D, l.F, l.G);
+            }
+            ImGui::Text("S %.5f", l.specularFactor);
+            rgb("ambient", l.ambient);
+            rgb("diffuse", l.diffuse);
+            rgb("specular", l.specular);
+        }
+        ImGui::Separator();
+        rgb("colour (clamped)", probe.color);
+        ImGui::ColorButton("##probecolor", ImVec4(probe.color.r, probe.color.g, probe.color.b, 1.0f));
+    }
+    mark("probe");
+    ImGui::End();
+}
+
+void shaderEditorWindow(ShaderEditorState& s, ShaderEditorActions& actions, std::string_view lightingSource) {
+    if (!s.open) {
+        return;
+    }
+    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 46, ImGui::GetFontSize() * 36), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Shader editor", &s.open)) {
+        if (ImGui::Button("Compile (Ctrl+Enter)")) {
+            actions.compile = true;
+        }
+        mark("shader.compile");
+        ImGui::SameLine();
+        if (ImGui::Button("Revert to built-in")) {
+            actions.revert = true;
+        }
+        ImGui::SameLine();
+        ImGui::TextDisabled(s.customActive ? "running: edited shaders" : "running: built-in shaders");
+        ImVec2 editor(-1, -ImGui::GetTextLineHeightWithSpacing() * (s.log.empty() ? 1.0f : 7.0f));
+        if (ImGui::BeginTabBar("stages")) {
+            if (ImGui::BeginTabItem("lit.frag")) {
+                ImGui::InputTextMultiline("##frag", &s.fragment, editor, ImGuiInputTextFlags_AllowTabInput);
+                mark("shader.fragment");
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("lit.vert")) {
+                ImGui::InputTextMultiline("##vert", &s.vertex, editor, ImGuiInputTextFlags_AllowTabInput);
+                mark("shader.vertex");
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("lighting.glsl (read-only)")) {
+                std::string text(lightingSource);
+                ImGui::InputTextMultiline("##lighting", &text, editor, ImGuiInputTextFlags_ReadOnly);
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
+        }
+        if (ImGui::GetIO().KeyCtrl && (ImGui::IsKeyPressed(keys::Enter) || ImGui::IsKeyPressed(keys::KeypadEnter))) {
+            actions.compile = true;
+        }
+        if (!s.log.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, s.lastCompileFailed ? IM_COL32(255, 120, 110, 255) : IM_COL32(140, 220, 140, 255));
+            ImGui::BeginChild("log", ImVec2(-1, 0), true);
+            for (const std::string& line : s.log) {
+                ImGui::TextWrapped("%s", line.c_str());
+            }
+            ImGui::EndChild();
+            mark("shader.log");
+            ImGui::PopStyleColor();
+        }
+    }
+    ImGui::End();
+}
+
+} // namespace lab::ui
