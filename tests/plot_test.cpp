@@ -62,3 +62,60 @@ TEST(Plot, CsvHasTheDocumentedHeaderAndOneRowPerDegree) {
 
 } // namespace
 } // namespace lab
+
+namespace lab {
+namespace {
+
+// The geometry the GUI draws: each lobe point is radius × (sin θo, cos θo), the radius being
+// the sampled intensity (from the lighting functions) over the outer circle's.
+TEST(PlotGeometry, LobePointsFollowTheLightingFunctions) {
+    Preset p;
+    p.brdf = BrdfModel::BlinnPhong;
+    p.material.shininess = 20.0f;
+    std::vector<PlotSample> s = reflectedIntensity(p, 30.0f);
+    float maxI = maxTotal({s});
+    std::vector<glm::vec2> points = lobePoints(s, PlotComponent::Specular, maxI, RadialScale::Linear);
+    ASSERT_EQ(points.size(), s.size());
+    glsl::Brdf b = packBrdf(p);
+    float ti = glm::radians(30.0f);
+    for (int deg : {-45, 0, 10, 30, 60, 90}) {
+        float to = glm::radians(float(deg));
+        float S = glsl::specularFactor(glm::vec3(0, 1, 0), glm::vec3(-std::sin(ti), std::cos(ti), 0),
+                                       glm::vec3(std::sin(to), std::cos(to), 0), p.material.shininess, b);
+        float r = luminance(p.material.specular * S) / maxI;
+        const glm::vec2& pt = points[std::size_t(deg + 90)];
+        EXPECT_NEAR(pt.x, r * std::sin(to), 1e-6f) << deg;
+        EXPECT_NEAR(pt.y, r * std::cos(to), 1e-6f) << deg;
+    }
+}
+
+TEST(PlotGeometry, TheTotalLobeReachesTheOuterCircle) {
+    std::vector<PlotSample> s = reflectedIntensity(Preset{}, 45.0f);
+    std::vector<glm::vec2> total = lobePoints(s, PlotComponent::Total, maxTotal({s}), RadialScale::Linear);
+    float longest = 0.0f;
+    for (const glm::vec2& pt : total) {
+        longest = std::max(longest, glm::length(pt));
+    }
+    EXPECT_NEAR(longest, 1.0f, 1e-6f);
+}
+
+TEST(PlotGeometry, LogarithmicRadius) {
+    EXPECT_FLOAT_EQ(plotRadius(1.0f, 1.0f, RadialScale::Log), 1.0f);
+    EXPECT_NEAR(plotRadius(0.1f, 1.0f, RadialScale::Log), 1.0f - 1.0f / kLogDecades, 1e-6f);
+    EXPECT_NEAR(plotRadius(0.001f, 1.0f, RadialScale::Log), 0.0f, 1e-6f);
+    EXPECT_EQ(plotRadius(1e-6f, 1.0f, RadialScale::Log), 0.0f); // below the shown decades
+    EXPECT_EQ(plotRadius(0.0f, 1.0f, RadialScale::Log), 0.0f);
+    EXPECT_FLOAT_EQ(plotRadius(0.25f, 1.0f, RadialScale::Linear), 0.25f);
+}
+
+TEST(PlotGeometry, AttenuationCurveUsesTheModel) {
+    std::vector<glm::vec2> c = attenuationCurve(glm::vec3(0, 0, 1), 4.0f, 5);
+    ASSERT_EQ(c.size(), 5u);
+    EXPECT_FLOAT_EQ(c[0].y, 1.0f);        // d = 0: clamped
+    EXPECT_FLOAT_EQ(c[2].y, 0.25f);       // d = 2: 1/d^2
+    EXPECT_FLOAT_EQ(c[4].x, 4.0f);
+    EXPECT_FLOAT_EQ(c[4].y, 1.0f / 16.0f);
+}
+
+} // namespace
+} // namespace lab

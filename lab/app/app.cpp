@@ -108,7 +108,7 @@ struct App::Impl {
     int dragLight = -1;
     float frameMs = 0.0f;
     ui::Rect view{}, viewA{}, viewB{};
-    std::string lastLayout;
+    unsigned long long frames = 0;
     int screenshots = 0;
 
     //------------------------------------------------------------------------------------
@@ -410,8 +410,8 @@ struct App::Impl {
                 continue;
             }
             std::optional<ImVec2> at = project(l.position, r);
-            if (!at) {
-                continue;
+            if (!at || at->x < r.x || at->y < r.y || at->x > r.x + r.w || at->y > r.y + r.h) {
+                continue; // behind the eye or outside the view
             }
             glm::vec3 c = glm::clamp(l.diffuse, glm::vec3(0.0f), glm::vec3(1.0f));
             ImU32 fill = l.enabled ? ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1.0f)) : IM_COL32(60, 60, 60, 255);
@@ -613,7 +613,7 @@ struct App::Impl {
             }
             ImGui::PopStyleColor();
             ui::widgets().set("error", {ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowSize().x, ImGui::GetWindowSize().y});
-            if (ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(Enter) || ImGui::IsKeyPressed(ui::keys::Escape)) {
+            if (ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(Enter, false) || ImGui::IsKeyPressed(ui::keys::Escape, false)) {
                 ImGui::CloseCurrentPopup();
             }
             ui::mark("error.ok");
@@ -644,7 +644,7 @@ struct App::Impl {
             }
             ui::mark("confirm.discard");
             ImGui::SameLine();
-            if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ui::keys::Escape)) {
+            if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ui::keys::Escape, false)) {
                 ImGui::CloseCurrentPopup();
                 pending = nullptr;
             }
@@ -876,15 +876,13 @@ FrameOutput App::frame(const FrameInput& in) {
     m.drawViews(static_cast<float>(in.framebufferWidth) / W, H, 0.0f, 0.0f);
 
     if (m.options.layoutFile) {
+        // Rewritten every frame: the frame number lets a test wait for its input to be seen.
         std::string layout = ui::widgets().text();
-        char window[64];
-        std::snprintf(window, sizeof window, "window 0 0 %.0f %.0f\n", W, H);
+        char window[96];
+        std::snprintf(window, sizeof window, "window 0 0 %.0f %.0f\nframe %llu\n", W, H, ++m.frames);
         layout += window;
-        if (layout != m.lastLayout) {
-            std::string error;
-            writeFileAtomic(*m.options.layoutFile, layout, error);
-            m.lastLayout = layout;
-        }
+        std::string error;
+        writeFileAtomic(*m.options.layoutFile, layout, error);
     }
     out.quit = m.quitNow;
     out.uiScale = m.presenter ? m.presenterScale : 1.0f;

@@ -20,7 +20,7 @@ void orbitCamera(Camera& camera, float yawDeg, float pitchDeg) {
     // Pitch about the right axis, clamped so that the direction stays 1 degree from the up axis.
     float current = glm::degrees(std::acos(std::clamp(glm::dot(dir, up), -1.0f, 1.0f))); // 0 = above the target
     float target = std::clamp(current - pitchDeg, 1.0f, 179.0f);
-    glm::vec3 right = glm::cross(up, dir);
+    glm::vec3 right = glm::cross(dir, up); // turning about it by a positive angle raises dir towards up
     if (glm::length(right) > 1e-6f) {
         right = glm::normalize(right);
         dir = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(current - target), right) * glm::vec4(dir, 0.0f));

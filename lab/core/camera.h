@@ -5,8 +5,9 @@
 
 namespace lab {
 
-// Turns the eye around the target: `yawDeg` about the up vector, `pitchDeg` about the camera's
-// right axis, stopping 1° short of the poles so the view never flips. The distance is kept.
+// Turns the eye around the target: `yawDeg` about the up vector (counter-clockwise seen from
+// above), `pitchDeg` upwards (positive raises the eye), stopping 1° short of the poles so the
+// view never flips. The distance is kept.
 void orbitCamera(Camera& camera, float yawDeg, float pitchDeg);
 
 // Moves the eye towards the target by `factor` of the distance (factor < 1 zooms in), keeping
