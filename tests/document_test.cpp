@@ -97,3 +97,21 @@ TEST(Document, ResetStartsANewHistory) {
 
 } // namespace
 } // namespace lab
+
+#include "ui/tools.h"
+#include "test_files.h"
+
+namespace lab {
+namespace {
+
+// The README's shortcut table and the help overlay (F1) list the same shortcuts.
+TEST(Docs, ReadmeListsEveryShortcutOfTheHelpOverlay) {
+    std::string readme = readText(std::string(LAB_SOURCE_DIR) + "/README.md");
+    for (const ui::Shortcut& s : ui::shortcuts()) {
+        std::string row = std::string("| ") + s.keys + " | " + s.action + " |";
+        EXPECT_NE(readme.find(row), std::string::npos) << "README.md lacks the row " << row;
+    }
+}
+
+} // namespace
+} // namespace lab

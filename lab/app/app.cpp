@@ -718,6 +718,7 @@ FrameOutput App::frame(const FrameInput& in) {
     // Compare: side by side, or one above the other where halves side by side would be narrow
     // (the field of view is vertical, so a narrow half would crop the model).
     m.compareStacked = m.view.w * 0.5f < m.view.h * 0.8f;
+    m.panel.compareStacked = m.compareStacked;
     if (m.compareStacked) {
         m.viewA = {m.view.x, m.view.y, m.view.w, m.view.h * 0.5f};
         m.viewB = {m.view.x, m.view.y + m.view.h * 0.5f, m.view.w, m.view.h * 0.5f};

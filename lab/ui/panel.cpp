@@ -391,17 +391,16 @@ void controlPanel(Preset& preset, PanelModel& model, PanelActions& actions) {
     mark("compare");
     if (model.compare) {
         ImGui::SameLine();
-        if (ImGui::RadioButton("edit A (left)", !model.editingB)) {
+        if (ImGui::RadioButton(model.compareStacked ? "edit A (top)" : "edit A (left)", !model.editingB)) {
             model.editingB = false;
         }
         ImGui::SameLine();
-        if (ImGui::RadioButton("edit B (right)", model.editingB)) {
+        if (ImGui::RadioButton(model.compareStacked ? "edit B (bottom)" : "edit B (right)", model.editingB)) {
             model.editingB = true;
         }
         mark("compare.edit-b");
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Shader")) {
+    if (ImGui::Button("Shader editor")) {
         actions.openShaderEditor = true;
     }
     ImGui::SameLine();

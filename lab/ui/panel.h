@@ -30,6 +30,7 @@ struct PanelModel {
     std::string modelPath;
     bool compare = false;        // compare mode on
     bool editingB = false;       // the panel edits the second set
+    bool compareStacked = false; // A above B rather than beside it
     ViewMode viewMode = ViewMode::Lit;
     int selectedLight = 0;
 };

@@ -8,6 +8,7 @@
 #include "x11_driver.h"
 
 #include "core/image.h"
+#include "core/preset.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>
@@ -361,6 +362,36 @@ TEST(Gui, ArrowKeysStepThroughThePresets) {
     EXPECT_GT(changedShare(first, second), 0.05) << "02-diffuse-only should look different from 01-ambient-only";
     lab.press("Left");
     EXPECT_EQ(compareImages(lab.viewShot(), first, Tolerance{}).maxDifference, 0);
+}
+
+TEST(Gui, DroppedGltfModelIsLoaded) {
+    START_LAB(lab, "--preset", preset("05-full-phong"));
+    Image sphere = lab.viewShot();
+    Rect view = lab.widget("view");
+    std::string error;
+    ASSERT_TRUE(lab.x().dropFile(lab.window(), std::string(LAB_SOURCE_DIR) + "/presets/models/trefoil.glb", view.cx(),
+                                 view.cy(), error))
+        << error;
+    lab.waitFrames(3);
+    EXPECT_FALSE(lab.has("error"));
+    EXPECT_GT(changedShare(lab.viewShot(), sphere), 0.05) << "the knot should replace the sphere";
+}
+
+TEST(Gui, CtrlSSavesTheEditsToThePresetFile) {
+    TempFolder dir;
+    fs::path file = dir.path() / "mine.json";
+    fs::copy_file(preset("05-full-phong"), file);
+    START_LAB(lab, "--preset", file.string());
+    Rect view = lab.widget("view");
+    lab.moveTo(view.cx(), view.cy());
+    lab.press("1");
+    lab.press("s", "Control_L");
+    lab.waitFrames(2);
+    Diagnostics d;
+    std::optional<LoadedPreset> saved = loadPreset(file, d);
+    ASSERT_TRUE(saved) << toString(d);
+    EXPECT_EQ(saved->preset.shading, Shading::Flat);
+    EXPECT_EQ(saved->preset.material.diffuse, glm::vec3(0.8f, 0.25f, 0.2f)); // the rest as it was
 }
 
 } // namespace
