@@ -5,6 +5,7 @@
 #include "core/camera.h"
 #include "core/file_io.h"
 #include "core/image.h"
+#include "core/link.h"
 #include "core/model_loader.h"
 #include "core/probe.h"
 #include "render/renderer.h"
@@ -273,6 +274,10 @@ struct App::Impl {
     }
 
     void save() {
+        if (options.saveByDownload) {
+            download();
+            return;
+        }
         if (doc.file().empty()) {
             if (panel.saveAsPath.empty()) {
                 showError("Nothing to save to", "this preset has no file yet: type a path in the \"Save as\" field");
@@ -352,6 +357,11 @@ struct App::Impl {
             std::snprintf(name, sizeof name, "-%03d.png", ++screenshots);
             file = options.screenshotFolder / (stem + name);
         } while (fs::exists(file, ec));
+        if (options.saveByDownload) {
+            pendingDownloads.push_back({file.filename().string(), encodePng(image)});
+            say("Screenshot " + file.filename().string() + " downloaded");
+            return;
+        }
         std::string error;
         if (!writePng(image, file, error)) {
             showError("Screenshot failed", error);
@@ -359,6 +369,76 @@ struct App::Impl {
         }
         say("Screenshot " + file.string());
     }
+
+    //------------------------------------------------------------------------------------
+    // Links (the browser's URL fragment and saved state)
+    //------------------------------------------------------------------------------------
+
+    fs::path bundledFolder() const { return options.presetFolders.empty() ? fs::path(".") : options.presetFolders.front(); }
+
+    void openLink(const std::string& fragment) {
+        Diagnostics d;
+        auto parsed = parseLink(fragment, bundledFolder(), d);
+        if (!parsed) {
+            showError("Cannot open the link (nothing was changed)", d);
+            return;
+        }
+        if (auto* name = std::get_if<LinkedPresetName>(&*parsed)) {
+            fs::path file = bundledFolder() / (name->name + ".json");
+            std::error_code ec;
+            if (!fs::is_regular_file(file, ec)) {
+                showError("Cannot open the link (nothing was changed)", "there is no bundled preset \"" + name->name + "\"");
+                return;
+            }
+            openPreset(file);
+            return;
+        }
+        Preset preset = std::get<Preset>(*parsed);
+        if (!meshFor(preset.model, bundledFolder(), d)) {
+            showError("Cannot load the linked preset's model (nothing was changed)", d);
+            return;
+        }
+        whenChangesAreSafe("open the link", [this, preset]() {
+            doc.reset(preset, {}, bundledFolder());
+            compareB = doc.preset;
+            probe.reset();
+            refreshPresetList();
+        });
+    }
+
+    // The fragment for the current scene, recomputed only when the scene changed.
+    const std::string& currentLink() {
+        if (!linkValid || linkedPreset != doc.preset || linkedFile != doc.file()) {
+            std::optional<std::string> bundled;
+            std::error_code ec;
+            if (!doc.dirty() && !doc.file().empty() && fs::equivalent(doc.folder(), bundledFolder(), ec)) {
+                bundled = doc.file().stem().string();
+            }
+            link = presetLink(doc.preset, bundled);
+            linkedPreset = doc.preset;
+            linkedFile = doc.file();
+            linkValid = true;
+        }
+        return link;
+    }
+
+    void download() {
+        doc.commit(false);
+        std::string stem = doc.file().empty() ? doc.preset.name : doc.file().stem().string();
+        std::string name;
+        for (char c : stem) {
+            name += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '-';
+        }
+        pendingDownloads.push_back({(name.empty() ? "preset" : name) + ".json", presetToJson(doc.preset)});
+        doc.markSaved(doc.file());
+        say("Downloaded " + pendingDownloads.back().name);
+    }
+
+    std::vector<Download> pendingDownloads;
+    std::string link;
+    Preset linkedPreset;
+    fs::path linkedFile;
+    bool linkValid = false;
 
     //------------------------------------------------------------------------------------
     // The 3D view
@@ -691,6 +771,9 @@ FrameOutput App::frame(const FrameInput& in) {
     if (!in.droppedFiles.empty()) {
         m.dropped(in.droppedFiles);
     }
+    if (in.openLink && !in.openLink->empty()) {
+        m.openLink(*in.openLink);
+    }
     if (in.closeRequested) {
         m.whenChangesAreSafe("quit", [&m]() { m.quitNow = true; });
     }
@@ -736,6 +819,7 @@ FrameOutput App::frame(const FrameInput& in) {
     m.panel.dirty = m.doc.dirty();
     m.panel.canUndo = m.doc.canUndo();
     m.panel.canRedo = m.doc.canRedo();
+    m.panel.browser = m.options.saveByDownload;
     Preset& edited = m.panel.compare && m.panel.editingB ? m.compareB : m.doc.preset;
     if (m.showPanels) {
         ImGui::SetNextWindowPos(ImVec2(0, 0));
@@ -808,6 +892,10 @@ FrameOutput App::frame(const FrameInput& in) {
     if (actions.screenshot) {
         m.screenshotRequested = true;
     }
+    if (actions.download) {
+        m.download();
+    }
+    out.pickFile = actions.pickFile;
     if (shaderActions.compile || shaderActions.revert) {
         StageSources sources = shaderActions.revert ? builtinStageSources()
                                                     : StageSources{m.shaderEditor.vertex, m.shaderEditor.fragment};
@@ -886,6 +974,8 @@ FrameOutput App::frame(const FrameInput& in) {
         writeFileAtomic(*m.options.layoutFile, layout, error);
     }
     out.quit = m.quitNow;
+    out.link = m.currentLink();
+    out.downloads.swap(m.pendingDownloads);
     out.uiScale = m.presenter ? m.presenterScale : 1.0f;
     out.title = "Lighting Lab - " + m.doc.displayName() + (m.doc.dirty() ? " *" : "");
     return out;

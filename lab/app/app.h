@@ -37,6 +37,13 @@ struct FrameInput {
     std::vector<std::string> droppedFiles;
     std::vector<KeyPress> keys;  // pressed since the last frame, in order
     bool closeRequested = false; // the user closed the window
+    std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/link.h)
+};
+
+// A file the platform should hand to the user (the browser downloads it).
+struct Download {
+    std::string name;
+    std::string bytes;
 };
 
 struct FrameOutput {
@@ -44,6 +51,9 @@ struct FrameOutput {
     bool toggleFullscreen = false;
     float uiScale = 1.0f; // the platform rebuilds fonts and style when this changes
     std::string title;
+    std::string link;               // the current scene as a preset link (shareable, restorable)
+    std::vector<Download> downloads; // only when AppOptions::saveByDownload
+    bool pickFile = false;           // the user asked to open a file (the browser shows its picker)
 };
 
 struct AppOptions {
@@ -52,6 +62,9 @@ struct AppOptions {
     std::filesystem::path screenshotFolder = ".";
     std::vector<std::filesystem::path> presetFolders;  // the first that exists fills the preset list
     std::optional<std::filesystem::path> layoutFile;   // GUI tests: widget rectangles written here
+    // The browser: files are saved by downloading them and opened through the page's picker,
+    // so the panel offers Download and Open instead of path fields.
+    bool saveByDownload = false;
 };
 
 class App {

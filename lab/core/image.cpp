@@ -11,12 +11,20 @@
 
 namespace lab {
 
-bool writePng(const Image& image, const std::filesystem::path& file, std::string& error) {
+std::string encodePng(const Image& image) {
     std::string bytes;
     auto append = [](void* context, void* data, int size) {
         static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
     };
     if (!stbi_write_png_to_func(append, &bytes, image.width, image.height, 3, image.rgb.data(), image.width * 3)) {
+        return {};
+    }
+    return bytes;
+}
+
+bool writePng(const Image& image, const std::filesystem::path& file, std::string& error) {
+    std::string bytes = encodePng(image);
+    if (bytes.empty()) {
         error = "cannot encode PNG";
         return false;
     }

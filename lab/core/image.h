@@ -17,6 +17,8 @@ struct Image {
 
 inline constexpr int kMaxImageSide = 16384;
 
+// PNG bytes in memory; empty on failure.
+std::string encodePng(const Image& image);
 // Encodes to PNG in memory and writes it atomically.
 bool writePng(const Image& image, const std::filesystem::path& file, std::string& error);
 std::optional<Image> readPng(const std::filesystem::path& file, std::string& error);

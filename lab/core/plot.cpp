@@ -2,9 +2,9 @@
 #include "core/plot.h"
 
 #include "core/lighting.h"
+#include "core/number_format.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 namespace lab {
@@ -30,9 +30,7 @@ std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentD
 std::string plotCsv(const std::vector<PlotSample>& samples) {
     std::string out = "theta_out_deg,diffuse,specular,total\n";
     auto put = [&](float v, char end) {
-        char buf[32];
-        auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v); // shortest round-trip form
-        out.append(buf, p);
+        out += shortestFloat(v);
         out += end;
     };
     for (const PlotSample& s : samples) {

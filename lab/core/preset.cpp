@@ -6,13 +6,13 @@
 #include "core/preset.h"
 
 #include "core/file_io.h"
+#include "core/number_format.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <set>
 
@@ -633,10 +633,7 @@ namespace {
 // The shortest decimal that reads back as the same float: 0.8f is written "0.8", not
 // "0.800000011920929", and parses back to exactly 0.8f.
 Json number(float f) {
-    char buf[32];
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, f);
-    double d = 0.0;
-    std::from_chars(buf, end, d);
+    double d = std::strtod(shortestFloat(f).c_str(), nullptr);
     if (d == std::floor(d) && std::abs(d) < 1e15) {
         return Json(static_cast<std::int64_t>(d));
     }

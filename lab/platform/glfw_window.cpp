@@ -13,6 +13,8 @@
 // glGetError in the window.
 #include "platform/window.h"
 
+#include "platform/imgui_glfw.h"
+
 #include "render/gl.h"
 
 #include <GLFW/glfw3.h>
@@ -28,50 +30,11 @@ namespace lab {
 
 namespace {
 
-struct WindowState {
-    std::vector<std::string> dropped;
-    std::vector<KeyPress> keys;
+struct WindowState : InputQueue {
     int windowedX = 100, windowedY = 100, windowedW = 1600, windowedH = 900;
 };
 
-void onDrop(GLFWwindow* window, int count, const char** paths) {
-    auto* state = static_cast<WindowState*>(glfwGetWindowUserPointer(window));
-    for (int i = 0; i < count; ++i) {
-        state->dropped.emplace_back(paths[i]);
-    }
-}
-
-// Installed before ImGui's, which calls it after its own (ImGui chains earlier callbacks).
-void onKey(GLFWwindow* window, int key, int, int action, int mods) {
-    if (action == GLFW_PRESS || action == GLFW_REPEAT) {
-        auto* state = static_cast<WindowState*>(glfwGetWindowUserPointer(window));
-        state->keys.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0});
-    }
-}
-
-void applyScale(float scale, const ImGuiStyle& baseStyle) {
-    ImGuiIO& io = ImGui::GetIO();
-    io.Fonts->Clear();
-    float size = 15.0f * scale;
-    const char* fonts[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"};
-    bool loaded = false;
-    for (const char* f : fonts) {
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(f, ec) && io.Fonts->AddFontFromFileTTF(f, size)) {
-            loaded = true;
-            break;
-        }
-    }
-    if (!loaded) {
-        ImFontConfig config;
-        config.SizePixels = 13.0f * scale;
-        io.Fonts->AddFontDefault(&config);
-    }
-    ImGui_ImplOpenGL3_DestroyFontsTexture();
-    ImGui_ImplOpenGL3_CreateFontsTexture();
-    ImGui::GetStyle() = baseStyle;
-    ImGui::GetStyle().ScaleAllSizes(scale);
-}
+const std::vector<std::string> kFonts = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"};
 
 void toggleFullscreen(GLFWwindow* window, WindowState& state) {
     if (glfwGetWindowMonitor(window)) {
@@ -118,9 +81,7 @@ WindowResult runWindow(App& app, const WindowOptions& options, std::string& erro
         return WindowResult::Failed;
     }
     WindowState state;
-    glfwSetWindowUserPointer(window, &state);
-    glfwSetDropCallback(window, onDrop);
-    glfwSetKeyCallback(window, onKey);
+    installInputQueue(window, &state);
     glfwMakeContextCurrent(window);
     glfwSwapInterval(1);
 
@@ -143,7 +104,7 @@ WindowResult runWindow(App& app, const WindowOptions& options, std::string& erro
             toggleFullscreen(window, state);
         }
         float scale = 1.0f;
-        applyScale(scale, baseStyle);
+        applyUiScale(scale, baseStyle, kFonts);
         double last = glfwGetTime();
         bool quit = false;
         while (!quit) {
@@ -181,7 +142,7 @@ WindowResult runWindow(App& app, const WindowOptions& options, std::string& erro
             }
             if (out.uiScale != scale) {
                 scale = out.uiScale;
-                applyScale(scale, baseStyle);
+                applyUiScale(scale, baseStyle, kFonts);
             }
             quit = out.quit;
         }

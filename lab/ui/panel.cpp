@@ -55,7 +55,43 @@ void enumRadios(const char* id, E& value, const E (&values)[N], const char* cons
     ImGui::PopID();
 }
 
+void browserFilesSection(PanelModel& model, PanelActions& actions) {
+    ImGui::Text("%s%s", model.documentName.c_str(), model.dirty ? "  (modified)" : "");
+    if (ImGui::Button("Download preset")) {
+        actions.download = true;
+    }
+    mark("file.download");
+    ImGui::SameLine();
+    if (ImGui::Button("Open preset...")) {
+        actions.pickFile = true;
+    }
+    mark("file.open");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!model.dirty);
+    if (ImGui::Button("Revert")) {
+        actions.revert = true;
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!model.canUndo);
+    if (ImGui::Button("Undo")) {
+        actions.undo = true;
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!model.canRedo);
+    if (ImGui::Button("Redo")) {
+        actions.redo = true;
+    }
+    ImGui::EndDisabled();
+    ImGui::TextDisabled("Drop a .json preset or a .glb model on the page.");
+}
+
 void filesSection(PanelModel& model, PanelActions& actions) {
+    if (model.browser) {
+        browserFilesSection(model, actions);
+        return;
+    }
     ImGui::Text("%s%s", model.documentName.c_str(), model.dirty ? "  (modified)" : "");
     if (ImGui::Button("Save")) {
         actions.save = true;
@@ -226,14 +262,16 @@ void modelSection(Preset& p, PanelModel& model, PanelActions& actions) {
             p.model.subdivisions = defaultSubdivisions(p.model.builtin);
         }
     }
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Load").x - ImGui::GetStyle().FramePadding.x * 2 -
-                            ImGui::GetStyle().ItemSpacing.x);
-    bool enter = ImGui::InputTextWithHint("##model", "model.glb (or drop one on the window)", &model.modelPath,
-                                          ImGuiInputTextFlags_EnterReturnsTrue);
-    mark("model.path");
-    ImGui::SameLine();
-    if ((ImGui::Button("Load") || enter) && !model.modelPath.empty()) {
-        actions.loadModel = model.modelPath;
+    if (!model.browser) {
+        ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Load").x - ImGui::GetStyle().FramePadding.x * 2 -
+                                ImGui::GetStyle().ItemSpacing.x);
+        bool enter = ImGui::InputTextWithHint("##model", "model.glb (or drop one on the window)", &model.modelPath,
+                                              ImGuiInputTextFlags_EnterReturnsTrue);
+        mark("model.path");
+        ImGui::SameLine();
+        if ((ImGui::Button("Load") || enter) && !model.modelPath.empty()) {
+            actions.loadModel = model.modelPath;
+        }
     }
     glm::vec3 scale = p.model.scale;
     if (dragVec3("scale", scale, 0.01f, -10.0f, 10.0f)) {

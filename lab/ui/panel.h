@@ -31,6 +31,7 @@ struct PanelModel {
     bool compare = false;        // compare mode on
     bool editingB = false;       // the panel edits the second set
     bool compareStacked = false; // A above B rather than beside it
+    bool browser = false;        // files by download and the page's picker, not by path
     ViewMode viewMode = ViewMode::Lit;
     int selectedLight = 0;
 };
@@ -47,6 +48,8 @@ struct PanelActions {
     bool screenshot = false;
     bool openShaderEditor = false;
     bool showHelp = false;
+    bool download = false;    // the browser's "Download preset"
+    bool pickFile = false;    // the browser's "Open preset..."
 };
 
 // Draws the panel's contents into the current ImGui window.

@@ -1,0 +1,20 @@
+// web_main.cpp — the browser build's entry point: the lab with the bundled presets.
+// (The native entry point, with the command line, is lab/cli/main.cpp.)
+#include "platform/window.h"
+
+#include <cstdio>
+
+int main() {
+    lab::AppOptions options;
+    options.presetFolders = {"/presets"};   // bundled with the page (see CMakeLists.txt)
+    options.screenshotFolder = "/screenshots";
+    options.saveByDownload = true;
+    // The app must outlive main(): the browser's main loop keeps calling into it.
+    static lab::App app(std::move(options));
+    std::string error;
+    if (lab::runWindow(app, lab::WindowOptions{}, error) == lab::WindowResult::Failed) {
+        std::fprintf(stderr, "lab: %s\n", error.c_str());
+        return 1;
+    }
+    return 0;
+}

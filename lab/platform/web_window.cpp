@@ -1,0 +1,241 @@
+// web_window.cpp — the browser platform: Emscripten's GLFW on a WebGL2 canvas, Dear ImGui,
+// and the page's glue (web/index.html).
+//
+// Implemented features:
+//   * the loop is the browser's (emscripten_set_main_loop): one App::frame per animation frame,
+//     never blocking;
+//   * the canvas fills the page, follows resizes and renders at the device pixel ratio, while
+//     ImGui works in CSS pixels (so the UI is sharp and the usual size on high-DPI screens);
+//   * files dropped on the canvas or chosen in the page's file picker land in /presets (next to
+//     the bundled presets, so a preset's relative model paths resolve) and go to the app as drops;
+//   * downloads (presets, screenshots) become browser downloads;
+//   * the current scene is kept in the URL fragment (history.replaceState, a shareable link)
+//     and in localStorage, so a reload restores it; a hashchange opens the new link.
+// Not here: anything about presets, rendering or the UI's content.
+#include "platform/window.h"
+
+#include "platform/imgui_glfw.h"
+#include "ui/widgets.h"
+#include "render/gl.h"
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <emscripten.h>
+#include <emscripten/html5.h>
+#include <imgui.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace lab {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// clang-format off
+EM_JS(void, labJsDownload, (const char* name, const char* data, int size), {
+    const bytes = HEAPU8.slice(data, data + size);
+    const type = UTF8ToString(name).endsWith('.png') ? 'image/png' : 'application/json';
+    const url = URL.createObjectURL(new Blob([bytes], {type: type}));
+    const a = document.createElement('a');
+    a.href = url;
+    a.download = UTF8ToString(name);
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 1000);
+});
+
+EM_JS(void, labJsSetLink, (const char* link), {
+    const text = UTF8ToString(link);
+    if (location.hash.substring(1) !== text) {
+        history.replaceState(null, "", "#" + text);
+    }
+    try { localStorage.setItem('lighting-lab/link', text); } catch (e) {}
+});
+
+EM_JS(char*, labJsInitialLink, (), {
+    let text = location.hash.length > 1 ? location.hash.substring(1) : "";
+    if (!text) {
+        try { text = localStorage.getItem("lighting-lab/link") || ""; } catch (e) {}
+    }
+    return stringToNewUTF8(text);
+});
+
+EM_JS(void, labJsPickFile, (), {
+    const input = document.getElementById('file-input');
+    if (input) input.click();
+});
+
+EM_JS(void, labJsReady, (), {
+    if (Module.onLabReady) Module.onLabReady();
+});
+// clang-format on
+
+const std::vector<std::string> kFonts = {"/fonts/DejaVuSans.ttf"};
+
+struct WebState : InputQueue {
+    App* app = nullptr;
+    GLFWwindow* window = nullptr;
+    ImGuiStyle baseStyle;
+    float scale = 0.0f;
+    double last = 0.0;
+    std::string lastLink, lastTitle;
+    std::optional<std::string> pendingLink;
+    int frames = 0;
+};
+
+WebState* gState = nullptr;
+
+// A file from outside (dropped or picked) moves next to the bundled presets.
+std::string adopt(const std::string& path) {
+    fs::path from(path);
+    fs::path to = fs::path("/presets") / from.filename();
+    std::error_code ec;
+    for (int i = 2; fs::exists(to, ec) && !fs::equivalent(from, to, ec); ++i) {
+        to = fs::path("/presets") / (from.stem().string() + "-" + std::to_string(i) + from.extension().string());
+    }
+    fs::rename(from, to, ec);
+    return ec ? path : to.string();
+}
+
+void frame(void* arg) {
+    WebState& s = *static_cast<WebState*>(arg);
+    double cssWidth = 0, cssHeight = 0;
+    emscripten_get_element_css_size("#canvas", &cssWidth, &cssHeight);
+    double dpr = emscripten_get_device_pixel_ratio();
+    int pixelWidth = std::max(1, static_cast<int>(cssWidth * dpr + 0.5));
+    int pixelHeight = std::max(1, static_cast<int>(cssHeight * dpr + 0.5));
+    int currentW = 0, currentH = 0;
+    emscripten_get_canvas_element_size("#canvas", &currentW, &currentH);
+    if (currentW != pixelWidth || currentH != pixelHeight) {
+        // Not glfwSetWindowSize: Emscripten's GLFW asks for fullscreen when the size equals the
+        // screen's. ImGui's display size and scale are set below, so GLFW's idea does not matter.
+        emscripten_set_canvas_element_size("#canvas", pixelWidth, pixelHeight);
+    }
+
+    FrameInput in;
+    in.windowWidth = static_cast<float>(std::max(cssWidth, 1.0));
+    in.windowHeight = static_cast<float>(std::max(cssHeight, 1.0));
+    in.framebufferWidth = pixelWidth;
+    in.framebufferHeight = pixelHeight;
+    double now = glfwGetTime();
+    in.deltaTime = static_cast<float>(std::max(now - s.last, 1e-4));
+    s.last = now;
+    in.keys.swap(s.keys);
+    for (const std::string& f : s.dropped) {
+        in.droppedFiles.push_back(adopt(f));
+    }
+    s.dropped.clear();
+    if (s.pendingLink) {
+        in.openLink = std::move(s.pendingLink);
+        s.pendingLink.reset();
+    }
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    // Emscripten's GLFW speaks canvas pixels; ImGui works in CSS pixels.
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(in.windowWidth, in.windowHeight);
+    io.DisplayFramebufferScale = ImVec2(static_cast<float>(dpr), static_cast<float>(dpr));
+    if (io.MousePos.x > -FLT_MAX) {
+        io.MousePos = ImVec2(io.MousePos.x / static_cast<float>(dpr), io.MousePos.y / static_cast<float>(dpr));
+    }
+    io.DeltaTime = in.deltaTime;
+    ImGui::NewFrame();
+    FrameOutput out = s.app->frame(in);
+    ImGui::Render();
+    glViewport(0, 0, pixelWidth, pixelHeight);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+    for (const Download& d : out.downloads) {
+        labJsDownload(d.name.c_str(), d.bytes.data(), static_cast<int>(d.bytes.size()));
+    }
+    if (out.pickFile) {
+        labJsPickFile();
+    }
+    if (out.title != s.lastTitle) {
+        glfwSetWindowTitle(s.window, out.title.c_str()); // document.title
+        s.lastTitle = out.title;
+    }
+    if (out.link != s.lastLink) {
+        labJsSetLink(out.link.c_str());
+        s.lastLink = out.link;
+    }
+    if (out.uiScale != s.scale) {
+        s.scale = out.uiScale;
+        applyUiScale(s.scale, s.baseStyle, kFonts);
+    }
+    if (++s.frames == 2) {
+        labJsReady(); // the page (and its tests) know the first frames are drawn
+    }
+}
+
+} // namespace
+
+// Called by the page: a file it wrote into the in-memory file system, or a new URL fragment.
+extern "C" {
+EMSCRIPTEN_KEEPALIVE void lab_open_file(const char* path) {
+    if (gState) {
+        gState->dropped.emplace_back(path);
+    }
+}
+EMSCRIPTEN_KEEPALIVE void lab_open_link(const char* link) {
+    if (gState && gState->lastLink != link) {
+        gState->pendingLink = std::string(link);
+    }
+}
+// For browser tests: the screen rectangles of the main widgets, in CSS pixels ("name x y w h").
+EMSCRIPTEN_KEEPALIVE const char* lab_widgets() {
+    static std::string text;
+    text = ui::widgets().text();
+    return text.c_str();
+}
+}
+
+WindowResult runWindow(App& app, const WindowOptions&, std::string& error) {
+    if (!glfwInit()) {
+        error = "GLFW did not start";
+        return WindowResult::Failed;
+    }
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    GLFWwindow* window = glfwCreateWindow(1280, 720, "Lighting Lab", nullptr, nullptr);
+    if (!window) {
+        error = "this browser cannot create a WebGL2 context";
+        return WindowResult::Failed;
+    }
+    glfwMakeContextCurrent(window);
+    // Lives as long as the page: the main loop below never returns to here.
+    auto* s = new WebState;
+    s->app = &app;
+    s->window = window;
+    gState = s;
+    installInputQueue(window, s);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui::StyleColorsDark();
+    s->baseStyle = ImGui::GetStyle();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 300 es");
+    Diagnostics diagnostics;
+    if (!app.init(diagnostics)) {
+        error = "the lab cannot start:\n" + toString(diagnostics);
+        return WindowResult::Failed;
+    }
+    char* link = labJsInitialLink();
+    if (link && *link) {
+        s->pendingLink = std::string(link);
+    }
+    std::free(link);
+    s->last = glfwGetTime();
+    emscripten_set_main_loop_arg(frame, s, 0, true);
+    return WindowResult::Closed; // not reached
+}
+
+} // namespace lab

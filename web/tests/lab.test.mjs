@@ -1,0 +1,261 @@
+// lab.test.mjs — the browser build as a student opens it: Debian's Chromium (headless, WebGL2 on
+// SwiftShader) driven by Playwright, against the built page in build-web/site served locally.
+//
+//   node --test web/tests/          (tools/dev test runs it after building the page)
+//   LAB_UPDATE_WEB_GOLDENS=1 ...    rewrites tests/golden-web/ from the current renders
+//
+// Widgets are found through the rectangles the lab reports (lab_widgets), input is real
+// mouse and keyboard events, files go through real downloads and the page's file picker.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { PNG } from 'pngjs';
+import { serve } from '../serve.mjs';
+
+const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+const site = process.env.LAB_WEB_SITE || path.join(repo, 'build-web/site');
+const goldens = path.join(repo, 'tests/golden-web');
+const chromiumArgs = ['--headless=new', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+  '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+  '--disable-component-update', '--disable-sync', '--force-device-scale-factor=1'];
+
+let server, browser, base;
+
+before(async () => {
+  assert.ok(fs.existsSync(path.join(site, 'index.html')), `no page in ${site}: build it first (tools/dev web)`);
+  server = await serve(site);
+  base = `http://127.0.0.1:${server.address().port}/`;
+  browser = await chromium.launch({ executablePath: process.env.LAB_CHROMIUM || '/usr/bin/chromium', args: chromiumArgs });
+});
+
+after(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+// A fresh page (its own profile: no saved state) with the lab running, and what went wrong on it.
+async function openLab(fragment = '', { width = 1280, height = 760, scale = 1 } = {}) {
+  const context = await browser.newContext({ viewport: { width, height }, deviceScaleFactor: scale, acceptDownloads: true });
+  const page = await context.newPage();
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
+  page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
+  await page.goto(base + fragment);
+  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
+  await frames(page, 3);
+  return { page, context, problems };
+}
+
+// Waits for the browser to draw `n` more animation frames (the lab draws one per frame).
+function frames(page, n) {
+  return page.evaluate((count) => new Promise((resolve) => {
+    const step = (left) => (left === 0 ? resolve() : requestAnimationFrame(() => step(left - 1)));
+    step(count);
+  }), n);
+}
+
+async function widgets(page) {
+  const text = await page.evaluate(() => Module.ccall('lab_widgets', 'string', [], []));
+  const rects = {};
+  for (const line of text.split('\n').filter(Boolean)) {
+    const [name, x, y, w, h] = line.split(' ');
+    rects[name] = { x: +x, y: +y, w: +w, h: +h };
+  }
+  return rects;
+}
+
+async function press(page, key) {
+  await page.keyboard.down(key);
+  await frames(page, 2); // held across frames: ImGui 1.86 polls keys once a frame
+  await page.keyboard.up(key);
+  await frames(page, 2);
+}
+
+// The lab's screenshot of its 3D view (F12), which the page hands over as a download.
+async function viewShot(page) {
+  const [download] = await Promise.all([page.waitForEvent('download'), press(page, 'F12')]);
+  return PNG.sync.read(fs.readFileSync(await download.path()));
+}
+
+async function downloadPreset(page) {
+  const rects = await widgets(page);
+  const button = rects['file.download'];
+  const [download] = await Promise.all([
+    page.waitForEvent('download'),
+    page.mouse.click(button.x + button.w / 2, button.y + button.h / 2),
+  ]);
+  return { name: download.suggestedFilename(), text: fs.readFileSync(await download.path(), 'utf8') };
+}
+
+// The screenshot tests' comparison (core/image.h): a pixel fails above `pixel` levels in any
+// channel; an image fails when more than `share` of its pixels fail or the mean exceeds `mean`.
+function compare(a, b, { pixel = 3, share = 0.001, mean = 0.5 } = {}) {
+  if (a.width !== b.width || a.height !== b.height) return { sameSize: false, passes: false };
+  let sum = 0, failing = 0, max = 0;
+  for (let i = 0; i < a.data.length; i += 4) {
+    let worst = 0;
+    for (let k = 0; k < 3; ++k) {
+      const d = Math.abs(a.data[i + k] - b.data[i + k]);
+      sum += d;
+      worst = Math.max(worst, d);
+    }
+    max = Math.max(max, worst);
+    if (worst > pixel) failing++;
+  }
+  const pixels = a.width * a.height;
+  const result = { sameSize: true, max, mean: sum / (pixels * 3), failingShare: failing / pixels };
+  result.passes = result.failingShare <= share && result.mean <= mean;
+  return result;
+}
+
+function changedShare(a, b) {
+  return compare(a, b, { pixel: 8 }).failingShare ?? 1;
+}
+
+test('the page loads with no console errors and no failed requests', async () => {
+  const { page, context, problems } = await openLab();
+  await frames(page, 10);
+  assert.deepEqual(problems, []);
+  assert.match(await page.title(), /^Lighting Lab - Default/);
+  await context.close();
+});
+
+test('the default preset renders and matches its browser golden', async () => {
+  const { page, context } = await openLab('', { width: 1024, height: 640 });
+  await press(page, 'Tab'); // hide the panels: the view fills the canvas
+  const shot = await viewShot(page);
+  assert.equal(shot.width, 1024);
+  assert.equal(shot.height, 640);
+  const golden = path.join(goldens, 'default.png');
+  if (process.env.LAB_UPDATE_WEB_GOLDENS) {
+    fs.mkdirSync(goldens, { recursive: true });
+    fs.writeFileSync(golden, PNG.sync.write(shot));
+  }
+  assert.ok(fs.existsSync(golden), `no golden ${golden} (create it with LAB_UPDATE_WEB_GOLDENS=1)`);
+  const result = compare(shot, PNG.sync.read(fs.readFileSync(golden)));
+  if (!result.passes) {
+    const out = path.join(os.tmpdir(), 'lab-web-default.actual.png');
+    fs.writeFileSync(out, PNG.sync.write(shot));
+    assert.fail(`differs from ${golden}: ${JSON.stringify(result)}; actual in ${out}`);
+  }
+  await context.close();
+});
+
+test('every shipped preset renders in the browser as the native goldens show it', async () => {
+  // The same program on another GL: WebGL2 on SwiftShader against llvmpipe's goldens (tests/golden),
+  // with the screenshot tests' tolerances. Links (#preset=) open each preset in one page.
+  const { page, context } = await openLab('', { width: 512, height: 512 });
+  await press(page, 'Tab');
+  const presets = fs.readdirSync(path.join(repo, 'presets')).filter((f) => f.endsWith('.json')).sort();
+  assert.ok(presets.length >= 15);
+  const failures = [];
+  for (const file of presets) {
+    const name = file.replace(/\.json$/, '');
+    await page.evaluate((n) => { location.hash = 'preset=' + n; }, name);
+    await frames(page, 4);
+    assert.match(await page.title(), new RegExp(name));
+    const result = compare(await viewShot(page), PNG.sync.read(fs.readFileSync(path.join(repo, 'tests/golden', file.replace(/json$/, 'png')))));
+    if (!result.passes) failures.push(`${name}: ${JSON.stringify(result)}`);
+  }
+  assert.deepEqual(failures, []);
+  await context.close();
+});
+
+test('dragging a slider with the mouse changes the render', async () => {
+  const { page, context } = await openLab();
+  const before = await viewShot(page);
+  const slider = (await widgets(page))['material.shininess'];
+  const y = slider.y + slider.h / 2;
+  await page.mouse.move(slider.x + slider.w * 0.5, y);
+  await page.mouse.down();
+  for (let i = 1; i <= 5; ++i) {
+    await page.mouse.move(slider.x + slider.w * (0.5 - 0.09 * i), y);
+    await frames(page, 1);
+  }
+  await page.mouse.up();
+  await frames(page, 2);
+  const afterShot = await viewShot(page);
+  assert.ok(changedShare(before, afterShot) > 0.01, 'a lower shininess should widen the highlight');
+  await context.close();
+});
+
+test('download then open round-trips a preset exactly', async () => {
+  const first = await openLab();
+  await first.page.mouse.move(640, 380); // over the view, so keys reach the lab
+  await press(first.page, '1'); // flat shading
+  await press(first.page, 'b'); // Blinn-Phong
+  const saved = await downloadPreset(first.page);
+  assert.match(saved.name, /\.json$/);
+  const preset = JSON.parse(saved.text);
+  assert.equal(preset.shading, 'flat');
+  assert.equal(preset.brdf, 'blinn-phong');
+  await first.context.close();
+
+  // A new visitor opens the downloaded file through the page's file picker.
+  const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'lab-web-')), saved.name);
+  fs.writeFileSync(file, saved.text);
+  const second = await openLab();
+  const open = (await widgets(second.page))['file.open'];
+  const [chooser] = await Promise.all([
+    second.page.waitForEvent('filechooser'),
+    second.page.mouse.click(open.x + open.w / 2, open.y + open.h / 2),
+  ]);
+  await chooser.setFiles(file);
+  await frames(second.page, 5);
+  const again = await downloadPreset(second.page);
+  assert.equal(again.text, saved.text);
+  await second.context.close();
+});
+
+test('a #preset= link opens that preset, and a broken link shows an error', async () => {
+  const linked = await openLab('#preset=09-coarse-flat');
+  assert.match(await linked.page.title(), /09-coarse-flat\.json/);
+  const flat = await viewShot(linked.page);
+  await linked.context.close();
+
+  const broken = await openLab('#p=bm90IGEgcHJlc2V0');
+  assert.ok((await widgets(broken.page)).error, 'the error window should be open');
+  assert.match(await broken.page.title(), /^Lighting Lab - Default/, 'the scene stays the default one');
+  assert.ok(changedShare(flat, await viewShot(broken.page)) > 0.05);
+  await broken.context.close();
+});
+
+test('the scene survives a reload', async () => {
+  const { page, context } = await openLab();
+  await page.mouse.move(640, 380);
+  await press(page, '2'); // Gouraud shading
+  await frames(page, 3);
+  const link = await page.evaluate(() => location.hash);
+  assert.match(link, /^#p=/);
+  await page.goto(base); // no fragment: the state comes back from localStorage
+  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
+  await frames(page, 3);
+  assert.equal(await page.evaluate(() => location.hash), link);
+  await context.close();
+});
+
+test('the canvas fills the window, follows resizes and is sharp on high-DPI screens', async () => {
+  const { page, context } = await openLab('', { width: 900, height: 600, scale: 2 });
+  const size = () => page.evaluate(() => [canvas.width, canvas.height, canvas.clientWidth, canvas.clientHeight]);
+  assert.deepEqual(await size(), [1800, 1200, 900, 600]);
+  await page.setViewportSize({ width: 700, height: 500 });
+  await frames(page, 3);
+  assert.deepEqual(await size(), [1400, 1000, 700, 500]);
+  await context.close();
+});
+
+test('the whole page is within the 1.5 MB gzip budget', () => {
+  let total = 0;
+  for (const name of fs.readdirSync(site)) {
+    total += zlib.gzipSync(fs.readFileSync(path.join(site, name)), { level: 9 }).length;
+  }
+  console.log(`gzip size of the page: ${(total / 1e6).toFixed(3)} MB`);
+  assert.ok(total <= 1.5e6, `${total} bytes gzip-compressed, more than 1.5 MB`);
+});
