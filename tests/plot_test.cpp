@@ -128,6 +128,10 @@ namespace {
 TEST(NumberFormat, ShortestTextThatRoundTrips) {
     EXPECT_EQ(shortestFloat(0.8f), "0.8");
     EXPECT_EQ(shortestFloat(32.0f), "32");
+    EXPECT_EQ(shortestFloat(-90.0f), "-90");
+    EXPECT_EQ(shortestFloat(1500.0f), "1500");
+    EXPECT_EQ(shortestFloat(150.5f), "150.5");
+    EXPECT_EQ(shortestFloat(-0.0f), "-0");
     EXPECT_EQ(shortestFloat(-0.25f), "-0.25");
     EXPECT_EQ(shortestFloat(1e-7f), "1e-07");
     for (float f : {0.1f, 1.0f / 3.0f, 123456.789f, 3.4028235e38f, 1.17549435e-38f, 0.123456f}) {
