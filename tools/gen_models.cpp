@@ -7,6 +7,7 @@
 // node that scales, so loading exercises node transforms as well. The output is deterministic;
 // a test regenerates it and compares it byte for byte with presets/models/trefoil.glb.
 #include "core/file_io.h"
+#include "glb_writer.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
@@ -17,17 +18,13 @@
 #include <string>
 #include <vector>
 
+namespace lab {
 namespace {
 
 glm::vec3 knot(float t) {
     // The classic trefoil, scaled to fit in about [-1, 1].
     return glm::vec3(std::sin(t) + 2.0f * std::sin(2.0f * t), std::cos(t) - 2.0f * std::cos(2.0f * t),
                      -std::sin(3.0f * t)) / 3.2f;
-}
-
-template <typename T>
-void append(std::string& out, const std::vector<T>& v) {
-    out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
 }
 
 std::string trefoilGlb() {
@@ -58,52 +55,14 @@ std::string trefoilGlb() {
             indices.insert(indices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
         }
     }
-    glm::vec3 lo(1e9f), hi(-1e9f);
-    for (const glm::vec3& p : positions) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-
-    std::string bin;
-    append(bin, positions);
-    std::size_t indexOffset = bin.size();
-    append(bin, indices);
-    while (bin.size() % 4) {
-        bin += '\0';
-    }
     using Json = nlohmann::ordered_json;
-    Json j = {
-        {"asset", {{"version", "2.0"}, {"generator", "Lighting Lab tools/gen_models.cpp"}}},
-        {"scene", 0},
-        {"scenes", Json::array({{{"nodes", {0}}}})},
-        {"nodes", Json::array({{{"name", "turn"}, {"rotation", {0.0, 0.0, 0.38268343236, 0.92387953251}}, {"children", {1}}},
-                               {{"name", "knot"}, {"mesh", 0}, {"scale", {1.0, 1.0, 1.25}}}})},
-        {"meshes", Json::array({{{"name", "trefoil"}, {"primitives", Json::array({{{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"mode", 4}}})}}})},
-        {"accessors", Json::array({{{"bufferView", 0}, {"componentType", 5126}, {"count", positions.size()}, {"type", "VEC3"},
-                                    {"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}},
-                                   {{"bufferView", 1}, {"componentType", 5125}, {"count", indices.size()}, {"type", "SCALAR"}}})},
-        {"bufferViews", Json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", indexOffset}, {"target", 34962}},
-                                     {{"buffer", 0}, {"byteOffset", indexOffset}, {"byteLength", indices.size() * 4}, {"target", 34963}}})},
-        {"buffers", Json::array({{{"byteLength", bin.size()}}})},
-    };
-    std::string json = j.dump();
-    while (json.size() % 4) {
-        json += ' ';
-    }
-    auto u32 = [](std::string& out, std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
-    std::string glb = "glTF";
-    u32(glb, 2);
-    u32(glb, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
-    u32(glb, static_cast<std::uint32_t>(json.size()));
-    u32(glb, 0x4E4F534Au); // "JSON"
-    glb += json;
-    u32(glb, static_cast<std::uint32_t>(bin.size()));
-    u32(glb, 0x004E4942u); // "BIN\0"
-    glb += bin;
-    return glb;
+    Json nodes = Json::array({{{"name", "turn"}, {"rotation", {0.0, 0.0, 0.38268343236, 0.92387953251}}, {"children", {1}}},
+                              {{"name", "knot"}, {"mesh", 0}, {"scale", {1.0, 1.0, 1.25}}}});
+    return tools::writeGlb({"trefoil", positions, {}, indices}, nodes, "Lighting Lab tools/gen_models.cpp");
 }
 
 } // namespace
+} // namespace lab
 
 int main(int argc, char** argv) {
     if (argc != 2 || std::strcmp(argv[1], "--help") == 0) {
@@ -112,7 +71,7 @@ int main(int argc, char** argv) {
     }
     std::string error;
     std::filesystem::path out = std::filesystem::path(argv[1]) / "trefoil.glb";
-    if (!lab::writeFileAtomic(out, trefoilGlb(), error)) {
+    if (!lab::writeFileAtomic(out, lab::trefoilGlb(), error)) {
         std::fprintf(stderr, "lab_gen_models: %s\n", error.c_str());
         return 1;
     }

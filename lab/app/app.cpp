@@ -336,7 +336,7 @@ struct App::Impl {
     // Screenshots
     //------------------------------------------------------------------------------------
 
-    void screenshot(int framebufferWidth, float windowWidth) {
+    void screenshot(int framebufferWidth, float windowWidth, unsigned targetFramebuffer) {
         float toPixels = static_cast<float>(framebufferWidth) / windowWidth;
         int w = std::max(1, static_cast<int>(view.w * toPixels)), h = std::max(1, static_cast<int>(view.h * toPixels));
         Framebuffer target(w, h);
@@ -347,7 +347,7 @@ struct App::Impl {
         target.bind();
         drawViews(toPixels, static_cast<float>(h) / toPixels, -view.x, -view.y);
         Image image = target.readRgb();
-        bindDefaultFramebuffer();
+        bindFramebuffer(targetFramebuffer);
         std::string stem = doc.file().empty() ? "lab" : doc.file().stem().string();
         fs::path file;
         std::error_code ec;
@@ -958,9 +958,9 @@ FrameOutput App::frame(const FrameInput& in) {
     //--- draw --------------------------------------------------------------------------------
     if (m.screenshotRequested) {
         m.screenshotRequested = false;
-        m.screenshot(in.framebufferWidth, W);
+        m.screenshot(in.framebufferWidth, W, in.targetFramebuffer);
     }
-    bindDefaultFramebuffer();
+    bindFramebuffer(in.targetFramebuffer);
     clearFramebuffer(glm::vec3(0.09f, 0.09f, 0.11f), in.framebufferWidth, in.framebufferHeight);
     m.drawViews(static_cast<float>(in.framebufferWidth) / W, H, 0.0f, 0.0f);
 

@@ -38,6 +38,7 @@ struct FrameInput {
     std::vector<KeyPress> keys;  // pressed since the last frame, in order
     bool closeRequested = false; // the user closed the window
     std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/link.h)
+    unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
 };
 
 // A file the platform should hand to the user (the browser downloads it).

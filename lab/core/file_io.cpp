@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -49,6 +50,48 @@ std::optional<std::string> readFile(const fs::path& path, std::size_t maxBytes, 
         return std::nullopt;
     }
     return bytes;
+}
+
+std::optional<MappedFile> MappedFile::open(const fs::path& path, std::size_t maxBytes, std::string& error) {
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) {
+        error = errno == ENOENT ? "no such file" : std::strerror(errno);
+        return std::nullopt;
+    }
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        error = S_ISDIR(st.st_mode) ? "is a folder, not a file" : "not a regular file";
+        return std::nullopt;
+    }
+    if (static_cast<std::uint64_t>(st.st_size) > maxBytes) {
+        ::close(fd);
+        error = "file is " + std::to_string(st.st_size) + " bytes, more than the limit of " + std::to_string(maxBytes);
+        return std::nullopt;
+    }
+    auto size = static_cast<std::size_t>(st.st_size);
+    if (size == 0) {
+        ::close(fd);
+        return MappedFile(nullptr, 0);
+    }
+    void* data = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+    ::close(fd);
+    if (data == MAP_FAILED) {
+        error = std::string("cannot map the file: ") + std::strerror(errno);
+        return std::nullopt;
+    }
+    return MappedFile(static_cast<const char*>(data), size);
+}
+
+MappedFile::MappedFile(MappedFile&& other) noexcept : data_(other.data_), size_(other.size_) {
+    other.data_ = nullptr;
+    other.size_ = 0;
+}
+
+MappedFile::~MappedFile() {
+    if (data_) {
+        ::munmap(const_cast<char*>(data_), size_);
+    }
 }
 
 bool writeFileAtomic(const fs::path& path, std::string_view bytes, std::string& error) {

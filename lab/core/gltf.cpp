@@ -210,37 +210,86 @@ public:
                                                 componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
     }
 
-    bool readVec3s(const View& v, const std::string& where, std::vector<glm::vec3>& out) {
-        out.resize(v.count);
-        for (std::size_t i = 0; i < v.count; ++i) {
-            float f[3];
-            std::memcpy(f, v.data + i * v.stride, sizeof f);
-            if (!std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2])) {
-                return error(where, "element " + std::to_string(i) + " is not a finite number");
+    // Appends the accessor's vec3s to `out`, transformed by `m` unless it is the identity (and
+    // then normalized when `normalize`; untransformed normals are used as given: glTF requires
+    // unit length and the shaders renormalize). Non-finite input is refused. The loops are
+    // written to vectorize: a model of a million triangles is mostly this copy.
+    bool appendVec3s(const View& v, const std::string& where, const glm::mat3& m, const glm::vec3& offset,
+                     bool identity, bool normalize, std::vector<glm::vec3>& out) {
+        std::size_t first = out.size();
+        out.resize(first + v.count);
+        glm::vec3* dst = out.data() + first;
+        if (v.stride == sizeof(glm::vec3)) {
+            std::memcpy(static_cast<void*>(dst), v.data, v.count * sizeof(glm::vec3));
+        } else {
+            for (std::size_t i = 0; i < v.count; ++i) {
+                std::memcpy(static_cast<void*>(dst + i), v.data + i * v.stride, sizeof(glm::vec3));
             }
-            out[i] = glm::vec3(f[0], f[1], f[2]);
+        }
+        // Infinity and NaN are the values whose exponent bits are all ones.
+        const auto* bits = reinterpret_cast<const std::uint32_t*>(dst);
+        std::uint32_t nonFinite = 0;
+        for (std::size_t i = 0; i < 3 * v.count; ++i) {
+            nonFinite |= static_cast<std::uint32_t>((bits[i] & 0x7F800000u) == 0x7F800000u);
+        }
+        if (nonFinite) {
+            std::size_t bad = 0;
+            while (std::isfinite(dst[bad].x) && std::isfinite(dst[bad].y) && std::isfinite(dst[bad].z)) {
+                ++bad;
+            }
+            out.resize(first);
+            return error(where, "element " + std::to_string(bad) + " is not a finite number");
+        }
+        if (!identity) {
+            for (std::size_t i = 0; i < v.count; ++i) {
+                glm::vec3 p = m * dst[i] + offset;
+                if (normalize) {
+                    float len = glm::length(p);
+                    p = len > 0.0f ? p / len : glm::vec3(0, 0, 1);
+                }
+                dst[i] = p;
+            }
         }
         return true;
     }
 
-    std::uint32_t readIndex(const View& v, std::size_t i) const {
-        const unsigned char* p = v.data + i * v.stride;
-        switch (v.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            std::uint16_t s;
-            std::memcpy(&s, p, 2);
-            return s;
+    // The primitive's vertex order (its indices), checked against the vertex count.
+    template <typename Index>
+    bool readIndices(const View& v, std::size_t vertexCount, int accessor, const std::string& where,
+                     std::vector<std::uint32_t>& sequence) {
+        sequence.resize(v.count);
+        std::uint32_t* dst = sequence.data();
+        std::uint32_t largest = 0;
+        if (v.stride == sizeof(Index)) {
+            const auto* src = reinterpret_cast<const unsigned char*>(v.data);
+            for (std::size_t i = 0; i < v.count; ++i) {
+                Index x;
+                std::memcpy(&x, src + i * sizeof(Index), sizeof x);
+                dst[i] = x;
+                largest = std::max<std::uint32_t>(largest, x);
+            }
+        } else {
+            for (std::size_t i = 0; i < v.count; ++i) {
+                Index x;
+                std::memcpy(&x, v.data + i * v.stride, sizeof x);
+                dst[i] = x;
+                largest = std::max<std::uint32_t>(largest, x);
+            }
         }
-        default: {
-            std::uint32_t u;
-            std::memcpy(&u, p, 4);
-            return u;
+        if (largest >= vertexCount) {
+            std::size_t i = 0;
+            while (dst[i] < vertexCount) {
+                ++i;
+            }
+            return error("accessors[" + std::to_string(accessor) + "]",
+                         "index " + std::to_string(dst[i]) + " at element " + std::to_string(i) + " is beyond the " +
+                             std::to_string(vertexCount) + " vertices of " + where);
         }
-        }
+        return true;
     }
 
-    // Appends primitive `pi` of mesh `mi` under the world matrix to the output mesh.
+    // Appends primitive `pi` of mesh `mi` under the world matrix to the output mesh. Each array
+    // is read once and written once, straight into the output (large models are mostly copying).
     bool addPrimitive(std::size_t mi, std::size_t pi, const glm::mat4& world, Mesh& out, GltfResult& result) {
         const tinygltf::Primitive& prim = model_.meshes[mi].primitives[pi];
         std::string where = "meshes[" + std::to_string(mi) + "].primitives[" + std::to_string(pi) + "]";
@@ -260,7 +309,21 @@ public:
         if (positions.count > limits_.maxVertices - std::min(limits_.maxVertices, out.positions.size())) {
             return error(where, "more than " + std::to_string(limits_.maxVertices) + " vertices in the model");
         }
-        std::vector<std::uint32_t> sequence; // the primitive's vertex order before triangulation
+        View normals;
+        auto nrm = prim.attributes.find("NORMAL");
+        bool hasNormals = nrm != prim.attributes.end();
+        if (hasNormals) {
+            if (!view(nrm->second, where + ".attributes.NORMAL", isFloatVec3, "FLOAT VEC3", normals)) {
+                return false;
+            }
+            if (normals.count != positions.count) {
+                return error(where, "NORMAL has " + std::to_string(normals.count) + " elements but POSITION has " +
+                                        std::to_string(positions.count));
+            }
+        }
+
+        // The vertex order, then triangles (strips and fans unrolled).
+        std::vector<std::uint32_t> sequence;
         if (prim.indices >= 0) {
             View indices;
             if (!view(prim.indices, where + ".indices", isIndex, "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT SCALAR",
@@ -270,14 +333,13 @@ public:
             if (indices.count > 3 * limits_.maxTriangles) {
                 return error(where, "more than " + std::to_string(limits_.maxTriangles) + " triangles");
             }
-            sequence.resize(indices.count);
-            for (std::size_t i = 0; i < indices.count; ++i) {
-                sequence[i] = readIndex(indices, i);
-                if (sequence[i] >= positions.count) {
-                    return error("accessors[" + std::to_string(prim.indices) + "]",
-                                 "index " + std::to_string(sequence[i]) + " at element " + std::to_string(i) +
-                                     " is beyond the " + std::to_string(positions.count) + " vertices of " + where);
-                }
+            bool ok = indices.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE
+                          ? readIndices<std::uint8_t>(indices, positions.count, prim.indices, where, sequence)
+                      : indices.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT
+                          ? readIndices<std::uint16_t>(indices, positions.count, prim.indices, where, sequence)
+                          : readIndices<std::uint32_t>(indices, positions.count, prim.indices, where, sequence);
+            if (!ok) {
+                return false;
             }
         } else {
             sequence.resize(positions.count);
@@ -285,10 +347,11 @@ public:
                 sequence[i] = static_cast<std::uint32_t>(i);
             }
         }
-        std::vector<std::uint32_t> triangles;
         if (mode == TINYGLTF_MODE_TRIANGLES) {
-            triangles.assign(sequence.begin(), sequence.end() - static_cast<std::ptrdiff_t>(sequence.size() % 3));
+            sequence.resize(sequence.size() - sequence.size() % 3);
         } else {
+            std::vector<std::uint32_t> triangles;
+            triangles.reserve(sequence.size() >= 2 ? 3 * (sequence.size() - 2) : 0);
             for (std::size_t i = 2; i < sequence.size(); ++i) {
                 if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
                     triangles.insert(triangles.end(), {sequence[0], sequence[i - 1], sequence[i]});
@@ -298,54 +361,44 @@ public:
                     triangles.insert(triangles.end(), {sequence[i - 1], sequence[i - 2], sequence[i]});
                 }
             }
+            sequence.swap(triangles);
         }
-        if (triangles.empty()) {
+        if (sequence.empty()) {
             result.notes.push_back(where + ": skipped (no complete triangle)");
             return true;
         }
-        if (triangles.size() / 3 > limits_.maxTriangles - std::min(limits_.maxTriangles, out.triangleCount())) {
+        if (sequence.size() / 3 > limits_.maxTriangles - std::min(limits_.maxTriangles, out.triangleCount())) {
             return error(where, "more than " + std::to_string(limits_.maxTriangles) + " triangles in the model");
         }
 
-        std::vector<glm::vec3> p;
-        if (!readVec3s(positions, "accessors[" + std::to_string(pos->second) + "]", p)) {
+        // Vertices: straight into the output, transformed by the node's world matrix.
+        const auto base = static_cast<std::uint32_t>(out.positions.size());
+        const bool identity = world == glm::mat4(1.0f);
+        if (!appendVec3s(positions, "accessors[" + std::to_string(pos->second) + "]", glm::mat3(world),
+                         glm::vec3(world[3]), identity, false, out.positions)) {
             return false;
         }
-        for (glm::vec3& v : p) {
-            v = glm::vec3(world * glm::vec4(v, 1.0f));
-        }
-        std::vector<glm::vec3> n;
-        auto nrm = prim.attributes.find("NORMAL");
-        if (nrm != prim.attributes.end()) {
-            View normals;
-            if (!view(nrm->second, where + ".attributes.NORMAL", isFloatVec3, "FLOAT VEC3", normals)) {
-                return false;
-            }
-            if (normals.count != positions.count) {
-                return error(where, "NORMAL has " + std::to_string(normals.count) + " elements but POSITION has " +
-                                        std::to_string(positions.count));
-            }
-            if (!readVec3s(normals, "accessors[" + std::to_string(nrm->second) + "]", n)) {
-                return false;
-            }
+        if (hasNormals) {
             glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
-            for (glm::vec3& v : n) {
-                v = normalMatrix * v;
-                float len = glm::length(v);
-                v = len > 0.0f ? v / len : glm::vec3(0, 0, 1);
+            if (!appendVec3s(normals, "accessors[" + std::to_string(nrm->second) + "]", normalMatrix, glm::vec3(0.0f),
+                             identity, true, out.normals)) {
+                out.positions.resize(base);
+                return false;
             }
         } else {
             // Computed after the node transform, so the area weights are those of the model as drawn.
-            std::vector<std::uint32_t> local = triangles;
-            n = computeVertexNormals(p, local);
+            std::vector<glm::vec3> own(out.positions.begin() + base, out.positions.end());
+            std::vector<glm::vec3> computed = computeVertexNormals(own, sequence);
+            out.normals.insert(out.normals.end(), computed.begin(), computed.end());
             ++computedNormals_;
         }
-        auto base = static_cast<std::uint32_t>(out.positions.size());
-        out.positions.insert(out.positions.end(), p.begin(), p.end());
-        out.normals.insert(out.normals.end(), n.begin(), n.end());
-        out.indices.reserve(out.indices.size() + triangles.size());
-        for (std::uint32_t i : triangles) {
-            out.indices.push_back(base + i);
+        if (base == 0 && out.indices.empty()) {
+            out.indices = std::move(sequence);
+        } else {
+            out.indices.reserve(out.indices.size() + sequence.size());
+            for (std::uint32_t i : sequence) {
+                out.indices.push_back(base + i);
+            }
         }
         return true;
     }
@@ -447,7 +500,7 @@ private:
 };
 
 // tinygltf 2.7.0 trusts the GLB header's lengths; check them against the bytes we have.
-bool checkGlbHeader(const std::string& bytes, std::string& error) {
+bool checkGlbHeader(std::string_view bytes, std::string& error) {
     auto u32 = [&](std::size_t at) {
         std::uint32_t v;
         std::memcpy(&v, bytes.data() + at, 4);
@@ -532,11 +585,12 @@ bool checkUris(std::string_view json, const std::string& file, Diagnostics& out)
 std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& displayName, Diagnostics& diagnostics,
                                    const GltfLimits& limits) {
     std::string error;
-    std::optional<std::string> bytes = readFile(file, limits.maxFileBytes, error);
-    if (!bytes) {
+    std::optional<MappedFile> mapped = MappedFile::open(file, limits.maxFileBytes, error);
+    if (!mapped) {
         diagnostics.push_back({displayName, "", error});
         return std::nullopt;
     }
+    std::optional<std::string_view> bytes = mapped->bytes();
     std::error_code ec;
     FileGuard guard{fs::weakly_canonical(file.parent_path().empty() ? fs::path(".") : file.parent_path(), ec),
                     limits.maxFileBytes, {}};
@@ -568,6 +622,8 @@ std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& disp
         ok = gltf.LoadASCIIFromString(&model, &err, &warn, bytes->data(), static_cast<unsigned>(bytes->size()),
                                       guard.folder.string());
     }
+    bytes.reset();
+    mapped.reset(); // tinygltf holds its own copy of the buffers now
     if (!ok) {
         std::string message = err.empty() ? "not a valid glTF file" : err;
         while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) {

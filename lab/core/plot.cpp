@@ -5,9 +5,27 @@
 #include "core/number_format.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace lab {
+
+namespace {
+
+// (sin θo, cos θo) for θo = -90° … 90°: every lobe samples the same directions.
+const std::array<glm::vec2, 181>& outgoingDirections() {
+    static const std::array<glm::vec2, 181> table = [] {
+        std::array<glm::vec2, 181> t{};
+        for (int deg = -90; deg <= 90; ++deg) {
+            float to = glm::radians(static_cast<float>(deg));
+            t[static_cast<std::size_t>(deg + 90)] = {std::sin(to), std::cos(to)};
+        }
+        return t;
+    }();
+    return table;
+}
+
+} // namespace
 
 std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentDeg) {
     const glsl::Brdf brdf = packBrdf(preset);
@@ -17,9 +35,10 @@ std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentD
     const float diffuse = luminance(preset.material.diffuse * std::max(glm::dot(N, L), 0.0f));
     std::vector<PlotSample> samples;
     samples.reserve(181);
+    const std::array<glm::vec2, 181>& directions = outgoingDirections();
     for (int deg = -90; deg <= 90; ++deg) {
-        float to = glm::radians(static_cast<float>(deg));
-        glm::vec3 V(std::sin(to), std::cos(to), 0.0f);
+        const glm::vec2& d = directions[static_cast<std::size_t>(deg + 90)];
+        glm::vec3 V(d.x, d.y, 0.0f);
         float S = glsl::specularFactor(N, L, V, preset.material.shininess, brdf);
         float specular = luminance(preset.material.specular * S);
         samples.push_back({static_cast<float>(deg), diffuse, specular, diffuse + specular});
@@ -66,10 +85,10 @@ std::vector<glm::vec2> lobePoints(const std::vector<PlotSample>& samples, PlotCo
                                   float maxIntensity, RadialScale scale) {
     std::vector<glm::vec2> points;
     points.reserve(samples.size());
+    const std::array<glm::vec2, 181>& directions = outgoingDirections();
     for (const PlotSample& s : samples) {
         float r = plotRadius(componentOf(s, component), maxIntensity, scale);
-        float to = glm::radians(s.thetaOutDeg);
-        points.emplace_back(r * std::sin(to), r * std::cos(to));
+        points.push_back(r * directions[static_cast<std::size_t>(std::lround(s.thetaOutDeg) + 90)]);
     }
     return points;
 }

@@ -218,7 +218,7 @@ void Renderer::drawPoints(const Preset& preset, const std::vector<FlatVertex>& v
     glUseProgram(0);
 }
 
-void bindDefaultFramebuffer() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+void bindFramebuffer(unsigned id) { glBindFramebuffer(GL_FRAMEBUFFER, id); }
 
 void clearFramebuffer(const glm::vec3& color, int width, int height) {
     glViewport(0, 0, width, height);

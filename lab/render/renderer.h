@@ -74,8 +74,8 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-// Binds the window's own framebuffer (after offscreen work).
-void bindDefaultFramebuffer();
+// Binds framebuffer `id` (0: the window's own), e.g. after offscreen work.
+void bindFramebuffer(unsigned id);
 
 // Clears the whole bound framebuffer (size width × height) to `color`.
 void clearFramebuffer(const glm::vec3& color, int width, int height);
@@ -90,6 +90,7 @@ public:
 
     bool complete() const { return complete_; }
     void bind() const;
+    unsigned id() const { return fbo_; }
     Image readRgb() const;
     int width() const { return width_; }
     int height() const { return height_; }
