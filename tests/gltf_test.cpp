@@ -243,6 +243,12 @@ INSTANTIATE_TEST_SUITE_P(
                      std::memcpy(f.bin.data() + 12, &inf, 4);
                  },
                  "accessors[0]", "not a finite number"},
+        Mutation{"finite vertices that overflow under the node transform",
+                 [](Fixture& f, const fs::path&) {
+                     f.gltf["nodes"][0]["scale"] = {3e38, 1, 1};
+                     f.gltf["nodes"][0]["translation"] = {3e38, 0, 0};
+                 },
+                 "accessors[0]", "overflow to infinity"},
         Mutation{"not JSON", [](Fixture& f, const fs::path&) { f.gltf = "not a gltf"; }, "", ""}));
 
 TEST(Gltf, GlbWhoseHeaderClaimsMoreThanTheFileHolds) {
@@ -273,6 +279,35 @@ TEST(Gltf, LimitsAreCheckedBeforeAllocating) {
     EXPECT_FALSE(loadGltf(dir.path() / "model" / "quad.gltf", "quad.gltf", d, limits));
     ASSERT_EQ(d.size(), 1u);
     EXPECT_NE(d[0].message.find("more than 1 triangles"), std::string::npos) << d[0].str();
+}
+
+TEST(Gltf, VertexAndFileSizeLimitsAreCheckedBeforeReading) {
+    TempFolder dir;
+    Fixture f;
+    fs::create_directories(dir.path() / "model");
+    writeText(dir.path() / "model" / "quad.bin", f.bin);
+    writeText(dir.path() / "model" / "quad.gltf", f.gltf.dump());
+    GltfLimits vertices;
+    vertices.maxVertices = 3; // the quad has 4
+    Diagnostics d;
+    EXPECT_FALSE(loadGltf(dir.path() / "model" / "quad.gltf", "quad.gltf", d, vertices));
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_NE(d[0].message.find("more than 3 vertices"), std::string::npos) << d[0].str();
+
+    GltfLimits bytes;
+    bytes.maxFileBytes = 100; // the .gltf itself is larger
+    d.clear();
+    EXPECT_FALSE(loadGltf(dir.path() / "model" / "quad.gltf", "quad.gltf", d, bytes));
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_NE(d[0].message.find("more than the limit of 100"), std::string::npos) << d[0].str();
+
+    GltfLimits buffer;
+    buffer.maxFileBytes = 59; // the .gltf fits, its 60-byte buffer does not
+    writeText(dir.path() / "model" / "quad.gltf", f.gltf.dump().substr(0, 0) + R"({"asset":{"version":"2.0"},"buffers":[{"uri":"quad.bin","byteLength":60}]})");
+    d.clear();
+    EXPECT_FALSE(loadGltf(dir.path() / "model" / "quad.gltf", "quad.gltf", d, buffer));
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_NE(d[0].message.find("more than the limit of 59"), std::string::npos) << d[0].str();
 }
 
 TEST(Gltf, ShippedModelIsUpToDateAndLoads) {

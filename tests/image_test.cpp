@@ -66,6 +66,26 @@ TEST(Png, RoundTrips) {
     EXPECT_EQ(b->rgb, a.rgb);
 }
 
+TEST(Png, AHeaderClaimingAHugeImageIsRefusedBeforeDecoding) {
+    // A PNG signature and an IHDR, and nothing else: the sizes come from the header alone.
+    auto header = [](std::uint32_t w, std::uint32_t h) {
+        const unsigned char bytes[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                                       (unsigned char)(w >> 24), (unsigned char)(w >> 16), (unsigned char)(w >> 8), (unsigned char)w,
+                                       (unsigned char)(h >> 24), (unsigned char)(h >> 16), (unsigned char)(h >> 8), (unsigned char)h,
+                                       8, 2, 0, 0, 0, 0, 0, 0, 0};
+        return std::string(reinterpret_cast<const char*>(bytes), sizeof bytes);
+    };
+    TempFolder dir;
+    std::string error;
+    writeText(dir.path() / "wide.png", header(20000, 100)); // beyond the lab's 16384 per side
+    EXPECT_FALSE(readPng(dir.path() / "wide.png", error));
+    EXPECT_NE(error.find("20000x100 is larger than allowed"), std::string::npos) << error;
+    writeText(dir.path() / "huge.png", header(100000, 100000)); // 30 GB decoded: stb's own check refuses it first
+    error.clear();
+    EXPECT_FALSE(readPng(dir.path() / "huge.png", error));
+    EXPECT_NE(error.find("not a readable PNG"), std::string::npos) << error;
+}
+
 TEST(Png, BrokenFilesAreRefused) {
     TempFolder dir;
     writeText(dir.path() / "bad.png", "\x89PNG\r\n\x1a\n garbage");

@@ -34,15 +34,6 @@ struct CachedMesh {
     std::unique_ptr<GpuMesh> mesh;
 };
 
-std::string modelKey(const Model& model, const fs::path& folder) {
-    if (model.gltf.empty()) {
-        return std::string(toString(model.builtin)) + ":" + std::to_string(model.subdivisions.x) + "x" +
-               std::to_string(model.subdivisions.y);
-    }
-    std::error_code ec;
-    return "gltf:" + fs::weakly_canonical(folder / model.gltf, ec).string();
-}
-
 std::vector<fs::path> listPresets(const fs::path& folder) {
     std::vector<fs::path> files;
     std::error_code ec;
@@ -150,7 +141,7 @@ struct App::Impl {
 
     // The GPU mesh of `model`, loading it if needed; nullptr (with diagnostics) if it cannot be.
     GpuMesh* meshFor(const Model& model, const fs::path& folder, Diagnostics& diagnostics) {
-        std::string key = modelKey(model, folder);
+        std::string key = modelCacheKey(model, folder);
         for (CachedMesh& m : meshes) {
             if (m.key == key) {
                 return m.mesh.get();

@@ -241,13 +241,20 @@ public:
             return error(where, "element " + std::to_string(bad) + " is not a finite number");
         }
         if (!identity) {
+            bool finite = true;
             for (std::size_t i = 0; i < v.count; ++i) {
                 glm::vec3 p = m * dst[i] + offset;
                 if (normalize) {
                     float len = glm::length(p);
                     p = len > 0.0f ? p / len : glm::vec3(0, 0, 1);
                 }
+                finite &= std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
                 dst[i] = p;
+            }
+            // Finite input can overflow under a node's scale (found by fuzz_gltf).
+            if (!finite) {
+                out.resize(first);
+                return error(where, "values overflow to infinity under the node's transform");
             }
         }
         return true;

@@ -40,7 +40,7 @@ std::optional<Image> readPng(const std::filesystem::path& file, std::string& err
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes->data());
     int size = static_cast<int>(bytes->size());
     if (!stbi_info_from_memory(data, size, &w, &h, &channels)) {
-        error = "not a readable PNG";
+        error = std::string("not a readable PNG (") + stbi_failure_reason() + ")";
         return std::nullopt;
     }
     if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide) {

@@ -129,19 +129,23 @@ std::vector<FlatVertex> expandFlat(const Mesh& mesh) {
 
 std::vector<glm::vec3> computeVertexNormals(const std::vector<glm::vec3>& positions,
                                             const std::vector<std::uint32_t>& indices) {
-    std::vector<glm::vec3> sum(positions.size(), glm::vec3(0.0f));
+    // In double: the cross product of any two float-range edges fits, where float would overflow
+    // to infinity for models of very large coordinates (found by fuzz_gltf).
+    std::vector<glm::dvec3> sum(positions.size(), glm::dvec3(0.0));
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
         std::uint32_t i0 = indices[t], i1 = indices[t + 1], i2 = indices[t + 2];
-        glm::vec3 n = glm::cross(positions[i1] - positions[i0], positions[i2] - positions[i0]);
+        glm::dvec3 p0(positions[i0]);
+        glm::dvec3 n = glm::cross(glm::dvec3(positions[i1]) - p0, glm::dvec3(positions[i2]) - p0);
         sum[i0] += n;
         sum[i1] += n;
         sum[i2] += n;
     }
-    for (glm::vec3& n : sum) {
-        float len = glm::length(n);
-        n = len > 0.0f ? n / len : glm::vec3(0, 0, 1);
+    std::vector<glm::vec3> normals(positions.size());
+    for (std::size_t i = 0; i < sum.size(); ++i) {
+        double len = glm::length(sum[i]);
+        normals[i] = len > 0.0 && std::isfinite(len) ? glm::vec3(sum[i] / len) : glm::vec3(0, 0, 1);
     }
-    return sum;
+    return normals;
 }
 
 } // namespace lab

@@ -5,6 +5,18 @@
 
 namespace lab {
 
+std::string modelCacheKey(const Model& model, const std::filesystem::path& folder) {
+    if (model.gltf.empty()) {
+        return std::string(toString(model.builtin)) + ":" + std::to_string(model.subdivisions.x) + "x" +
+               std::to_string(model.subdivisions.y);
+    }
+    std::error_code ec;
+    std::filesystem::path file = std::filesystem::weakly_canonical(folder / model.gltf, ec);
+    auto size = std::filesystem::file_size(file, ec);
+    auto time = std::filesystem::last_write_time(file, ec).time_since_epoch().count();
+    return "gltf:" + file.string() + ":" + std::to_string(ec ? 0 : size) + ":" + std::to_string(ec ? 0 : time);
+}
+
 std::optional<Mesh> loadModel(const Model& model, const std::filesystem::path& folder, Diagnostics& diagnostics,
                               std::vector<std::string>* notes) {
     if (model.gltf.empty()) {

@@ -14,6 +14,11 @@ namespace lab {
 
 // `folder` is the preset's folder (glTF paths are relative to it and may not leave it).
 // `notes` receives what was skipped or computed while loading, for the user.
+// What identifies a loaded model for caching: the built-in and its subdivisions, or the glTF
+// file's canonical path with its size and modification time (a file rewritten in place, say a
+// model exported again, is a new model).
+std::string modelCacheKey(const Model& model, const std::filesystem::path& folder);
+
 std::optional<Mesh> loadModel(const Model& model, const std::filesystem::path& folder, Diagnostics& diagnostics,
                               std::vector<std::string>* notes = nullptr);
 

@@ -5,25 +5,11 @@
 
 namespace lab {
 
-namespace {
-
-std::string modelKey(const LoadedPreset& p) {
-    const Model& m = p.preset.model;
-    if (m.gltf.empty()) {
-        return std::string(toString(m.builtin)) + ":" + std::to_string(m.subdivisions.x) + "x" +
-               std::to_string(m.subdivisions.y);
-    }
-    std::error_code ec;
-    return "gltf:" + std::filesystem::weakly_canonical(p.folder() / m.gltf, ec).string();
-}
-
-} // namespace
-
 bool OffscreenRenderer::init(Diagnostics& diagnostics) { return renderer_.init(diagnostics); }
 
 std::optional<Image> OffscreenRenderer::render(const LoadedPreset& preset, int width, int height,
                                                Diagnostics& diagnostics, std::vector<std::string>* notes) {
-    std::string key = modelKey(preset);
+    std::string key = modelCacheKey(preset.preset.model, preset.folder());
     if (key != meshKey_) {
         Diagnostics problems;
         std::optional<Mesh> mesh = loadModel(preset.preset.model, preset.folder(), problems, notes);

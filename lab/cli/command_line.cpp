@@ -1,0 +1,106 @@
+// command_line.cpp — the CLI11 definition of `lab`'s arguments.
+#include "cli/command_line.h"
+
+#include <CLI/CLI.hpp>
+
+#ifndef LAB_VERSION
+#define LAB_VERSION "0.0.0"
+#endif
+
+namespace lab {
+
+namespace {
+
+// CLI11 validator for --size, so a bad size is reported like every other bad flag.
+struct SizeValidator : CLI::Validator {
+    SizeValidator() {
+        name_ = "WxH";
+        func_ = [](std::string& text) {
+            std::string error;
+            return parseSize(text, error) ? std::string{} : error;
+        };
+    }
+};
+
+std::vector<std::filesystem::path> toPaths(const std::vector<std::string>& v) { return {v.begin(), v.end()}; }
+
+} // namespace
+
+std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* argv) {
+    CLI::App app{"Lighting Lab: an interactive lab for local illumination (Phong, Blinn-Phong, Cook-Torrance)", "lab"};
+    app.set_version_flag("--version", "lab " LAB_VERSION);
+    app.require_subcommand(0, 1);
+    CommandLine line;
+    std::string preset, layoutFile, screenshotFolder = ".";
+    app.add_option("--preset", preset, "Open the lab with this preset");
+    app.add_flag("--presenter", line.presenter, "Start in presenter mode (large UI for a projector)");
+    app.add_flag("--fullscreen", line.fullscreen, "Start fullscreen");
+    app.add_option("--screenshot-dir", screenshotFolder, "Folder for screenshots (F12)")->capture_default_str();
+    // For GUI tests: the screen rectangles of the main widgets, rewritten every frame.
+    app.add_option("--layout-file", layoutFile, "")->group("");
+
+    std::vector<std::string> renderPresets;
+    std::string renderOut, renderSize = "512x512";
+    CLI::App* render = app.add_subcommand("render", "Render presets headless to PNG (no display or GPU needed)");
+    render->add_option("presets", renderPresets, "Preset files")->required();
+    render->add_option("--out", renderOut, "The PNG file; a folder when there are several presets")->required();
+    render->add_option("--size", renderSize, "Image size")->check(SizeValidator())->capture_default_str();
+
+    std::string plotPreset, plotOut;
+    CLI::App* plot = app.add_subcommand("plot", "Write the polar-plot data (reflected intensity) as CSV");
+    plot->add_option("preset", plotPreset, "Preset file")->required();
+    plot->add_option("--out", plotOut, "CSV file to write")->required();
+    plot->add_option("--incident-deg", line.incidentDeg, "Incident angle in degrees (default: the preset's plot.incident_deg)")
+        ->check(CLI::Range(-90.0, 90.0));
+
+    std::vector<std::string> checkPresets;
+    std::string checkGolden, checkReport = "lab-check", checkSize = "512x512";
+    CLI::App* check = app.add_subcommand("check", "Render presets and compare them with golden images");
+    check->add_option("presets", checkPresets, "Preset files")->required();
+    check->add_option("--golden", checkGolden, "Folder of golden PNGs, <preset name>.png")->required();
+    check->add_flag("--update", line.check.update, "Write goldens from the renders instead of comparing");
+    check->add_option("--report", checkReport, "Folder for report.txt and the actual and diff images of failures")
+        ->capture_default_str();
+    check->add_option("--size", checkSize, "Render size")->check(SizeValidator())->capture_default_str();
+    check->add_option("--pixel-tolerance", line.check.tolerance.pixelTolerance, "A pixel fails above this channel difference")
+        ->check(CLI::Range(0, 255))->capture_default_str();
+    check->add_option("--max-failing", line.check.tolerance.maxFailingShare, "Largest share of failing pixels (0.001 = 0.1%)")
+        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+    check->add_option("--max-mean", line.check.tolerance.maxMeanDifference, "Largest mean channel difference, in levels")
+        ->check(CLI::Range(0.0, 255.0))->capture_default_str();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        int status = app.exit(e); // help and version to stdout, errors to stderr
+        return status == 0 ? kExitOk : kExitBadInput;
+    }
+
+    std::string error;
+    if (!preset.empty()) {
+        line.preset = preset;
+    }
+    if (!layoutFile.empty()) {
+        line.layoutFile = layoutFile;
+    }
+    line.screenshotFolder = screenshotFolder;
+    if (*render) {
+        line.command = CommandLine::Command::Render;
+        line.presets = toPaths(renderPresets);
+        line.out = renderOut;
+        line.size = *parseSize(renderSize, error); // validated by SizeValidator
+    } else if (*plot) {
+        line.command = CommandLine::Command::Plot;
+        line.presets = {plotPreset};
+        line.out = plotOut;
+    } else if (*check) {
+        line.command = CommandLine::Command::Check;
+        line.presets = toPaths(checkPresets);
+        line.check.golden = checkGolden;
+        line.check.report = checkReport;
+        line.check.size = *parseSize(checkSize, error);
+    }
+    return line;
+}
+
+} // namespace lab

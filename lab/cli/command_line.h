@@ -1,0 +1,36 @@
+// command_line.h — `lab`'s arguments, parsed (CLI11) but not acted on.
+//
+// main.cpp dispatches what this returns; the command-line fuzzer (tests/fuzz) calls it with
+// arbitrary arguments. Parsing never touches files beyond what CLI11 itself checks.
+#pragma once
+
+#include "cli/commands.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace lab {
+
+struct CommandLine {
+    enum class Command { Lab, Render, Plot, Check } command = Command::Lab;
+    // lab (the interactive lab)
+    std::optional<std::filesystem::path> preset;
+    bool presenter = false, fullscreen = false;
+    std::filesystem::path screenshotFolder = ".";
+    std::optional<std::filesystem::path> layoutFile;
+    // render, plot, check
+    std::vector<std::filesystem::path> presets;
+    std::filesystem::path out;
+    Size size;
+    std::optional<float> incidentDeg;
+    CheckOptions check;
+};
+
+// The parsed command line, or the exit status when parsing ends the program: 0 after --help or
+// --version (printed), 2 after a bad argument (the message on stderr).
+std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* argv);
+
+} // namespace lab
