@@ -13,26 +13,41 @@ namespace lab {
 
 namespace fs = std::filesystem;
 
-std::optional<std::string> readFile(const fs::path& path, std::size_t maxBytes, std::string& error) {
-    // open() first and fstat() the descriptor, so the checks apply to what is actually read.
+namespace {
+
+// A descriptor for `path` (-1 with `error`), only for a regular file of at most `maxBytes`.
+// open() first and fstat() the descriptor, so the checks apply to what is actually read; the
+// non-blocking open keeps a FIFO from hanging the lab.
+int openRegularFile(const fs::path& path, std::size_t maxBytes, std::size_t& size, std::string& error) {
     int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) {
         error = errno == ENOENT ? "no such file" : std::strerror(errno);
-        return std::nullopt;
+        return -1;
     }
     struct stat st {};
     if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
         ::close(fd);
         error = S_ISDIR(st.st_mode) ? "is a folder, not a file" : "not a regular file";
-        return std::nullopt;
+        return -1;
     }
     if (static_cast<std::uint64_t>(st.st_size) > maxBytes) {
         ::close(fd);
-        error = "file is " + std::to_string(st.st_size) + " bytes, more than the limit of " +
-                std::to_string(maxBytes);
+        error = "file is " + std::to_string(st.st_size) + " bytes, more than the limit of " + std::to_string(maxBytes);
+        return -1;
+    }
+    size = static_cast<std::size_t>(st.st_size);
+    return fd;
+}
+
+} // namespace
+
+std::optional<std::string> readFile(const fs::path& path, std::size_t maxBytes, std::string& error) {
+    std::size_t size = 0;
+    int fd = openRegularFile(path, maxBytes, size, error);
+    if (fd < 0) {
         return std::nullopt;
     }
-    std::string bytes(static_cast<std::size_t>(st.st_size), '\0');
+    std::string bytes(size, '\0');
     std::size_t done = 0;
     while (done < bytes.size()) {
         ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
@@ -53,23 +68,11 @@ std::optional<std::string> readFile(const fs::path& path, std::size_t maxBytes, 
 }
 
 std::optional<MappedFile> MappedFile::open(const fs::path& path, std::size_t maxBytes, std::string& error) {
-    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    std::size_t size = 0;
+    int fd = openRegularFile(path, maxBytes, size, error);
     if (fd < 0) {
-        error = errno == ENOENT ? "no such file" : std::strerror(errno);
         return std::nullopt;
     }
-    struct stat st {};
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        ::close(fd);
-        error = S_ISDIR(st.st_mode) ? "is a folder, not a file" : "not a regular file";
-        return std::nullopt;
-    }
-    if (static_cast<std::uint64_t>(st.st_size) > maxBytes) {
-        ::close(fd);
-        error = "file is " + std::to_string(st.st_size) + " bytes, more than the limit of " + std::to_string(maxBytes);
-        return std::nullopt;
-    }
-    auto size = static_cast<std::size_t>(st.st_size);
     if (size == 0) {
         ::close(fd);
         return MappedFile(nullptr, 0);

@@ -55,6 +55,22 @@ void enumRadios(const char* id, E& value, const E (&values)[N], const char* cons
     ImGui::PopID();
 }
 
+// Revert, Undo and Redo on one line, each enabled only when it would do something.
+void historyButtons(const PanelModel& model, PanelActions& actions) {
+    auto button = [](const char* label, bool enabled, bool& action) {
+        ImGui::BeginDisabled(!enabled);
+        if (ImGui::Button(label)) {
+            action = true;
+        }
+        ImGui::EndDisabled();
+    };
+    button("Revert", model.dirty, actions.revert);
+    ImGui::SameLine();
+    button("Undo", model.canUndo, actions.undo);
+    ImGui::SameLine();
+    button("Redo", model.canRedo, actions.redo);
+}
+
 void browserFilesSection(PanelModel& model, PanelActions& actions) {
     ImGui::Text("%s%s", model.documentName.c_str(), model.dirty ? "  (modified)" : "");
     if (ImGui::Button("Download preset")) {
@@ -67,23 +83,7 @@ void browserFilesSection(PanelModel& model, PanelActions& actions) {
     }
     mark("file.open");
     ImGui::SameLine();
-    ImGui::BeginDisabled(!model.dirty);
-    if (ImGui::Button("Revert")) {
-        actions.revert = true;
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!model.canUndo);
-    if (ImGui::Button("Undo")) {
-        actions.undo = true;
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!model.canRedo);
-    if (ImGui::Button("Redo")) {
-        actions.redo = true;
-    }
-    ImGui::EndDisabled();
+    historyButtons(model, actions);
     ImGui::TextDisabled("Drop a .json preset or a .glb model on the page.");
 }
 
@@ -98,23 +98,7 @@ void filesSection(PanelModel& model, PanelActions& actions) {
     }
     mark("file.save");
     ImGui::SameLine();
-    ImGui::BeginDisabled(!model.dirty);
-    if (ImGui::Button("Revert")) {
-        actions.revert = true;
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!model.canUndo);
-    if (ImGui::Button("Undo")) {
-        actions.undo = true;
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!model.canRedo);
-    if (ImGui::Button("Redo")) {
-        actions.redo = true;
-    }
-    ImGui::EndDisabled();
+    historyButtons(model, actions);
 
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - ImGui::GetStyle().FramePadding.x * 2 -
                             ImGui::GetStyle().ItemSpacing.x);

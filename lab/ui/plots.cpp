@@ -69,15 +69,29 @@ void polarGrid(ImDrawList* dl, const Frame& f, RadialScale scale) {
     dl->AddLine(f.at({-1.05f, 0}), f.at({1.05f, 0}), kAxis, 2.0f);
 }
 
+// A plot's area: an invisible button (for the mouse) `aspect` times as tall as the panel is wide,
+// filled with the plot background, registered in the widget map as `name`.
+struct Canvas {
+    ImVec2 corner;
+    float width, height;
+    ImDrawList* dl;
+};
+
+Canvas beginCanvas(const char* id, const char* name, float aspect) {
+    Canvas c;
+    c.width = ImGui::GetContentRegionAvail().x;
+    c.height = c.width * aspect;
+    c.corner = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton(id, ImVec2(c.width, c.height));
+    mark(name);
+    c.dl = ImGui::GetWindowDrawList();
+    c.dl->AddRectFilled(c.corner, ImVec2(c.corner.x + c.width, c.corner.y + c.height), IM_COL32(20, 20, 26, 255));
+    return c;
+}
+
 // Lobes and arrows for the preset's incident angle.
 void lobePlot(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
-    float width = ImGui::GetContentRegionAvail().x;
-    float height = width * 0.62f;
-    ImVec2 corner = ImGui::GetCursorScreenPos();
-    ImGui::InvisibleButton("lobe", ImVec2(width, height));
-    mark("plot.lobe");
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddRectFilled(corner, ImVec2(corner.x + width, corner.y + height), IM_COL32(20, 20, 26, 255));
+    auto [corner, width, height, dl] = beginCanvas("lobe", "plot.lobe", 0.62f);
     Frame f{ImVec2(corner.x + width * 0.5f, corner.y + height - 14.0f), std::min(width * 0.46f, height - 34.0f)};
 
     float incident = a.plotIncidentDeg;
@@ -184,13 +198,7 @@ void lobePlot(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* pr
 }
 
 void overlayPlot(const Preset& a, PlotSettings& s) {
-    float width = ImGui::GetContentRegionAvail().x;
-    float height = width * 0.55f;
-    ImVec2 corner = ImGui::GetCursorScreenPos();
-    ImGui::InvisibleButton("overlay", ImVec2(width, height));
-    mark("plot.overlay");
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddRectFilled(corner, ImVec2(corner.x + width, corner.y + height), IM_COL32(20, 20, 26, 255));
+    auto [corner, width, height, dl] = beginCanvas("overlay", "plot.overlay", 0.55f);
     Frame f{ImVec2(corner.x + width * 0.5f, corner.y + height - 10.0f), std::min(width * 0.46f, height - 24.0f)};
     polarGrid(dl, f, s.scale);
     std::vector<std::vector<PlotSample>> sets;
@@ -224,13 +232,7 @@ void attenuationPlot(const Preset& a, PlotSettings& s) {
     }
     float distance = glm::length(l.position - a.model.translate);
     float maxD = std::max(5.0f, std::ceil(distance * 2.0f));
-    float width = ImGui::GetContentRegionAvail().x;
-    float height = width * 0.38f;
-    ImVec2 corner = ImGui::GetCursorScreenPos();
-    ImGui::InvisibleButton("attenuation", ImVec2(width, height));
-    mark("plot.attenuation");
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddRectFilled(corner, ImVec2(corner.x + width, corner.y + height), IM_COL32(20, 20, 26, 255));
+    auto [corner, width, height, dl] = beginCanvas("attenuation", "plot.attenuation", 0.38f);
     ImVec2 lo(corner.x + 28, corner.y + height - 16), hi(corner.x + width - 8, corner.y + 8);
     auto at = [&](float d, float att) { return ImVec2(lo.x + d / maxD * (hi.x - lo.x), lo.y + att * (hi.y - lo.y)); };
     for (int i = 0; i <= static_cast<int>(maxD); ++i) {

@@ -257,8 +257,12 @@ TEST(Gui, EditingTheDiffuseColourChangesTheRender) {
     START_LAB(lab, "--preset", preset("02-diffuse-only"));
     Image before = lab.viewShot();
     Rect diffuse = lab.widget("material.diffuse");
-    // The R field of the colour editor: double-click to type a number, Enter to apply.
-    lab.click(diffuse.x + 20, diffuse.cy(), 2);
+    // The R field of the colour editor: Ctrl+click to type a number (a double-click would depend
+    // on two clicks landing within ImGui's 0.3 s, which slow frames under load can miss), Enter.
+    lab.moveTo(diffuse.x + 20, diffuse.cy());
+    lab.x().key("Control_L", true);
+    lab.click(diffuse.x + 20, diffuse.cy());
+    lab.x().key("Control_L", false);
     lab.type("0.1");
     lab.press("Return");
     Image after = lab.viewShot();
