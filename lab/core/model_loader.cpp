@@ -12,9 +12,10 @@ std::string modelCacheKey(const Model& model, const std::filesystem::path& folde
     }
     std::error_code ec;
     std::filesystem::path file = std::filesystem::weakly_canonical(folder / model.gltf, ec);
-    auto size = std::filesystem::file_size(file, ec);
-    auto time = std::filesystem::last_write_time(file, ec).time_since_epoch().count();
-    return "gltf:" + file.string() + ":" + std::to_string(ec ? 0 : size) + ":" + std::to_string(ec ? 0 : time);
+    // The file-time count is 128 bits wide in the browser build's libc++: narrow it explicitly.
+    auto size = static_cast<unsigned long long>(std::filesystem::file_size(file, ec));
+    auto time = static_cast<long long>(std::filesystem::last_write_time(file, ec).time_since_epoch().count());
+    return "gltf:" + file.string() + ":" + std::to_string(ec ? 0ull : size) + ":" + std::to_string(ec ? 0ll : time);
 }
 
 std::optional<Mesh> loadModel(const Model& model, const std::filesystem::path& folder, Diagnostics& diagnostics,

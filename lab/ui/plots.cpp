@@ -91,7 +91,11 @@ Canvas beginCanvas(const char* id, const char* name, float aspect) {
 
 // Lobes and arrows for the preset's incident angle.
 void lobePlot(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
-    auto [corner, width, height, dl] = beginCanvas("lobe", "plot.lobe", 0.62f);
+    const Canvas canvas = beginCanvas("lobe", "plot.lobe", 0.62f);
+    // Plain locals, not structured bindings: clang 14 (the browser build) cannot capture those.
+    const ImVec2 corner = canvas.corner;
+    const float width = canvas.width, height = canvas.height;
+    ImDrawList* dl = canvas.dl;
     Frame f{ImVec2(corner.x + width * 0.5f, corner.y + height - 14.0f), std::min(width * 0.46f, height - 34.0f)};
 
     float incident = a.plotIncidentDeg;
@@ -198,7 +202,11 @@ void lobePlot(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* pr
 }
 
 void overlayPlot(const Preset& a, PlotSettings& s) {
-    auto [corner, width, height, dl] = beginCanvas("overlay", "plot.overlay", 0.55f);
+    const Canvas canvas = beginCanvas("overlay", "plot.overlay", 0.55f);
+    // Plain locals, not structured bindings: clang 14 (the browser build) cannot capture those.
+    const ImVec2 corner = canvas.corner;
+    const float width = canvas.width, height = canvas.height;
+    ImDrawList* dl = canvas.dl;
     Frame f{ImVec2(corner.x + width * 0.5f, corner.y + height - 10.0f), std::min(width * 0.46f, height - 24.0f)};
     polarGrid(dl, f, s.scale);
     std::vector<std::vector<PlotSample>> sets;
@@ -232,7 +240,11 @@ void attenuationPlot(const Preset& a, PlotSettings& s) {
     }
     float distance = glm::length(l.position - a.model.translate);
     float maxD = std::max(5.0f, std::ceil(distance * 2.0f));
-    auto [corner, width, height, dl] = beginCanvas("attenuation", "plot.attenuation", 0.38f);
+    const Canvas canvas = beginCanvas("attenuation", "plot.attenuation", 0.38f);
+    // Plain locals, not structured bindings: clang 14 (the browser build) cannot capture those.
+    const ImVec2 corner = canvas.corner;
+    const float width = canvas.width, height = canvas.height;
+    ImDrawList* dl = canvas.dl;
     ImVec2 lo(corner.x + 28, corner.y + height - 16), hi(corner.x + width - 8, corner.y + 8);
     auto at = [&](float d, float att) { return ImVec2(lo.x + d / maxD * (hi.x - lo.x), lo.y + att * (hi.y - lo.y)); };
     for (int i = 0; i <= static_cast<int>(maxD); ++i) {
