@@ -72,8 +72,14 @@ struct App::Impl {
     Document doc;
     Renderer renderer;
     std::vector<CachedMesh> meshes;
-    Model lastGoodModel;      // restored when a model edit cannot be loaded
-    fs::path lastGoodFolder;
+    // The document's model as last resolved to a mesh: reused while the model and folder stay the
+    // same, and restored when a model edit cannot be loaded. Loading any mesh clears `mesh`, since
+    // the cache may have evicted it.
+    struct {
+        Model model;
+        fs::path folder;
+        GpuMesh* mesh = nullptr;
+    } current;
 
     Preset compareB;
     ui::PanelModel panel;
@@ -155,6 +161,7 @@ struct App::Impl {
         if (!notes.empty()) {
             say(notes.front());
         }
+        current.mesh = nullptr;
         if (meshes.size() >= 6) {
             meshes.erase(meshes.begin());
         }
@@ -164,15 +171,20 @@ struct App::Impl {
 
     // The mesh of the document's model; a model edit that cannot load is undone with an error.
     GpuMesh* documentMesh() {
+        if (current.mesh && doc.preset.model == current.model && doc.folder() == current.folder) {
+            return current.mesh; // the common frame: nothing to look up
+        }
         Diagnostics d;
         if (GpuMesh* m = meshFor(doc.preset.model, doc.folder(), d)) {
-            lastGoodModel = doc.preset.model;
-            lastGoodFolder = doc.folder();
+            current.model = doc.preset.model;
+            current.folder = doc.folder();
+            current.mesh = m;
             return m;
         }
         showError("Cannot load the model", d);
-        doc.preset.model = lastGoodModel;
-        return meshFor(lastGoodModel, lastGoodFolder, d);
+        doc.preset.model = current.model;
+        current.mesh = meshFor(current.model, current.folder, d);
+        return current.mesh;
     }
 
     //------------------------------------------------------------------------------------
@@ -741,8 +753,8 @@ bool App::init(Diagnostics& diagnostics) {
     m.doc.preset.name = "Default";
     m.doc.reset(m.doc.preset, {}, fs::current_path());
     m.compareB = m.doc.preset;
-    m.lastGoodModel = m.doc.preset.model;
-    m.lastGoodFolder = m.doc.folder();
+    m.current.model = m.doc.preset.model;
+    m.current.folder = m.doc.folder();
     StageSources builtin = builtinStageSources();
     m.shaderEditor.vertex = builtin.vertex;
     m.shaderEditor.fragment = builtin.fragment;
@@ -805,7 +817,6 @@ FrameOutput App::frame(const FrameInput& in) {
     ui::PanelActions actions;
     const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
-    m.doc.commit(true); // keep the flags below in step with this frame's state
     m.panel.documentName = m.doc.displayName();
     m.panel.dirty = m.doc.dirty();
     m.panel.canUndo = m.doc.canUndo();

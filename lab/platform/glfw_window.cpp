@@ -23,7 +23,6 @@
 #include <imgui.h>
 
 #include <cstdlib>
-#include <filesystem>
 #include <vector>
 
 namespace lab {
