@@ -1,6 +1,8 @@
 // command_line.cpp — the CLI11 definition of `lab`'s arguments.
 #include "cli/command_line.h"
 
+#include "core/limits.h"
+
 #include <CLI/CLI.hpp>
 
 #ifndef LAB_VERSION
@@ -51,7 +53,7 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     plot->add_option("preset", plotPreset, "Preset file")->required();
     plot->add_option("--out", plotOut, "CSV file to write")->required();
     plot->add_option("--incident-deg", line.incidentDeg, "Incident angle in degrees (default: the preset's plot.incident_deg)")
-        ->check(CLI::Range(-90.0, 90.0));
+        ->check(CLI::Range(limits::kPlotIncidentDeg.min, limits::kPlotIncidentDeg.max));
 
     std::vector<std::string> checkPresets;
     std::string checkGolden, checkReport = "lab-check", checkSize = "512x512";

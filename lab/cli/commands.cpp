@@ -2,6 +2,7 @@
 #include "cli/commands.h"
 
 #include "core/file_io.h"
+#include "core/limits.h"
 #include "core/plot.h"
 #include "core/preset.h"
 #include "platform/headless_gl.h"
@@ -162,8 +163,8 @@ int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float
         return kExitBadInput;
     }
     float angle = incidentDeg.value_or(preset->preset.plotIncidentDeg);
-    if (!(angle >= -90.0f && angle <= 90.0f)) {
-        std::fprintf(stderr, "lab plot: --incident-deg must be in [-90, 90], got %g\n", double(angle));
+    if (!limits::contains(limits::kPlotIncidentDeg, angle)) {
+        std::fprintf(stderr, "lab plot: --incident-deg must be %s, got %g\n", limits::kPlotIncidentDeg.text, double(angle));
         return kExitBadInput;
     }
     std::string error;

@@ -72,8 +72,8 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 }
 
 // ` (did you mean "x"?)` for the closest candidate within a couple of edits, else "".
-template <typename Range>
-std::string suggestion(std::string_view word, const Range& candidates) {
+template <typename Names>
+std::string suggestion(std::string_view word, const Names& candidates) {
     std::string_view best;
     std::size_t bestDistance = std::max<std::size_t>(2, word.size() / 3) + 1;
     for (std::string_view c : candidates) {
@@ -112,18 +112,6 @@ std::string_view toString(LightType v) { return nameOf(kLightTypeNames, v); }
 
 namespace {
 
-struct Range {
-    float min = -INFINITY;
-    float max = INFINITY;
-    bool minExclusive = false;
-    const char* what = nullptr; // e.g. "in [0, 1]"; null means any finite number
-};
-
-constexpr Range kAny{};
-constexpr Range kUnit{0.0f, 1.0f, false, "in [0, 1]"};
-constexpr Range kNonNegative{0.0f, INFINITY, false, "0 or more"};
-constexpr Range kPositive{0.0f, INFINITY, true, "greater than 0"};
-
 // One JSON object being read: remembers its path and which keys were consumed.
 class Reader {
 public:
@@ -156,13 +144,15 @@ public:
 
     bool has(std::string_view key) const { return object_.contains(key); }
 
-    void readNumber(std::string_view key, float& dst, const Range& range = kAny) {
+    // A finite number within `range` (any finite number when null).
+    void readNumber(std::string_view key, float& dst, const limits::Range* range = nullptr) {
         if (const Json* v = find(key)) {
             readNumberAt(*v, pathOf(key), dst, range);
         }
     }
+    void readNumber(std::string_view key, float& dst, const limits::Range& range) { readNumber(key, dst, &range); }
 
-    void readVec3(std::string_view key, glm::vec3& dst, const Range& range = kAny) {
+    void readVec3(std::string_view key, glm::vec3& dst, const limits::Range* range = nullptr) {
         const Json* v = find(key);
         if (!v) {
             return;
@@ -177,7 +167,9 @@ public:
         }
     }
 
-    void readInt2(std::string_view key, glm::ivec2& dst, int min, int max) {
+    void readVec3(std::string_view key, glm::vec3& dst, const limits::Range& range) { readVec3(key, dst, &range); }
+
+    void readInt2(std::string_view key, glm::ivec2& dst, const limits::IntRange& range) {
         const Json* v = find(key);
         if (!v) {
             return;
@@ -191,10 +183,10 @@ public:
             std::string where = pathOf(key) + "[" + std::to_string(i) + "]";
             if (!e.is_number_integer() && !e.is_number_unsigned()) {
                 out_.push_back({file_, where, "expected an integer, got " + describe(e)});
-            } else if (e.get<double>() < min || e.get<double>() > max) {
+            } else if (e.get<double>() < range.min || e.get<double>() > range.max) {
                 out_.push_back({file_, where,
-                                "must be from " + std::to_string(min) + " to " + std::to_string(max) + ", got " +
-                                    e.dump()});
+                                "must be from " + std::to_string(range.min) + " to " + std::to_string(range.max) +
+                                    ", got " + e.dump()});
             } else {
                 dst[i] = e.get<int>();
             }
@@ -264,7 +256,7 @@ public:
     }
 
 private:
-    void readNumberAt(const Json& v, const std::string& where, float& dst, const Range& range) {
+    void readNumberAt(const Json& v, const std::string& where, float& dst, const limits::Range* range) {
         if (!v.is_number()) {
             out_.push_back({file_, where, "expected a number, got " + describe(v)});
             return;
@@ -275,9 +267,8 @@ private:
             out_.push_back({file_, where, "number out of range: " + v.dump()});
             return;
         }
-        bool below = range.minExclusive ? !(f > range.min) : f < range.min;
-        if (below || f > range.max) {
-            out_.push_back({file_, where, std::string("must be ") + range.what + ", got " + v.dump()});
+        if (range && !limits::contains(*range, f)) {
+            out_.push_back({file_, where, std::string("must be ") + range->text + ", got " + v.dump()});
             return;
         }
         dst = f;
@@ -369,9 +360,8 @@ void readModel(Reader& top, Model& model, const std::string& file, const std::op
             r.error("gltf", "expected a path, got an empty string");
         }
     } else {
-        // Sizes are bounded so that no preset can ask for an absurd mesh.
-        int lo = model.builtin == Builtin::Sphere ? 3 : model.builtin == Builtin::Torus ? 3 : 1;
-        r.readInt2("subdivisions", model.subdivisions, lo, 1024);
+        bool round = model.builtin == Builtin::Sphere || model.builtin == Builtin::Torus;
+        r.readInt2("subdivisions", model.subdivisions, round ? limits::kSubdivisionsRound : limits::kSubdivisions);
         if (model.builtin == Builtin::Sphere && model.subdivisions.y < 2) {
             r.error("subdivisions", "a sphere needs at least 2 stacks");
         }
@@ -397,9 +387,9 @@ void readCamera(Reader& top, Camera& camera, const std::string& file, Diagnostic
     r.readVec3("eye", camera.eye);
     r.readVec3("target", camera.target);
     r.readVec3("up", camera.up);
-    r.readNumber("fovy_deg", camera.fovyDeg, Range{0.0f, 179.0f, true, "greater than 0 and at most 179"});
-    r.readNumber("near", camera.near, kPositive);
-    r.readNumber("far", camera.far, kPositive);
+    r.readNumber("fovy_deg", camera.fovyDeg, limits::kFovyDeg);
+    r.readNumber("near", camera.near, limits::kNear);
+    r.readNumber("far", camera.far, limits::kFar);
     if (camera.far <= camera.near) {
         r.error("far", "must be greater than near");
     }
@@ -424,15 +414,15 @@ void readLight(const Json& json, const std::string& path, LightDesc& light, cons
     if (light.direction == glm::vec3(0.0f)) {
         r.error("direction", "must not be the zero vector");
     }
-    r.readVec3("ambient", light.ambient, kNonNegative);
-    r.readVec3("diffuse", light.diffuse, kNonNegative);
-    r.readVec3("specular", light.specular, kNonNegative);
-    r.readVec3("attenuation", light.attenuation, kNonNegative);
+    r.readVec3("ambient", light.ambient, limits::kLightColor);
+    r.readVec3("diffuse", light.diffuse, limits::kLightColor);
+    r.readVec3("specular", light.specular, limits::kLightColor);
+    r.readVec3("attenuation", light.attenuation, limits::kAttenuation);
     if (light.attenuation == glm::vec3(0.0f)) {
         r.error("attenuation", "c0, c1 and c2 must not all be 0");
     }
-    r.readNumber("cutoff_deg", light.cutoffDeg, Range{0.0f, 90.0f, false, "in [0, 90]"});
-    r.readNumber("exponent", light.exponent, kNonNegative);
+    r.readNumber("cutoff_deg", light.cutoffDeg, limits::kCutoffDeg);
+    r.readNumber("exponent", light.exponent, limits::kSpotExponent);
     r.readBool("enabled", light.enabled);
     r.finish({"type", "position", "direction", "ambient", "diffuse", "specular", "attenuation", "cutoff_deg",
               "exponent", "enabled"});
@@ -551,22 +541,22 @@ std::optional<Preset> parsePreset(std::string_view text, const std::string& disp
     if (const Json* ct = r.object("cook_torrance")) {
         Reader c(*ct, "cook_torrance", file, out);
         c.readEnum("distribution", preset.cookTorrance.distribution, kDistributionNames);
-        c.readNumber("roughness", preset.cookTorrance.roughness, kPositive);
+        c.readNumber("roughness", preset.cookTorrance.roughness, limits::kRoughness);
         c.readEnum("fresnel", preset.cookTorrance.fresnel, kFresnelNames);
-        c.readNumber("ior", preset.cookTorrance.ior, kPositive);
+        c.readNumber("ior", preset.cookTorrance.ior, limits::kIor);
         c.readBool("geometry", preset.cookTorrance.geometry);
         c.finish({"distribution", "roughness", "fresnel", "ior", "geometry"});
     }
     if (const Json* m = r.object("material")) {
         Reader c(*m, "material", file, out);
-        c.readVec3("emissive", preset.material.emissive, kUnit);
-        c.readVec3("ambient", preset.material.ambient, kUnit);
-        c.readVec3("diffuse", preset.material.diffuse, kUnit);
-        c.readVec3("specular", preset.material.specular, kUnit);
-        c.readNumber("shininess", preset.material.shininess, kPositive);
+        c.readVec3("emissive", preset.material.emissive, limits::kMaterialColor);
+        c.readVec3("ambient", preset.material.ambient, limits::kMaterialColor);
+        c.readVec3("diffuse", preset.material.diffuse, limits::kMaterialColor);
+        c.readVec3("specular", preset.material.specular, limits::kMaterialColor);
+        c.readNumber("shininess", preset.material.shininess, limits::kShininess);
         c.finish({"emissive", "ambient", "diffuse", "specular", "shininess"});
     }
-    r.readVec3("ambient_light", preset.ambientLight, kNonNegative);
+    r.readVec3("ambient_light", preset.ambientLight, limits::kAmbientLight);
     if (const Json* lights = r.find("lights")) {
         if (!lights->is_array()) {
             r.error("lights", "expected an array of lights, got " + Reader::describe(*lights));
@@ -593,10 +583,10 @@ std::optional<Preset> parsePreset(std::string_view text, const std::string& disp
         c.readBool("specular", preset.terms.specular);
         c.finish({"emissive", "ambient", "diffuse", "specular"});
     }
-    r.readVec3("background", preset.background, kUnit);
+    r.readVec3("background", preset.background, limits::kBackground);
     if (const Json* p = r.object("plot")) {
         Reader c(*p, "plot", file, out);
-        c.readNumber("incident_deg", preset.plotIncidentDeg, Range{-90.0f, 90.0f, false, "in [-90, 90]"});
+        c.readNumber("incident_deg", preset.plotIncidentDeg, limits::kPlotIncidentDeg);
         c.finish({"incident_deg"});
     }
     r.finish({"format", "version", "name", "description", "model", "camera", "shading", "normal_matrix", "brdf",

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/diagnostics.h"
+#include "core/limits.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -23,7 +24,7 @@ namespace lab {
 
 inline constexpr std::string_view kPresetFormat = "lighting-lab-preset";
 inline constexpr int kPresetVersion = 1;
-inline constexpr int kMaxLights = 8;
+using limits::kMaxLights; // core/limits.h holds every range a preset is validated against
 
 enum class Builtin { Sphere, Cube, Plane, Torus };
 enum class Shading { Flat, Gouraud, Phong };
