@@ -2,6 +2,7 @@
 #include "core/gltf.h"
 
 #include "core/file_io.h"
+#include "core/paths.h"
 
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
@@ -42,21 +43,16 @@ struct FileGuard {
     }
 };
 
-bool isInside(const fs::path& folder, const fs::path& path) {
-    auto [folderEnd, pathIt] = std::mismatch(folder.begin(), folder.end(), path.begin(), path.end());
-    return folderEnd == folder.end();
-}
-
 // tinygltf joins the base folder and the URI and asks whether that exists. Answer "no" for
 // anything that leaves the folder or is not a regular file, and remember why.
 bool guardedFileExists(const std::string& path, void* user) {
     auto* guard = static_cast<FileGuard*>(user);
-    std::error_code ec;
-    fs::path canonical = fs::weakly_canonical(fs::path(path), ec);
-    if (ec || !isInside(guard->folder, canonical)) {
+    std::optional<fs::path> relative = relativeInside(guard->folder, fs::path(path));
+    if (!relative) {
         return guard->refuse("leaves the model's folder");
     }
-    fs::file_status status = fs::status(canonical, ec);
+    std::error_code ec;
+    fs::file_status status = fs::status(guard->folder / *relative, ec);
     if (!fs::exists(status)) {
         return guard->refuse("file not found");
     }
@@ -598,9 +594,7 @@ std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& disp
         return std::nullopt;
     }
     std::optional<std::string_view> bytes = mapped->bytes();
-    std::error_code ec;
-    FileGuard guard{fs::weakly_canonical(file.parent_path().empty() ? fs::path(".") : file.parent_path(), ec),
-                    limits.maxFileBytes, {}};
+    FileGuard guard{canonicalFolder(file.parent_path()), limits.maxFileBytes, {}};
     tinygltf::TinyGLTF gltf;
     gltf.SetFsCallbacks({guardedFileExists, noExpansion, guardedReadWholeFile, refuseWrite, &guard});
     int skippedImages = 0;

@@ -7,6 +7,7 @@
 
 #include "core/file_io.h"
 #include "core/number_format.h"
+#include "core/paths.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -436,16 +437,14 @@ std::optional<fs::path> resolveModelPath(const std::string& gltf, const fs::path
         error = "\"" + gltf + "\" is an absolute path; model paths are relative to the preset's folder";
         return std::nullopt;
     }
+    fs::path base = canonicalFolder(folder);
     std::error_code ec;
-    fs::path base = fs::weakly_canonical(folder.empty() ? fs::path(".") : folder, ec);
     fs::path full = fs::weakly_canonical(base / relative, ec);
     if (ec) {
         error = "\"" + gltf + "\": " + ec.message();
         return std::nullopt;
     }
-    // Inside means: the canonical path (symbolic links resolved) starts with the canonical folder.
-    auto [baseEnd, fullIt] = std::mismatch(base.begin(), base.end(), full.begin(), full.end());
-    if (baseEnd != base.end()) {
+    if (!isInside(base, full)) {
         error = "\"" + gltf + "\" leaves the preset's folder " + base.string();
         return std::nullopt;
     }

@@ -1,0 +1,99 @@
+// paths_test.cpp — folder containment: canonical paths, components, symbolic links.
+#include "core/paths.h"
+
+#include "test_files.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+namespace lab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// dir/a/model.glb, dir/a/sub/deep.glb, dir/ab/other.glb, dir/outside.glb; dir/a/out.glb links to
+// dir/outside.glb, dir/a/subLink to dir/a/sub and dir/a/upLink to dir.
+class Paths : public testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_FALSE(dir.path().empty());
+        a = dir.path() / "a";
+        fs::create_directories(a / "sub");
+        fs::create_directories(dir.path() / "ab");
+        writeText(a / "model.glb", "x");
+        writeText(a / "sub" / "deep.glb", "x");
+        writeText(dir.path() / "ab" / "other.glb", "x");
+        writeText(dir.path() / "outside.glb", "x");
+        fs::create_symlink(dir.path() / "outside.glb", a / "out.glb");
+        fs::create_directory_symlink(a / "sub", a / "subLink");
+        fs::create_directory_symlink(dir.path(), a / "upLink");
+    }
+
+    TempFolder dir;
+    fs::path a;
+};
+
+TEST_F(Paths, AFileInOrBelowTheFolderIsInsideWithItsRelativePath) {
+    EXPECT_EQ(relativeInside(a, a / "model.glb"), fs::path("model.glb"));
+    EXPECT_EQ(relativeInside(a, a / "sub" / "deep.glb"), fs::path("sub/deep.glb"));
+    EXPECT_EQ(relativeInside(a, a / "sub" / ".." / "model.glb"), fs::path("model.glb"));
+    EXPECT_TRUE(isInside(a, a / "model.glb"));
+}
+
+TEST_F(Paths, AFileThatDoesNotExistYetCanBeInside) {
+    EXPECT_EQ(relativeInside(a, a / "new" / "later.glb"), fs::path("new/later.glb"));
+    EXPECT_FALSE(isInside(a, a / "new" / ".." / ".." / "later.glb"));
+}
+
+TEST_F(Paths, TheFolderItselfIsInsideAsDot) {
+    EXPECT_EQ(relativeInside(a, a), fs::path("."));
+    EXPECT_EQ(relativeInside(a, a / "."), fs::path("."));
+    EXPECT_EQ(relativeInside(a / "", a), fs::path("."));
+}
+
+TEST_F(Paths, DotDotThatLeavesTheFolderIsOutside) {
+    EXPECT_EQ(relativeInside(a, a / ".." / "outside.glb"), std::nullopt);
+    EXPECT_FALSE(isInside(a, a / "sub" / ".." / ".." / "outside.glb"));
+    EXPECT_FALSE(isInside(a / "sub", a));
+}
+
+TEST_F(Paths, SymbolicLinksAreFollowed) {
+    EXPECT_FALSE(isInside(a, a / "out.glb"));                  // a file link pointing out
+    EXPECT_FALSE(isInside(a, a / "upLink" / "outside.glb"));   // a folder link pointing out
+    EXPECT_EQ(relativeInside(a, a / "upLink" / "a" / "model.glb"), fs::path("model.glb")); // out and back in
+    EXPECT_EQ(relativeInside(a, a / "subLink" / "deep.glb"), fs::path("sub/deep.glb"));
+    EXPECT_EQ(relativeInside(a / "subLink", a / "sub" / "deep.glb"), fs::path("deep.glb")); // the folder a link
+}
+
+TEST_F(Paths, ASiblingWhoseNameSharesAPrefixIsOutside) {
+    EXPECT_FALSE(isInside(a, dir.path() / "ab" / "other.glb"));
+    EXPECT_FALSE(isInside(a, dir.path() / "ab"));
+    EXPECT_FALSE(isInside(dir.path() / "ab", a / "model.glb"));
+}
+
+TEST_F(Paths, AFolderThatDoesNotExistHasNoTrailingSeparator) {
+    fs::path missing = a / "missing" / "";
+    EXPECT_EQ(canonicalFolder(missing), fs::weakly_canonical(a) / "missing");
+    EXPECT_EQ(relativeInside(missing, a / "missing" / "x.glb"), fs::path("x.glb"));
+}
+
+TEST_F(Paths, AnEmptyFolderIsTheWorkingFolder) {
+    fs::path before = fs::current_path();
+    fs::current_path(a);
+    EXPECT_EQ(canonicalFolder(""), fs::weakly_canonical(a));
+    EXPECT_EQ(relativeInside("", "model.glb"), fs::path("model.glb"));
+    EXPECT_EQ(relativeInside("", a / "sub" / "deep.glb"), fs::path("sub/deep.glb"));
+    EXPECT_FALSE(isInside("", "../outside.glb"));
+    EXPECT_FALSE(isInside("", dir.path() / "outside.glb"));
+    fs::current_path(before);
+}
+
+TEST_F(Paths, CanonicalFolderResolvesLinksAndDots) {
+    EXPECT_EQ(canonicalFolder(a / "subLink"), fs::weakly_canonical(a / "sub"));
+    EXPECT_EQ(canonicalFolder(a / "sub" / ".."), fs::weakly_canonical(a));
+    EXPECT_TRUE(canonicalFolder(a).is_absolute());
+}
+
+} // namespace
+} // namespace lab
