@@ -69,6 +69,10 @@ constexpr int clamp(const IntRange& r, int v) { return v < r.min ? r.min : v > r
 // The ranges, by preset key
 //----------------------------------------------------------------------------------------
 
+// Positions, directions, the model's transform: any finite float (the slider span is a guess
+// at a useful scene size; typed values go further).
+inline constexpr Range kFinite{-kUnbounded, kUnbounded, false, -10.0f, 10.0f, "a finite number"};
+
 // material.emissive, ambient, diffuse, specular: reflectances, so at most 1.
 inline constexpr Range kMaterialColor{0.0f, 1.0f, false, 0.0f, 1.0f, "in [0, 1]"};
 // material.shininess: the Phong and Blinn-Phong exponent.

@@ -1,0 +1,24 @@
+// json_text.h — checks on JSON text before and after a parser sees it.
+//
+// JSON parsers (nlohmann's, and tinygltf's on top of it) recurse once per nesting level, so a
+// file nested thousands of levels deep overflows the stack before any validation runs: bound the
+// depth on the text first. And a parser's byte offset means little to a person; lineColumn
+// turns it into "line L, column C".
+//
+// This file owns those two questions. It does not parse JSON.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace lab {
+
+// Whether no array or object in `text` nests deeper than `maxDepth` (brackets inside strings do
+// not count). Malformed text is the parser's to report; this only bounds its depth.
+bool jsonNestingWithin(std::string_view text, int maxDepth);
+
+// "line L, column C" (from 1) of byte `offset` in `text`.
+std::string lineColumn(std::string_view text, std::size_t offset);
+
+} // namespace lab
