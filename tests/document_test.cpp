@@ -86,6 +86,33 @@ TEST(Document, HistoryIsBounded) {
     EXPECT_EQ(doc.undoDepth(), Document::kMaxHistory);
 }
 
+TEST(Document, UndoWalksBackThroughEditsOfBothSetsInOrder) {
+    Document doc;
+    doc.preset.shading = Shading::Flat; // A
+    doc.commit(false);
+    doc.compare.brdf = BrdfModel::CookTorrance; // B
+    doc.commit(false);
+    doc.preset.material.shininess = 90.0f; // A again
+    doc.commit(false);
+    EXPECT_FALSE(doc.saved() == doc.preset);
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.preset.material.shininess, 32.0f);
+    EXPECT_EQ(doc.compare.brdf, BrdfModel::CookTorrance);
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.compare.brdf, BrdfModel::Phong);
+    EXPECT_EQ(doc.preset.shading, Shading::Flat);
+    ASSERT_TRUE(doc.redo());
+    EXPECT_EQ(doc.compare.brdf, BrdfModel::CookTorrance);
+}
+
+TEST(Document, OnlySetADecidesWhetherThereIsSomethingToSave) {
+    Document doc;
+    doc.compare.shading = Shading::Gouraud;
+    doc.commit(false);
+    EXPECT_FALSE(doc.dirty());
+    EXPECT_TRUE(doc.canUndo());
+}
+
 TEST(Document, ResetStartsANewHistory) {
     Document doc;
     doc.preset.shading = Shading::Gouraud;
@@ -93,24 +120,6 @@ TEST(Document, ResetStartsANewHistory) {
     doc.reset(Preset{}, "a.json");
     EXPECT_FALSE(doc.canUndo());
     EXPECT_FALSE(doc.canRedo());
-}
-
-} // namespace
-} // namespace lab
-
-#include "ui/tools.h"
-#include "test_files.h"
-
-namespace lab {
-namespace {
-
-// The README's shortcut table and the help overlay (F1) list the same shortcuts.
-TEST(Docs, ReadmeListsEveryShortcutOfTheHelpOverlay) {
-    std::string readme = readText(std::string(LAB_SOURCE_DIR) + "/README.md");
-    for (const ui::Shortcut& s : ui::shortcuts()) {
-        std::string row = std::string("| ") + s.keys + " | " + s.action + " |";
-        EXPECT_NE(readme.find(row), std::string::npos) << "README.md lacks the row " << row;
-    }
 }
 
 } // namespace

@@ -1,10 +1,12 @@
 // app.h — the interactive lab: one frame function that every windowed platform calls.
 //
-// The app owns the document (the preset being edited), the renderer and the UI state. Each
-// frame it builds the UI (ImGui), carries out what the UI asked for (open, save, undo, load a
-// model...), records undo steps, and draws the 3D view into the bound framebuffer; the platform
-// then renders ImGui's draw data on top and presents. The loop belongs to the platform
-// (platform/window.h); the app never sees GLFW or the browser.
+// The app owns the workspace (the editing state and the file operations, app/workspace.h), the
+// renderer and the UI's own state. Each frame reads as the data flow: the layout (a pure
+// function), the UI (lab/ui, which edits the scene in place and returns requests), the requests
+// carried out (by the workspace, or here for the window's own ones), one undo step per gesture,
+// then the renderer draws what the workspace holds; the platform renders ImGui's draw data on
+// top and presents. The loop belongs to the platform (platform/window.h); the app never sees
+// GLFW or the browser, and draws no ImGui itself.
 //
 // Implemented: live panel, plots, presets list, open/save/revert with unsaved-changes prompt,
 // drag-and-drop of presets and models, undo/redo, orbit/pan/zoom, light markers and dragging,
@@ -12,6 +14,7 @@
 // help overlay, frame time. Errors are shown in the window and never change the scene.
 #pragma once
 
+#include "app/workspace.h"
 #include "core/diagnostics.h"
 
 #include <filesystem>
@@ -41,12 +44,6 @@ struct FrameInput {
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
 };
 
-// A file the platform should hand to the user (the browser downloads it).
-struct Download {
-    std::string name;
-    std::string bytes;
-};
-
 struct FrameOutput {
     bool quit = false;
     bool toggleFullscreen = false;
@@ -68,12 +65,11 @@ struct AppOptions {
     bool saveByDownload = false;
 };
 
+// Owns the workspace, the renderer and the UI state (not copyable: impl_ is unique).
 class App {
 public:
     explicit App(AppOptions options);
     ~App();
-    App(const App&) = delete;
-    App& operator=(const App&) = delete;
 
     // Needs the GL context and the ImGui context. False (with diagnostics) if the built-in
     // shaders do not compile; a preset that fails to open is shown as an error in the window.

@@ -9,10 +9,11 @@ Document::Document() { reset(Preset{}, {}); }
 
 void Document::reset(Preset p, fs::path file, fs::path folder) {
     preset = std::move(p);
+    compare = preset;
     file_ = std::move(file);
     folder_ = std::move(folder);
     saved_ = preset;
-    committed_ = preset;
+    committed_ = current();
     undo_.clear();
     redo_.clear();
 }
@@ -27,40 +28,40 @@ fs::path Document::folder() const {
 std::string Document::displayName() const { return file_.empty() ? preset.name : file_.filename().string(); }
 
 bool Document::commit(bool gestureInProgress) {
-    if (gestureInProgress || preset == committed_) {
+    if (gestureInProgress || current() == committed_) {
         return false;
     }
-    undo_.push_back(committed_);
+    undo_.push_back(std::move(committed_));
     if (undo_.size() > kMaxHistory) {
         undo_.erase(undo_.begin());
     }
     redo_.clear();
-    committed_ = preset;
+    committed_ = current();
+    return true;
+}
+
+void Document::restore(const Snapshot& s) {
+    preset = s.a;
+    compare = s.b;
+}
+
+bool Document::step(std::vector<Snapshot>& from, std::vector<Snapshot>& to) {
+    if (from.empty()) {
+        return false;
+    }
+    to.push_back(std::move(committed_));
+    committed_ = std::move(from.back());
+    from.pop_back();
+    restore(committed_);
     return true;
 }
 
 bool Document::undo() {
     commit(false); // an edit not yet recorded is undone first
-    if (undo_.empty()) {
-        return false;
-    }
-    redo_.push_back(committed_);
-    committed_ = undo_.back();
-    undo_.pop_back();
-    preset = committed_;
-    return true;
+    return step(undo_, redo_);
 }
 
-bool Document::redo() {
-    if (redo_.empty()) {
-        return false;
-    }
-    undo_.push_back(committed_);
-    committed_ = redo_.back();
-    redo_.pop_back();
-    preset = committed_;
-    return true;
-}
+bool Document::redo() { return step(redo_, undo_); }
 
 void Document::markSaved(fs::path file) {
     file_ = std::move(file);

@@ -1,9 +1,11 @@
 // document.h — the preset being edited: where it lives, what is on disk, and its history.
 //
-// The GUI edits `preset` in place, every frame, through plain references. The document turns
-// those edits into undo steps by comparing snapshots: commit() at the end of a frame records the
-// change since the last step, unless the user is still in the middle of a gesture (a slider
-// drag, a camera orbit), so one drag is one step. No GL and no ImGui here.
+// The GUI edits `preset` (set A) and `compare` (set B, compare mode's second set) in place, every
+// frame, through plain references. The document turns those edits into undo steps by comparing
+// snapshots of both: commit() at the end of a frame records the change since the last step,
+// unless the user is still in the middle of a gesture (a slider drag, a camera orbit), so one
+// drag is one step, and undo walks back through A's and B's edits in the order they were made.
+// Only A is saved: dirty() looks at A alone. No GL and no ImGui here.
 #pragma once
 
 #include "core/preset.h"
@@ -18,11 +20,12 @@ class Document {
 public:
     Document();
 
-    // Replaces everything: a freshly opened file (or the defaults when `file` is empty). The
-    // history starts anew. `folder` is where glTF paths resolve for an untitled document.
+    // Replaces everything: a freshly opened file (or the defaults when `file` is empty); B becomes
+    // a copy of A. The history starts anew. `folder` is where glTF paths resolve when untitled.
     void reset(Preset preset, std::filesystem::path file, std::filesystem::path folder = {});
 
-    Preset preset; // edited in place by the UI
+    Preset preset;  // set A, edited in place by the UI; what is saved
+    Preset compare; // set B, compare mode's second set; never saved
 
     const std::filesystem::path& file() const { return file_; }
     std::filesystem::path folder() const;
@@ -34,7 +37,7 @@ public:
     // Returns true if a step was recorded.
     bool commit(bool gestureInProgress);
 
-    bool canUndo() const { return !undo_.empty() || preset != committed_; }
+    bool canUndo() const { return !undo_.empty() || current() != committed_; }
     bool canRedo() const { return !redo_.empty(); }
     bool undo();
     bool redo();
@@ -51,11 +54,20 @@ public:
     static constexpr std::size_t kMaxHistory = 500;
 
 private:
+    struct Snapshot {
+        Preset a, b;
+        bool operator==(const Snapshot&) const = default;
+    };
+    Snapshot current() const { return {preset, compare}; }
+    void restore(const Snapshot& s);
+    // Moves the current state onto `to` and the top of `from` into the current state.
+    bool step(std::vector<Snapshot>& from, std::vector<Snapshot>& to);
+
     std::filesystem::path file_;
     std::filesystem::path folder_; // for untitled documents
     Preset saved_;
-    Preset committed_; // the state after the last recorded step
-    std::vector<Preset> undo_, redo_;
+    Snapshot committed_; // the state after the last recorded step
+    std::vector<Snapshot> undo_, redo_;
 };
 
 } // namespace lab

@@ -7,18 +7,15 @@
 //
 // Exit status: 0 success, 2 bad input (message on stderr), 1 internal failure or failed check.
 #include "cli/command_line.h"
-
-#ifdef LAB_GUI
 #include "platform/window.h"
-#endif
 
 #include <cstdio>
 #include <unistd.h>
 
 namespace {
 
-int runLab(const lab::CommandLine& line) {
-#ifdef LAB_GUI
+// The interactive lab on this build's platform (platform/window.h), or a preview without one.
+int runInteractive(const lab::CommandLine& line) {
     lab::AppOptions options;
     options.preset = line.preset;
     options.presenter = line.presenter;
@@ -32,20 +29,18 @@ int runLab(const lab::CommandLine& line) {
         options.presetFolders.push_back(std::filesystem::path(exe).parent_path().parent_path() / "presets");
     }
     options.presetFolders.push_back(LAB_SOURCE_PRESETS);
-    lab::App app(std::move(options));
     lab::WindowOptions window;
     window.fullscreen = line.fullscreen;
     std::string error;
-    switch (lab::runWindow(app, window, error)) {
+    switch (lab::runLab(options, window, error)) {
     case lab::WindowResult::Closed: return lab::kExitOk;
     case lab::WindowResult::Failed:
         std::fprintf(stderr, "lab: %s\n", error.c_str());
         return lab::kExitFailure;
     case lab::WindowResult::NoDisplay:
-        std::fprintf(stderr, "lab: no display (DISPLAY and WAYLAND_DISPLAY are unset); rendering a preview instead\n");
+        std::fprintf(stderr, "lab: no window here (no display, or a build without a window platform); rendering a preview instead\n");
         break;
     }
-#endif
     return lab::runPreview(line.preset);
 }
 
@@ -63,5 +58,5 @@ int main(int argc, char** argv) {
     case lab::CommandLine::Command::Check: return lab::runCheck(line.presets, line.check);
     case lab::CommandLine::Command::Lab: break;
     }
-    return runLab(line);
+    return runInteractive(line);
 }

@@ -31,6 +31,12 @@ struct Diagnostic {
 
 using Diagnostics = std::vector<Diagnostic>;
 
+// Something the user asked for that could not be done: a title, and why.
+struct Problem {
+    std::string title; // "Cannot open red.json (nothing was changed)"
+    Diagnostics diagnostics;
+};
+
 // All diagnostics, one per line.
 inline std::string toString(const Diagnostics& diagnostics) {
     std::string s;

@@ -1,8 +1,8 @@
 // glfw_window.cpp — the desktop platform: GLFW window, OpenGL ES 3.0 context (EGL), Dear ImGui.
 //
 // Implemented features:
-//   * the loop: poll events, ImGui backends' NewFrame, App::frame, render ImGui on top, swap;
-//     it sleeps on events while the window is minimized;
+//   * the loop: poll events, one frame (imgui_host.h: ImGui's frame, App::frame, ImGui's draw
+//     data on top), swap; it sleeps on events while the window is minimized;
 //   * dropped files and the close button go to the app (which may ask about unsaved edits);
 //   * presenter scale: fonts are re-rasterized at the new size (DejaVu Sans when installed,
 //     ImGui's built-in font otherwise) and the style scaled, instead of blurry stretching;
@@ -14,13 +14,12 @@
 #include "platform/window.h"
 
 #include "platform/imgui_glfw.h"
+#include "platform/imgui_host.h"
 
 #include "render/gl.h"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
-#include <imgui.h>
 
 #include <cstdlib>
 #include <vector>
@@ -50,18 +49,8 @@ void toggleFullscreen(GLFWwindow* window, WindowState& state) {
     glfwSetWindowMonitor(window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
-} // namespace
-
-WindowResult runWindow(App& app, const WindowOptions& options, std::string& error) {
-    const char* x11 = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    if ((!x11 || !*x11) && (!wayland || !*wayland)) {
-        return WindowResult::NoDisplay;
-    }
-    glfwSetErrorCallback(nullptr);
-    if (!glfwInit()) {
-        return WindowResult::NoDisplay;
-    }
+// A GLFW window with an OpenGL ES 3.0 context (EGL), MSAA when there is any; nullptr with `error`.
+GLFWwindow* openWindow(const WindowOptions& options, std::string& error) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
     glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
@@ -76,80 +65,84 @@ WindowResult runWindow(App& app, const WindowOptions& options, std::string& erro
         const char* description = nullptr;
         glfwGetError(&description);
         error = std::string("cannot open an OpenGL ES 3.0 window: ") + (description ? description : "unknown error");
-        glfwTerminate();
-        return WindowResult::Failed;
     }
-    WindowState state;
-    installInputQueue(window, &state);
-    glfwMakeContextCurrent(window);
-    glfwSwapInterval(1);
+    return window;
+}
 
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr; // the layout is the app's, not a file's
-    ImGui::StyleColorsDark();
-    ImGuiStyle baseStyle = ImGui::GetStyle();
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 300 es");
+FrameInput nextInput(GLFWwindow* window, WindowState& state, double& last) {
+    FrameInput in;
+    in.closeRequested = glfwWindowShouldClose(window);
+    glfwSetWindowShouldClose(window, GLFW_FALSE);
+    takeQueuedInput(state, in);
+    double now = glfwGetTime();
+    in.deltaTime = static_cast<float>(std::max(now - last, 1e-4));
+    last = now;
+    int w, h;
+    glfwGetWindowSize(window, &w, &h);
+    glfwGetFramebufferSize(window, &in.framebufferWidth, &in.framebufferHeight);
+    in.windowWidth = static_cast<float>(std::max(w, 1));
+    in.windowHeight = static_cast<float>(std::max(h, 1));
+    return in;
+}
 
-    WindowResult result = WindowResult::Closed;
-    Diagnostics diagnostics;
-    if (!app.init(diagnostics)) {
-        error = "the lab cannot start:\n" + toString(diagnostics);
-        result = WindowResult::Failed;
-    } else {
-        if (options.fullscreen) {
+// The loop: events, one frame, swap; it sleeps on events while the window is minimized.
+void loop(GLFWwindow* window, WindowState& state, ImGuiHost& host) {
+    double last = glfwGetTime();
+    for (bool quit = false; !quit;) {
+        if (glfwGetWindowAttrib(window, GLFW_ICONIFIED)) {
+            glfwWaitEvents();
+            continue;
+        }
+        glfwPollEvents();
+        FrameOutput out = host.frame(nextInput(window, state, last), [] { ImGui_ImplGlfw_NewFrame(); });
+        glfwSwapBuffers(window);
+        glfwSetWindowTitle(window, out.title.c_str());
+        if (out.toggleFullscreen) {
             toggleFullscreen(window, state);
         }
-        float scale = 1.0f;
-        applyUiScale(scale, baseStyle, kFonts);
-        double last = glfwGetTime();
-        bool quit = false;
-        while (!quit) {
-            if (glfwGetWindowAttrib(window, GLFW_ICONIFIED)) {
-                glfwWaitEvents();
-                continue;
-            }
-            glfwPollEvents();
-            FrameInput in;
-            in.closeRequested = glfwWindowShouldClose(window);
-            glfwSetWindowShouldClose(window, GLFW_FALSE);
-            in.droppedFiles.swap(state.dropped);
-            in.keys.swap(state.keys);
-            double now = glfwGetTime();
-            in.deltaTime = static_cast<float>(std::max(now - last, 1e-4));
-            last = now;
-            int w, h;
-            glfwGetWindowSize(window, &w, &h);
-            glfwGetFramebufferSize(window, &in.framebufferWidth, &in.framebufferHeight);
-            in.windowWidth = static_cast<float>(std::max(w, 1));
-            in.windowHeight = static_cast<float>(std::max(h, 1));
+        quit = out.quit;
+    }
+}
 
-            ImGui_ImplOpenGL3_NewFrame();
-            ImGui_ImplGlfw_NewFrame();
-            ImGui::NewFrame();
-            FrameOutput out = app.frame(in);
-            ImGui::Render();
-            glViewport(0, 0, in.framebufferWidth, in.framebufferHeight);
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-            glfwSwapBuffers(window);
-
-            glfwSetWindowTitle(window, out.title.c_str());
-            if (out.toggleFullscreen) {
+WindowResult runWindow(const AppOptions& appOptions, const WindowOptions& options, std::string& error) {
+    GLFWwindow* window = openWindow(options, error);
+    if (!window) {
+        return WindowResult::Failed;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+    WindowResult result = WindowResult::Closed;
+    {
+        App app(appOptions); // its GL objects go before the context does
+        WindowState state;
+        ImGuiHost host(kFonts);
+        GlfwBackend backend(window, &state);
+        if (!host.start(app, error)) {
+            result = WindowResult::Failed;
+        } else {
+            if (options.fullscreen) {
                 toggleFullscreen(window, state);
             }
-            if (out.uiScale != scale) {
-                scale = out.uiScale;
-                applyUiScale(scale, baseStyle, kFonts);
-            }
-            quit = out.quit;
+            loop(window, state, host);
         }
     }
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
     glfwDestroyWindow(window);
+    return result;
+}
+
+} // namespace
+
+WindowResult runLab(const AppOptions& options, const WindowOptions& window, std::string& error) {
+    const char* x11 = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    if ((!x11 || !*x11) && (!wayland || !*wayland)) {
+        return WindowResult::NoDisplay;
+    }
+    glfwSetErrorCallback(nullptr);
+    if (!glfwInit()) {
+        return WindowResult::NoDisplay;
+    }
+    WindowResult result = runWindow(options, window, error);
     glfwTerminate();
     return result;
 }

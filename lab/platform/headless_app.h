@@ -1,8 +1,8 @@
 // headless_app.h — the interactive lab without a window: App frames rendered offscreen.
 //
-// The third implementation of the frame loop, beside the desktop window and the browser: Dear
-// ImGui with its OpenGL3 backend on the headless EGL context, each frame drawn into a
-// framebuffer object with a fixed time step (1/60 s), no input. For benchmarks (a full GUI frame)
+// The third user of the shared frame sequence (imgui_host.h), beside the desktop window and the
+// browser: ImGui on the headless EGL context, each frame drawn into a framebuffer object with a
+// fixed time step (1/60 s) and only the input a test gives it. For benchmarks (a full GUI frame)
 // and for looking at the GUI where there is no display.
 #pragma once
 

@@ -12,12 +12,11 @@
 
 namespace lab {
 
+// Owns the EGL display and context (not copyable: impl_ is unique).
 class HeadlessGl {
 public:
     HeadlessGl();
     ~HeadlessGl();
-    HeadlessGl(const HeadlessGl&) = delete;
-    HeadlessGl& operator=(const HeadlessGl&) = delete;
 
     // Creates the context and makes it current on this thread; false with `error` if impossible.
     bool create(std::string& error);

@@ -1,11 +1,8 @@
-// imgui_glfw.cpp — input queue and UI scaling for the GLFW-based platforms.
+// imgui_glfw.cpp — the GLFW backend of ImGui with queued keys and drops.
 #include "platform/imgui_glfw.h"
 
 #include <GLFW/glfw3.h>
-#include <backends/imgui_impl_opengl3.h>
-#include <imgui.h>
-
-#include <filesystem>
+#include <backends/imgui_impl_glfw.h>
 
 namespace lab {
 
@@ -30,32 +27,20 @@ void onDrop(GLFWwindow* window, int count, const char** paths) {
 
 } // namespace
 
-void installInputQueue(GLFWwindow* window, InputQueue* queue) {
+GlfwBackend::GlfwBackend(GLFWwindow* window, InputQueue* queue) {
     glfwSetWindowUserPointer(window, queue);
     glfwSetKeyCallback(window, onKey);
     glfwSetDropCallback(window, onDrop);
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
 }
 
-void applyUiScale(float scale, const ImGuiStyle& baseStyle, const std::vector<std::string>& fontFiles) {
-    ImGuiIO& io = ImGui::GetIO();
-    io.Fonts->Clear();
-    bool loaded = false;
-    for (const std::string& f : fontFiles) {
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(f, ec) && io.Fonts->AddFontFromFileTTF(f.c_str(), 15.0f * scale)) {
-            loaded = true;
-            break;
-        }
-    }
-    if (!loaded) {
-        ImFontConfig config;
-        config.SizePixels = 13.0f * scale;
-        io.Fonts->AddFontDefault(&config);
-    }
-    ImGui_ImplOpenGL3_DestroyFontsTexture();
-    ImGui_ImplOpenGL3_CreateFontsTexture();
-    ImGui::GetStyle() = baseStyle;
-    ImGui::GetStyle().ScaleAllSizes(scale);
+GlfwBackend::~GlfwBackend() { ImGui_ImplGlfw_Shutdown(); }
+
+void takeQueuedInput(InputQueue& queue, FrameInput& in) {
+    in.keys.swap(queue.keys);
+    queue.keys.clear();
+    in.droppedFiles.swap(queue.dropped);
+    queue.dropped.clear();
 }
 
 } // namespace lab

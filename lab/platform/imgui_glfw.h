@@ -1,5 +1,6 @@
-// imgui_glfw.h — what the desktop and browser platforms share: both run Dear ImGui on GLFW
-// (Emscripten implements GLFW over the canvas). Input queueing and UI scaling; not the loop.
+// imgui_glfw.h — what the desktop and browser platforms share beyond imgui_host.h: both run
+// Dear ImGui's GLFW backend (Emscripten implements GLFW over the canvas), with the key presses and
+// drops queued between frames. Not the loop.
 #pragma once
 
 #include "app/app.h"
@@ -8,7 +9,6 @@
 #include <vector>
 
 struct GLFWwindow;
-struct ImGuiStyle;
 
 namespace lab {
 
@@ -18,12 +18,18 @@ struct InputQueue {
     std::vector<std::string> dropped;
 };
 
-// Installs key and drop callbacks feeding `queue`. Call before ImGui_ImplGlfw_InitForOpenGL,
-// which chains the callbacks installed before it.
-void installInputQueue(GLFWwindow* window, InputQueue* queue);
+// ImGui's GLFW backend on `window` for as long as it lives, with key and drop callbacks feeding
+// `queue` (installed first: the backend chains the callbacks installed before it). Needs the
+// ImGui context (ImGuiHost).
+class GlfwBackend {
+public:
+    GlfwBackend(GLFWwindow* window, InputQueue* queue);
+    ~GlfwBackend();
+    GlfwBackend(const GlfwBackend&) = delete;
+    GlfwBackend& operator=(const GlfwBackend&) = delete;
+};
 
-// Rebuilds the font atlas at `scale` (the first font file that exists, else ImGui's own font)
-// and scales a copy of `baseStyle`. Needs the ImGui OpenGL3 backend initialized.
-void applyUiScale(float scale, const ImGuiStyle& baseStyle, const std::vector<std::string>& fontFiles);
+// Moves what the callbacks queued into the frame's input.
+void takeQueuedInput(InputQueue& queue, FrameInput& in);
 
 } // namespace lab

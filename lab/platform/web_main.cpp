@@ -9,10 +9,8 @@ int main() {
     options.presetFolders = {"/presets"};   // bundled with the page (see CMakeLists.txt)
     options.screenshotFolder = "/screenshots";
     options.saveByDownload = true;
-    // The app must outlive main(): the browser's main loop keeps calling into it.
-    static lab::App app(std::move(options));
     std::string error;
-    if (lab::runWindow(app, lab::WindowOptions{}, error) == lab::WindowResult::Failed) {
+    if (lab::runLab(options, lab::WindowOptions{}, error) == lab::WindowResult::Failed) {
         std::fprintf(stderr, "lab: %s\n", error.c_str());
         return 1;
     }

@@ -2,8 +2,8 @@
 // and the page's glue (web/index.html).
 //
 // Implemented features:
-//   * the loop is the browser's (emscripten_set_main_loop): one App::frame per animation frame,
-//     never blocking;
+//   * the loop is the browser's (emscripten_set_main_loop): one frame (imgui_host.h) per
+//     animation frame, never blocking;
 //   * the canvas fills the page, follows resizes and renders at the device pixel ratio, while
 //     ImGui works in CSS pixels (so the UI is sharp and the usual size on high-DPI screens);
 //   * files dropped on the canvas or chosen in the page's file picker land in /presets (next to
@@ -15,12 +15,12 @@
 #include "platform/window.h"
 
 #include "platform/imgui_glfw.h"
+#include "platform/imgui_host.h"
 #include "ui/widgets.h"
 #include "render/gl.h"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 #include <emscripten.h>
 #include <emscripten/html5.h>
 #include <imgui.h>
@@ -77,10 +77,11 @@ EM_JS(void, labJsReady, (), {
 const std::vector<std::string> kFonts = {"/fonts/DejaVuSans.ttf"};
 
 struct WebState : InputQueue {
-    App* app = nullptr;
+    explicit WebState(const AppOptions& options) : app(options) {}
+    App app;
+    ImGuiHost host{kFonts};
     GLFWwindow* window = nullptr;
-    ImGuiStyle baseStyle;
-    float scale = 0.0f;
+    std::unique_ptr<GlfwBackend> backend;
     double last = 0.0;
     std::string lastLink, lastTitle;
     std::optional<std::string> pendingLink;
@@ -101,11 +102,10 @@ std::string adopt(const std::string& path) {
     return ec ? path : to.string();
 }
 
-void frame(void* arg) {
-    WebState& s = *static_cast<WebState*>(arg);
+// The canvas follows its CSS size at the device pixel ratio; the frame's input in CSS pixels.
+FrameInput nextInput(WebState& s, double dpr) {
     double cssWidth = 0, cssHeight = 0;
     emscripten_get_element_css_size("#canvas", &cssWidth, &cssHeight);
-    double dpr = emscripten_get_device_pixel_ratio();
     int pixelWidth = std::max(1, static_cast<int>(cssWidth * dpr + 0.5));
     int pixelHeight = std::max(1, static_cast<int>(cssHeight * dpr + 0.5));
     int currentW = 0, currentH = 0;
@@ -115,7 +115,6 @@ void frame(void* arg) {
         // screen's. ImGui's display size and scale are set below, so GLFW's idea does not matter.
         emscripten_set_canvas_element_size("#canvas", pixelWidth, pixelHeight);
     }
-
     FrameInput in;
     in.windowWidth = static_cast<float>(std::max(cssWidth, 1.0));
     in.windowHeight = static_cast<float>(std::max(cssHeight, 1.0));
@@ -124,32 +123,16 @@ void frame(void* arg) {
     double now = glfwGetTime();
     in.deltaTime = static_cast<float>(std::max(now - s.last, 1e-4));
     s.last = now;
-    in.keys.swap(s.keys);
-    for (const std::string& f : s.dropped) {
-        in.droppedFiles.push_back(adopt(f));
+    takeQueuedInput(s, in);
+    for (std::string& f : in.droppedFiles) {
+        f = adopt(f);
     }
-    s.dropped.clear();
-    if (s.pendingLink) {
-        in.openLink = std::move(s.pendingLink);
-        s.pendingLink.reset();
-    }
+    in.openLink = std::exchange(s.pendingLink, std::nullopt);
+    return in;
+}
 
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    // Emscripten's GLFW speaks canvas pixels; ImGui works in CSS pixels.
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(in.windowWidth, in.windowHeight);
-    io.DisplayFramebufferScale = ImVec2(static_cast<float>(dpr), static_cast<float>(dpr));
-    if (io.MousePos.x > -FLT_MAX) {
-        io.MousePos = ImVec2(io.MousePos.x / static_cast<float>(dpr), io.MousePos.y / static_cast<float>(dpr));
-    }
-    io.DeltaTime = in.deltaTime;
-    ImGui::NewFrame();
-    FrameOutput out = s.app->frame(in);
-    ImGui::Render();
-    glViewport(0, 0, pixelWidth, pixelHeight);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-
+// What the frame asks of the page: downloads, the file picker, the title, the link.
+void deliver(WebState& s, const FrameOutput& out) {
     for (const Download& d : out.downloads) {
         labJsDownload(d.name.c_str(), d.bytes.data(), static_cast<int>(d.bytes.size()));
     }
@@ -164,10 +147,24 @@ void frame(void* arg) {
         labJsSetLink(out.link.c_str());
         s.lastLink = out.link;
     }
-    if (out.uiScale != s.scale) {
-        s.scale = out.uiScale;
-        applyUiScale(s.scale, s.baseStyle, kFonts);
-    }
+}
+
+void frame(void* arg) {
+    WebState& s = *static_cast<WebState*>(arg);
+    double dpr = emscripten_get_device_pixel_ratio();
+    FrameInput in = nextInput(s, dpr);
+    FrameOutput out = s.host.frame(in, [&] {
+        ImGui_ImplGlfw_NewFrame();
+        // Emscripten's GLFW speaks canvas pixels; ImGui works in CSS pixels.
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = ImVec2(in.windowWidth, in.windowHeight);
+        io.DisplayFramebufferScale = ImVec2(static_cast<float>(dpr), static_cast<float>(dpr));
+        if (io.MousePos.x > -FLT_MAX) {
+            io.MousePos = ImVec2(io.MousePos.x / static_cast<float>(dpr), io.MousePos.y / static_cast<float>(dpr));
+        }
+        io.DeltaTime = in.deltaTime;
+    });
+    deliver(s, out);
     if (++s.frames == 2) {
         labJsReady(); // the page (and its tests) know the first frames are drawn
     }
@@ -195,7 +192,7 @@ EMSCRIPTEN_KEEPALIVE const char* lab_widgets() {
 }
 }
 
-WindowResult runWindow(App& app, const WindowOptions&, std::string& error) {
+WindowResult runLab(const AppOptions& options, const WindowOptions&, std::string& error) {
     if (!glfwInit()) {
         error = "GLFW did not start";
         return WindowResult::Failed;
@@ -210,22 +207,11 @@ WindowResult runWindow(App& app, const WindowOptions&, std::string& error) {
     }
     glfwMakeContextCurrent(window);
     // Lives as long as the page: the main loop below never returns to here.
-    auto* s = new WebState;
-    s->app = &app;
+    auto* s = new WebState(options);
     s->window = window;
+    s->backend = std::make_unique<GlfwBackend>(window, s);
     gState = s;
-    installInputQueue(window, s);
-
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;
-    ImGui::StyleColorsDark();
-    s->baseStyle = ImGui::GetStyle();
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 300 es");
-    Diagnostics diagnostics;
-    if (!app.init(diagnostics)) {
-        error = "the lab cannot start:\n" + toString(diagnostics);
+    if (!s->host.start(s->app, error)) {
         return WindowResult::Failed;
     }
     char* link = labJsInitialLink();

@@ -1,9 +1,12 @@
-// window.h — the platform seam for the interactive lab: a window, its loop, and ImGui's
-// platform and renderer backends, around App::frame().
+// window.h — the platform seam of the interactive lab: a window, its loop, and ImGui's platform
+// backend, around App::frame().
 //
-// One implementation is compiled per target: glfw_window.cpp on the desktop (a GLFW window with
-// an OpenGL ES 3 context through EGL, the same GL the headless renderer and WebGL2 use), and a
-// browser one for the WebAssembly build. Each provides exactly this function.
+// One implementation is compiled, chosen by the CMake cache variable LAB_PLATFORM:
+//   glfw  glfw_window.cpp — a GLFW window with an OpenGL ES 3 context through EGL, the same GL
+//         the headless renderer and WebGL2 use (the desktop default);
+//   web   web_window.cpp — the browser's canvas and main loop (forced by Emscripten);
+//   none  none_window.cpp — no interactive lab: `lab` renders a preview instead.
+// Each provides exactly this function; nothing else in the lab asks which one it is.
 #pragma once
 
 #include "app/app.h"
@@ -20,9 +23,9 @@ struct WindowOptions {
 
 enum class WindowResult { Closed, NoDisplay, Failed };
 
-// Opens the window and runs the app until it asks to quit. NoDisplay when no window can be
-// opened here (no X server or Wayland compositor), so the caller can fall back to a preview;
-// Failed (with `error`) for anything else.
-WindowResult runWindow(App& app, const WindowOptions& options, std::string& error);
+// Opens the window and runs the lab until it asks to quit. NoDisplay when no window can be
+// opened here (no X server or Wayland compositor, or no interactive platform built), so the
+// caller can fall back to a preview; Failed (with `error`) for anything else.
+WindowResult runLab(const AppOptions& options, const WindowOptions& window, std::string& error);
 
 } // namespace lab

@@ -1,7 +1,6 @@
 // offscreen.cpp — load the model (cached), draw into a framebuffer, read it back.
 #include "render/offscreen.h"
 
-#include "core/model_loader.h"
 
 namespace lab {
 
@@ -9,23 +8,14 @@ bool OffscreenRenderer::init(Diagnostics& diagnostics) { return renderer_.init(d
 
 std::optional<Image> OffscreenRenderer::render(const LoadedPreset& preset, int width, int height,
                                                Diagnostics& diagnostics, std::vector<std::string>* notes) {
-    std::string key = modelCacheKey(preset.preset.model, preset.folder());
-    if (key != meshKey_) {
-        Diagnostics problems;
-        std::optional<Mesh> mesh = loadModel(preset.preset.model, preset.folder(), problems, notes);
-        if (!mesh) {
-            for (Diagnostic& d : problems) {
-                if (d.file.empty()) {
-                    d.file = preset.file.string();
-                } else {
-                    d.file = preset.file.string() + ": " + d.file;
-                }
-            }
-            diagnostics.insert(diagnostics.end(), problems.begin(), problems.end());
-            return std::nullopt;
+    Diagnostics problems;
+    std::shared_ptr<const Mesh> mesh = meshes_.get(preset.preset.model, preset.folder(), problems, notes);
+    if (!mesh) {
+        for (Diagnostic& d : problems) {
+            d.file = d.file.empty() ? preset.file.string() : preset.file.string() + ": " + d.file;
         }
-        mesh_ = std::make_unique<GpuMesh>(std::move(*mesh));
-        meshKey_ = key;
+        diagnostics.insert(diagnostics.end(), problems.begin(), problems.end());
+        return std::nullopt;
     }
     Framebuffer target(width, height);
     if (!target.complete()) {
@@ -34,7 +24,7 @@ std::optional<Image> OffscreenRenderer::render(const LoadedPreset& preset, int w
         return std::nullopt;
     }
     target.bind();
-    renderer_.draw(preset.preset, *mesh_, Viewport{0, 0, width, height});
+    renderer_.draw(preset.preset, mesh, Viewport{0, 0, width, height});
     return target.readRgb();
 }
 

@@ -1,11 +1,11 @@
 // offscreen.h — presets to images without a window: what `lab render` and `lab check` run.
 //
-// Owns a Renderer and keeps the last mesh, so rendering many presets of the same model loads
-// it once. Test renders are deterministic: fixed size, no MSAA, no dithering, no UI.
+// Owns a Renderer and a mesh cache, so rendering many presets of the same model loads it once. Test renders are deterministic: fixed size, no MSAA, no dithering, no UI.
 // Needs a current GL context (platform/headless_gl.h).
 #pragma once
 
 #include "core/image.h"
+#include "core/mesh_cache.h"
 #include "core/preset.h"
 #include "render/renderer.h"
 
@@ -29,8 +29,7 @@ public:
 
 private:
     Renderer renderer_;
-    std::unique_ptr<GpuMesh> mesh_;
-    std::string meshKey_; // which model mesh_ holds
+    MeshCache meshes_{1};
 };
 
 } // namespace lab

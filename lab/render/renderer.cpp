@@ -116,14 +116,18 @@ void bindFlatLayout() {
     glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(FlatVertex, centroid)));
 }
 
-// A vertex array over a new buffer of FlatVertex; returns the vertex count.
-GLsizei uploadFlat(GLuint& vao, GLuint& vbo, const std::vector<FlatVertex>& vertices) {
+// A new vertex array, bound, with a new array buffer holding `bytes` bytes of `data`.
+void newVertexArray(GLuint& vao, GLuint& vbo, const void* data, std::size_t bytes) {
     glGenVertexArrays(1, &vao);
     glBindVertexArray(vao);
     glGenBuffers(1, &vbo);
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(FlatVertex)), vertices.data(),
-                 GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW);
+}
+
+// A vertex array over a new buffer of FlatVertex; returns the vertex count.
+GLsizei uploadFlat(GLuint& vao, GLuint& vbo, const std::vector<FlatVertex>& vertices) {
+    newVertexArray(vao, vbo, vertices.data(), vertices.size() * sizeof(FlatVertex));
     bindFlatLayout();
     glBindVertexArray(0);
     return static_cast<GLsizei>(vertices.size());
@@ -154,11 +158,27 @@ struct Renderer::Impl {
     const Program& programFor(Shading shading) const {
         return shading == Shading::Phong ? perPixel : perVertex;
     }
+
+    // GPU copies of the meshes being drawn. A copy whose mesh nobody else holds any more (the
+    // cache evicted it, the caller dropped it) is released on the next lookup.
+    std::vector<std::unique_ptr<GpuMesh>> uploads;
+
+    GpuMesh& upload(const std::shared_ptr<const Mesh>& mesh) {
+        std::erase_if(uploads, [](const std::unique_ptr<GpuMesh>& g) { return g->cpu().use_count() == 1; });
+        for (const std::unique_ptr<GpuMesh>& g : uploads) {
+            if (g->cpu() == mesh) {
+                return *g;
+            }
+        }
+        uploads.push_back(std::make_unique<GpuMesh>(mesh));
+        return *uploads.back();
+    }
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
 
 Renderer::~Renderer() {
+    impl_->uploads.clear();
     impl_->perVertex.reset(0);
     impl_->perPixel.reset(0);
 }
@@ -200,6 +220,11 @@ void Renderer::draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewpor
     glDisable(GL_DEPTH_TEST);
 }
 
+void Renderer::draw(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const Viewport& viewport,
+                    const DrawOptions& options) {
+    draw(preset, impl_->upload(mesh), viewport, options);
+}
+
 void Renderer::drawPoints(const Preset& preset, const std::vector<FlatVertex>& vertices, int width, int height) {
     glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
@@ -231,21 +256,16 @@ void clearFramebuffer(const glm::vec3& color, int width, int height) {
 // GpuMesh
 //----------------------------------------------------------------------------------------
 
-GpuMesh::GpuMesh(Mesh mesh) : mesh_(std::move(mesh)) {
+GpuMesh::GpuMesh(std::shared_ptr<const Mesh> mesh) : mesh_(std::move(mesh)) {
     // Interleaved position + normal; attribute 2 (the shading point) aliases the position.
     std::vector<float> interleaved;
-    interleaved.reserve(mesh_.positions.size() * 6);
-    for (std::size_t i = 0; i < mesh_.positions.size(); ++i) {
-        const glm::vec3& p = mesh_.positions[i];
-        const glm::vec3& n = mesh_.normals[i];
+    interleaved.reserve(mesh_->positions.size() * 6);
+    for (std::size_t i = 0; i < mesh_->positions.size(); ++i) {
+        const glm::vec3& p = mesh_->positions[i];
+        const glm::vec3& n = mesh_->normals[i];
         interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
     }
-    glGenVertexArrays(1, &vao_);
-    glBindVertexArray(vao_);
-    glGenBuffers(1, &vbo_);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)), interleaved.data(),
-                 GL_STATIC_DRAW);
+    newVertexArray(vao_, vbo_, interleaved.data(), interleaved.size() * sizeof(float));
     const GLsizei stride = 6 * sizeof(float);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
@@ -255,8 +275,8 @@ GpuMesh::GpuMesh(Mesh mesh) : mesh_(std::move(mesh)) {
     glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
     glGenBuffers(1, &ebo_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh_.indices.size() * sizeof(std::uint32_t)),
-                 mesh_.indices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh_->indices.size() * sizeof(std::uint32_t)),
+                 mesh_->indices.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
 }
 
@@ -272,13 +292,13 @@ GpuMesh::~GpuMesh() {
 
 void GpuMesh::drawSmooth() const {
     glBindVertexArray(vao_);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh_.indices.size()), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh_->indices.size()), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
 }
 
 void GpuMesh::drawFlat() {
     if (!flatVao_) {
-        flatCount_ = uploadFlat(flatVao_, flatVbo_, expandFlat(mesh_));
+        flatCount_ = uploadFlat(flatVao_, flatVbo_, expandFlat(*mesh_));
     }
     glBindVertexArray(flatVao_);
     glDrawArrays(GL_TRIANGLES, 0, flatCount_);

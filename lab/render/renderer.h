@@ -1,7 +1,8 @@
 // renderer.h — draws a Preset with the lab's shaders. GL only: no windows, no ImGui.
 //
 // The renderer owns the GL programs (one per evaluation site: per vertex for flat and Gouraud,
-// per pixel for Phong) and the GPU copies of the current mesh. draw() reads the Preset and
+// per pixel for Phong) and the GPU copies of the meshes it draws: one per mesh, kept exactly as
+// long as someone else (core/mesh_cache.h, a caller) still holds that mesh. draw() reads the Preset and
 // writes into whatever framebuffer is bound; it never changes the Preset.
 // It does not create GL contexts (lab/platform) or load files (lab/core).
 #pragma once
@@ -18,21 +19,20 @@
 namespace lab {
 
 // A mesh on the GPU: the indexed buffers for smooth shading, and the de-indexed copy for flat
-// shading, built the first time flat shading draws it. Keeps the CPU mesh (the probe and the
-// flat copy need it).
+// shading, built the first time flat shading draws it. Shares the CPU mesh (the flat copy needs it).
 class GpuMesh {
 public:
-    explicit GpuMesh(Mesh mesh);
+    explicit GpuMesh(std::shared_ptr<const Mesh> mesh);
     ~GpuMesh();
     GpuMesh(const GpuMesh&) = delete;
     GpuMesh& operator=(const GpuMesh&) = delete;
 
-    const Mesh& cpu() const { return mesh_; }
+    const std::shared_ptr<const Mesh>& cpu() const { return mesh_; }
     void drawSmooth() const;
     void drawFlat();
 
 private:
-    Mesh mesh_;
+    std::shared_ptr<const Mesh> mesh_;
     GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
     GLuint flatVao_ = 0, flatVbo_ = 0;
     GLsizei flatCount_ = 0;
@@ -47,12 +47,11 @@ struct DrawOptions {
     bool showNormals = false; // colour = N * 0.5 + 0.5 instead of the lighting
 };
 
+// Owns the GL programs and the GPU copies of meshes (not copyable: impl_ is unique).
 class Renderer {
 public:
     Renderer();
     ~Renderer();
-    Renderer(const Renderer&) = delete;
-    Renderer& operator=(const Renderer&) = delete;
 
     // Compiles the built-in shaders. Needs a current GL ES 3.0 context.
     bool init(Diagnostics& diagnostics);
@@ -64,6 +63,9 @@ public:
     // Clears the viewport to the background and draws the mesh with the preset's shading,
     // transforms and lights into the bound framebuffer. Aspect = viewport width / height.
     void draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewport, const DrawOptions& options = {});
+    // The same with the renderer's own GPU copy of `mesh`, uploaded on first use.
+    void draw(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const Viewport& viewport,
+              const DrawOptions& options = {});
 
     // Draws `vertices` as single-pixel points with the preset's shading, transforms and
     // lights (no clear). The CPU–GPU parity test places probes with it.

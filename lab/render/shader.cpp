@@ -63,6 +63,18 @@ void readableLog(const std::string& log, std::string_view bodyName, Diagnostics&
     }
 }
 
+// The info log of a shader or a program (`getiv`, `getLog`: glGetShaderiv/glGetShaderInfoLog or
+// the program versions), without its terminating NUL.
+template <typename GetIv, typename GetLog>
+std::string infoLog(GLuint object, GetIv getiv, GetLog getLog) {
+    GLint length = 0;
+    getiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    getLog(object, length, nullptr, log.data());
+    log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+    return log;
+}
+
 GLuint compile(GLenum type, const std::string& source, std::string_view bodyName, Diagnostics& out) {
     GLuint shader = glCreateShader(type);
     const char* text = source.c_str();
@@ -71,13 +83,8 @@ GLuint compile(GLenum type, const std::string& source, std::string_view bodyName
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        GLint length = 0;
-        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-        std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-        glGetShaderInfoLog(shader, length, nullptr, log.data());
-        log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
         std::size_t before = out.size();
-        readableLog(log, bodyName, out);
+        readableLog(infoLog(shader, glGetShaderiv, glGetShaderInfoLog), bodyName, out);
         if (out.size() == before) {
             out.push_back({std::string(bodyName), "", "does not compile (the driver gave no log)"});
         }
@@ -124,12 +131,7 @@ std::optional<GLuint> buildProgram(const StageSources& sources, const std::vecto
     GLint ok = GL_FALSE;
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) {
-        GLint length = 0;
-        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-        std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-        glGetProgramInfoLog(program, length, nullptr, log.data());
-        log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
-        diagnostics.push_back({"program", "", "does not link: " + log});
+        diagnostics.push_back({"program", "", "does not link: " + infoLog(program, glGetProgramiv, glGetProgramInfoLog)});
         glDeleteProgram(program);
         return std::nullopt;
     }

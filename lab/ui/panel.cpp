@@ -1,6 +1,9 @@
 // panel.cpp — the control panel's sections.
 #include "ui/panel.h"
 
+#include "core/enums.h"
+#include "core/lighting.h"
+#include "core/limits.h"
 #include "ui/widgets.h"
 
 #include <glm/glm.hpp>
@@ -11,22 +14,11 @@
 
 namespace lab::ui {
 
-const char* toString(ViewMode mode) {
-    switch (mode) {
-    case ViewMode::Lit: return "Lit (all terms)";
-    case ViewMode::Emissive: return "Emissive only";
-    case ViewMode::Ambient: return "Ambient only";
-    case ViewMode::Diffuse: return "Diffuse only";
-    case ViewMode::Specular: return "Specular only";
-    case ViewMode::Normals: return "Normals as colours";
-    }
-    return "";
-}
-
 namespace {
 
+// A combo over every value of an enumeration (core/enums.h), with one display name each.
 template <typename E, std::size_t N>
-bool enumCombo(const char* label, E& value, const E (&values)[N], const char* const (&names)[N]) {
+bool enumCombo(const char* label, E& value, const std::array<E, N>& values, const char* const (&names)[N]) {
     int current = 0;
     for (std::size_t i = 0; i < N; ++i) {
         if (values[i] == value) {
@@ -41,7 +33,7 @@ bool enumCombo(const char* label, E& value, const E (&values)[N], const char* co
 }
 
 template <typename E, std::size_t N>
-void enumRadios(const char* id, E& value, const E (&values)[N], const char* const (&names)[N]) {
+void enumRadios(const char* id, E& value, const std::array<E, N>& values, const char* const (&names)[N]) {
     ImGui::PushID(id);
     for (std::size_t i = 0; i < N; ++i) {
         if (i > 0) {
@@ -56,77 +48,66 @@ void enumRadios(const char* id, E& value, const E (&values)[N], const char* cons
 }
 
 // Revert, Undo and Redo on one line, each enabled only when it would do something.
-void historyButtons(const PanelModel& model, PanelActions& actions) {
-    auto button = [](const char* label, bool enabled, bool& action) {
-        ImGui::BeginDisabled(!enabled);
-        if (ImGui::Button(label)) {
-            action = true;
-        }
-        ImGui::EndDisabled();
-    };
-    button("Revert", model.dirty, actions.revert);
+void historyButtons(const PanelInfo& info, std::vector<Request>& requests) {
+    commandButton(Command::Revert, requests, info.dirty);
     ImGui::SameLine();
-    button("Undo", model.canUndo, actions.undo);
+    commandButton(Command::Undo, requests, info.canUndo);
     ImGui::SameLine();
-    button("Redo", model.canRedo, actions.redo);
+    commandButton(Command::Redo, requests, info.canRedo);
 }
 
-void browserFilesSection(PanelModel& model, PanelActions& actions) {
-    ImGui::Text("%s%s", model.documentName.c_str(), model.dirty ? "  (modified)" : "");
-    if (ImGui::Button("Download preset")) {
-        actions.download = true;
-    }
+void browserFilesSection(const PanelInfo& info, std::vector<Request>& requests) {
+    commandButton(Command::DownloadPreset, requests);
     mark("file.download");
     ImGui::SameLine();
-    if (ImGui::Button("Open preset...")) {
-        actions.pickFile = true;
-    }
+    commandButton(Command::PickFile, requests);
     mark("file.open");
     ImGui::SameLine();
-    historyButtons(model, actions);
+    historyButtons(info, requests);
     ImGui::TextDisabled("Drop a .json preset or a .glb model on the page.");
 }
 
-void filesSection(PanelModel& model, PanelActions& actions) {
-    if (model.browser) {
-        browserFilesSection(model, actions);
-        return;
-    }
-    ImGui::Text("%s%s", model.documentName.c_str(), model.dirty ? "  (modified)" : "");
-    if (ImGui::Button("Save")) {
-        actions.save = true;
-    }
-    mark("file.save");
-    ImGui::SameLine();
-    historyButtons(model, actions);
-
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - ImGui::GetStyle().FramePadding.x * 2 -
+// A path field with a button after it; Enter in the field or the button sends `command`.
+void pathField(const char* id, const char* hint, std::string& text, Command command, std::vector<Request>& requests) {
+    const char* label = commandRow(command).label;
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize(label).x - ImGui::GetStyle().FramePadding.x * 2 -
                             ImGui::GetStyle().ItemSpacing.x);
-    bool enter = ImGui::InputTextWithHint("##open", "path/to/preset.json", &model.openPath,
-                                          ImGuiInputTextFlags_EnterReturnsTrue);
-    mark("file.open-path");
+    bool enter = ImGui::InputTextWithHint(id, hint, &text, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
-    if ((ImGui::Button("Open") || enter) && !model.openPath.empty()) {
-        actions.openPath = model.openPath;
-    }
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Save as").x - ImGui::GetStyle().FramePadding.x * 2 -
-                            ImGui::GetStyle().ItemSpacing.x);
-    bool enterSave = ImGui::InputTextWithHint("##saveas", "path/to/new.json", &model.saveAsPath,
-                                              ImGuiInputTextFlags_EnterReturnsTrue);
-    mark("file.save-as-path");
-    ImGui::SameLine();
-    if ((ImGui::Button("Save as") || enterSave) && !model.saveAsPath.empty()) {
-        actions.saveAs = model.saveAsPath;
+    if ((ImGui::Button(label) || enter) && !text.empty()) {
+        requests.push_back({command, text});
     }
 }
 
-void presetsSection(PanelModel& model, PanelActions& actions) {
-    float height = std::min(8.0f, static_cast<float>(model.presetFiles.size()) + 0.5f) * ImGui::GetTextLineHeightWithSpacing();
+void filesSection(const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
+    ImGui::Text("%s%s", info.documentName.c_str(), info.dirty ? "  (modified)" : "");
+    if (info.browser) {
+        browserFilesSection(info, requests);
+        return;
+    }
+    if (commandButton(Command::Save, requests)) {
+        requests.back().path = state.saveAsPath; // where an untitled scene goes
+    }
+    mark("file.save");
+    ImGui::SameLine();
+    historyButtons(info, requests);
+    if (state.focusOpenPath) {
+        ImGui::SetKeyboardFocusHere();
+    }
+    pathField("##open", "path/to/preset.json", state.openPath, Command::OpenPath, requests);
+    mark("file.open-path");
+    pathField("##saveas", "path/to/new.json", state.saveAsPath, Command::SaveAs, requests);
+    mark("file.save-as-path");
+}
+
+void presetsSection(const PanelInfo& info, std::vector<Request>& requests) {
+    const std::vector<std::filesystem::path>& files = *info.presetFiles;
+    float height = std::min(8.0f, static_cast<float>(files.size()) + 0.5f) * ImGui::GetTextLineHeightWithSpacing();
     if (ImGui::BeginListBox("##presets", ImVec2(-1, height))) {
-        for (std::size_t i = 0; i < model.presetFiles.size(); ++i) {
-            bool selected = static_cast<int>(i) == model.currentPreset;
-            if (ImGui::Selectable(model.presetFiles[i].stem().string().c_str(), selected)) {
-                actions.openPreset = static_cast<int>(i);
+        for (std::size_t i = 0; i < files.size(); ++i) {
+            bool selected = static_cast<int>(i) == info.currentPreset;
+            if (ImGui::Selectable(files[i].stem().string().c_str(), selected)) {
+                requests.push_back({Command::OpenPresetAt, {}, static_cast<int>(i)});
             }
             if (selected && ImGui::IsWindowAppearing()) {
                 ImGui::SetScrollHereY();
@@ -138,6 +119,14 @@ void presetsSection(PanelModel& model, PanelActions& actions) {
     ImGui::TextDisabled("Left/Right: previous/next preset");
 }
 
+// A float slider over the range `r` allows (typed values too), clamped to what the validator accepts.
+bool limitedSlider(const char* label, float& value, const limits::Range& r, const char* format,
+                   ImGuiSliderFlags flags = ImGuiSliderFlags_None) {
+    bool changed = ImGui::SliderFloat(label, &value, r.sliderMin, r.sliderMax, format, flags);
+    value = limits::clamp(r, value);
+    return changed;
+}
+
 void materialSection(Preset& p) {
     colorEdit("emissive", p.material.emissive);
     mark("material.emissive");
@@ -147,71 +136,57 @@ void materialSection(Preset& p) {
     mark("material.diffuse");
     colorEdit("specular", p.material.specular);
     mark("material.specular");
-    ImGui::SliderFloat("shininess", &p.material.shininess, 1.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic);
+    limitedSlider("shininess", p.material.shininess, limits::kShininess, "%.1f", ImGuiSliderFlags_Logarithmic);
     mark("material.shininess");
-    p.material.shininess = std::max(p.material.shininess, 0.01f);
     helpMarker("The specular exponent n (logarithmic slider). Ctrl+click to type any value > 0.");
 }
 
 void brdfSection(Preset& p) {
-    static const BrdfModel models[] = {BrdfModel::Phong, BrdfModel::BlinnPhong, BrdfModel::CookTorrance};
     static const char* const modelNames[] = {"Phong", "Blinn-Phong", "Cook-Torrance"};
-    enumRadios("brdf", p.brdf, models, modelNames);
+    enumRadios("brdf", p.brdf, kBrdfModels, modelNames);
     if (p.brdf == BrdfModel::Phong) {
         ImGui::TextDisabled("S = max(0, R.V)^n");
     } else if (p.brdf == BrdfModel::BlinnPhong) {
         ImGui::TextDisabled("S = max(0, N.H)^n,  H = normalize(L + V)");
     } else {
         ImGui::TextDisabled("S = D F G / (4 N.V)");
-        static const Distribution distributions[] = {Distribution::Beckmann, Distribution::Gaussian, Distribution::Ggx};
         static const char* const distributionNames[] = {"Beckmann", "Gaussian", "GGX"};
-        enumCombo("D: distribution", p.cookTorrance.distribution, distributions, distributionNames);
+        enumCombo("D: distribution", p.cookTorrance.distribution, kDistributions, distributionNames);
         mark("cook_torrance.distribution");
-        ImGui::SliderFloat("roughness m", &p.cookTorrance.roughness, 0.01f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
-        p.cookTorrance.roughness = std::max(p.cookTorrance.roughness, 1e-3f);
+        limitedSlider("roughness m", p.cookTorrance.roughness, limits::kRoughness, "%.3f", ImGuiSliderFlags_Logarithmic);
         mark("cook_torrance.roughness");
-        static const FresnelMode fresnels[] = {FresnelMode::Schlick, FresnelMode::Full};
         static const char* const fresnelNames[] = {"Schlick", "full (unpolarized)"};
-        enumCombo("F: Fresnel", p.cookTorrance.fresnel, fresnels, fresnelNames);
+        enumCombo("F: Fresnel", p.cookTorrance.fresnel, kFresnelModes, fresnelNames);
         mark("cook_torrance.fresnel");
-        ImGui::SliderFloat("ior", &p.cookTorrance.ior, 1.0f, 3.0f, "%.3f");
-        p.cookTorrance.ior = std::max(p.cookTorrance.ior, 1e-3f);
+        limitedSlider("ior", p.cookTorrance.ior, limits::kIor, "%.3f");
         mark("cook_torrance.ior");
-        float f0 = ((p.cookTorrance.ior - 1) / (p.cookTorrance.ior + 1));
         ImGui::SameLine();
-        ImGui::TextDisabled("F0 = %.3f", f0 * f0);
+        ImGui::TextDisabled("F0 = %.3f", glsl::fresnelF0(p.cookTorrance.ior));
         ImGui::Checkbox("G: geometry term", &p.cookTorrance.geometry);
         mark("cook_torrance.geometry");
     }
 }
 
-void shadingSection(Preset& p, PanelModel& model) {
-    static const Shading shadings[] = {Shading::Flat, Shading::Gouraud, Shading::Phong};
+void shadingSection(Preset& p, ViewSettings& view) {
     static const char* const shadingNames[] = {"flat", "Gouraud", "Phong"};
-    enumRadios("shading", p.shading, shadings, shadingNames);
-    static const NormalMatrixMode modes[] = {NormalMatrixMode::InverseTranspose, NormalMatrixMode::ModelView};
+    enumRadios("shading", p.shading, kShadings, shadingNames);
     static const char* const modeNames[] = {"inverse-transpose (correct)", "model-view (wrong)"};
-    enumCombo("normal matrix", p.normalMatrix, modes, modeNames);
+    enumCombo("normal matrix", p.normalMatrix, kNormalMatrixModes, modeNames);
     mark("normal_matrix");
     ImGui::TextUnformatted("terms");
-    ImGui::SameLine();
-    ImGui::Checkbox("emissive##t", &p.terms.emissive);
-    mark("terms.emissive");
-    ImGui::SameLine();
-    ImGui::Checkbox("ambient##t", &p.terms.ambient);
-    mark("terms.ambient");
-    ImGui::SameLine();
-    ImGui::Checkbox("diffuse##t", &p.terms.diffuse);
-    mark("terms.diffuse");
-    ImGui::SameLine();
-    ImGui::Checkbox("specular##t", &p.terms.specular);
-    mark("terms.specular");
-    static const ViewMode views[] = {ViewMode::Lit,     ViewMode::Emissive, ViewMode::Ambient,
-                                     ViewMode::Diffuse, ViewMode::Specular, ViewMode::Normals};
+    const std::pair<const char*, bool*> terms[] = {{"emissive", &p.terms.emissive},
+                                                   {"ambient", &p.terms.ambient},
+                                                   {"diffuse", &p.terms.diffuse},
+                                                   {"specular", &p.terms.specular}};
+    for (const auto& [name, on] : terms) {
+        ImGui::SameLine();
+        ImGui::Checkbox((std::string(name) + "##t").c_str(), on);
+        mark(std::string("terms.") + name);
+    }
     static const char* const viewNames[] = {toString(ViewMode::Lit),     toString(ViewMode::Emissive),
                                             toString(ViewMode::Ambient), toString(ViewMode::Diffuse),
                                             toString(ViewMode::Specular), toString(ViewMode::Normals)};
-    enumCombo("view (V)", model.viewMode, views, viewNames);
+    enumCombo("view (V)", view.mode, kViewModes, viewNames);
     mark("view_mode");
     helpMarker("Shows one contribution on the model without changing the preset.");
     lightColorEdit("global ambient", p.ambientLight);
@@ -220,25 +195,24 @@ void shadingSection(Preset& p, PanelModel& model) {
     mark("background");
 }
 
-void modelSection(Preset& p, PanelModel& model, PanelActions& actions) {
+void modelSection(Preset& p, const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
     bool builtin = p.model.gltf.empty();
-    static const Builtin builtins[] = {Builtin::Sphere, Builtin::Cube, Builtin::Plane, Builtin::Torus};
     static const char* const builtinNames[] = {"sphere", "cube", "plane", "torus"};
     if (builtin) {
         Builtin before = p.model.builtin;
-        enumCombo("built-in", p.model.builtin, builtins, builtinNames);
+        enumCombo("built-in", p.model.builtin, kBuiltins, builtinNames);
         mark("model.builtin");
         if (p.model.builtin != before) {
             p.model.subdivisions = defaultSubdivisions(p.model.builtin);
         }
-        int lo = p.model.builtin == Builtin::Sphere || p.model.builtin == Builtin::Torus ? 3 : 1;
+        bool round = p.model.builtin == Builtin::Sphere || p.model.builtin == Builtin::Torus;
+        const limits::IntRange& range = round ? limits::kSubdivisionsRound : limits::kSubdivisions;
         const char* label = p.model.builtin == Builtin::Sphere  ? "slices, stacks"
                             : p.model.builtin == Builtin::Torus ? "major, minor"
                                                                 : "grid";
-        ImGui::SliderInt2(label, &p.model.subdivisions.x, lo, 256);
+        ImGui::SliderInt2(label, &p.model.subdivisions.x, range.min, 256);
         mark("model.subdivisions");
-        p.model.subdivisions = glm::clamp(p.model.subdivisions, glm::ivec2(lo, p.model.builtin == Builtin::Sphere ? 2 : lo),
-                                          glm::ivec2(1024));
+        p.model.subdivisions = {limits::clamp(range, p.model.subdivisions.x), limits::clamp(range, p.model.subdivisions.y)};
     } else {
         ImGui::Text("glTF: %s", p.model.gltf.c_str());
         if (ImGui::Button("Use a built-in shape")) {
@@ -246,16 +220,9 @@ void modelSection(Preset& p, PanelModel& model, PanelActions& actions) {
             p.model.subdivisions = defaultSubdivisions(p.model.builtin);
         }
     }
-    if (!model.browser) {
-        ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Load").x - ImGui::GetStyle().FramePadding.x * 2 -
-                                ImGui::GetStyle().ItemSpacing.x);
-        bool enter = ImGui::InputTextWithHint("##model", "model.glb (or drop one on the window)", &model.modelPath,
-                                              ImGuiInputTextFlags_EnterReturnsTrue);
+    if (!info.browser) {
+        pathField("##model", "model.glb (or drop one on the window)", state.modelPath, Command::LoadModel, requests);
         mark("model.path");
-        ImGui::SameLine();
-        if ((ImGui::Button("Load") || enter) && !model.modelPath.empty()) {
-            actions.loadModel = model.modelPath;
-        }
     }
     glm::vec3 scale = p.model.scale;
     if (dragVec3("scale", scale, 0.01f, -10.0f, 10.0f)) {
@@ -285,45 +252,51 @@ glm::vec3 fromAngles(const glm::vec2& a) {
     return {std::sin(t) * std::sin(f), std::cos(t), std::sin(t) * std::cos(f)};
 }
 
-void lightsSection(Preset& p, PanelModel& model) {
-    if (ImGui::Button("Add light") && p.lights.size() < kMaxLights) {
-        p.lights.push_back(LightDesc{});
-        model.selectedLight = static_cast<int>(p.lights.size()) - 1;
-    }
-    mark("lights.add");
-    ImGui::SameLine();
-    ImGui::BeginDisabled(p.lights.empty());
-    if (ImGui::Button("Remove") && !p.lights.empty()) {
-        p.lights.erase(p.lights.begin() + std::clamp(model.selectedLight, 0, static_cast<int>(p.lights.size()) - 1));
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::TextDisabled("%zu of %d", p.lights.size(), kMaxLights);
-    if (p.lights.empty()) {
-        ImGui::TextDisabled("No lights: only emissive and global ambient remain.");
-        return;
-    }
-    model.selectedLight = std::clamp(model.selectedLight, 0, static_cast<int>(p.lights.size()) - 1);
-    if (ImGui::BeginTabBar("lights")) {
-        for (std::size_t i = 0; i < p.lights.size(); ++i) {
-            std::string tab = "Light " + std::to_string(i + 1) + (p.lights[i].enabled ? "" : " (off)");
-            if (ImGui::BeginTabItem((tab + "###light" + std::to_string(i)).c_str())) {
-                model.selectedLight = static_cast<int>(i);
-                ImGui::EndTabItem();
+// Attenuation with one-click choices, and the spot cone.
+void lightFalloffEditor(LightDesc& l, const std::string& prefix) {
+    if (l.type != LightType::Directional) {
+        glm::vec3 c = l.attenuation;
+        const limits::Range& r = limits::kAttenuation;
+        if (ImGui::DragFloat3("c0, c1, c2", &c.x, 0.005f, r.sliderMin, r.sliderMax, "%.3f")) {
+            c = {limits::clamp(r, c.x), limits::clamp(r, c.y), limits::clamp(r, c.z)};
+            if (c != glm::vec3(0.0f)) { // all three zero is not a light
+                l.attenuation = c;
             }
         }
-        ImGui::EndTabBar();
+        mark(prefix + "attenuation");
+        helpMarker("Att = min(1, 1 / (c0 + c1 d + c2 d^2))");
+        struct Choice {
+            const char* name;
+            glm::vec3 c;
+        };
+        static const Choice choices[] = {
+            {"none", {1, 0, 0}}, {"1/d", {0, 1, 0}}, {"1/d^2", {0, 0, 1}}, {"OpenGL", {1, 0.35f, 0.44f}}};
+        for (std::size_t i = 0; i < std::size(choices); ++i) {
+            if (i > 0) {
+                ImGui::SameLine();
+            }
+            if (ImGui::SmallButton(choices[i].name)) {
+                l.attenuation = choices[i].c;
+            }
+            mark(prefix + "attenuation." + choices[i].name);
+        }
     }
-    LightDesc& l = p.lights[static_cast<std::size_t>(model.selectedLight)];
-    std::string prefix = "lights[" + std::to_string(model.selectedLight) + "].";
-    ImGui::PushID(model.selectedLight);
+    if (l.type == LightType::Spot) {
+        limitedSlider("cut-off (deg)", l.cutoffDeg, limits::kCutoffDeg, "%.1f");
+        mark(prefix + "cutoff");
+        limitedSlider("exponent", l.exponent, limits::kSpotExponent, "%.1f");
+        mark(prefix + "exponent");
+    }
+}
+
+// Position, direction, colours of one light; `prefix` names its widgets ("lights[0].").
+void lightEditor(LightDesc& l, const std::string& prefix) {
     ImGui::Checkbox("enabled", &l.enabled);
     mark(prefix + "enabled");
-    static const LightType types[] = {LightType::Point, LightType::Directional, LightType::Spot};
     static const char* const typeNames[] = {"point", "directional", "spot"};
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
-    enumCombo("type", l.type, types, typeNames);
+    enumCombo("type", l.type, kLightTypes, typeNames);
     mark(prefix + "type");
     if (l.type != LightType::Directional) {
         dragVec3("position", l.position, 0.02f);
@@ -348,49 +321,48 @@ void lightsSection(Preset& p, PanelModel& model) {
     mark(prefix + "diffuse");
     lightColorEdit("specular", l.specular);
     mark(prefix + "specular");
-    if (l.type != LightType::Directional) {
-        glm::vec3 c = l.attenuation;
-        if (ImGui::DragFloat3("c0, c1, c2", &c.x, 0.005f, 0.0f, 10.0f, "%.3f")) {
-            c = glm::max(c, glm::vec3(0.0f));
-            if (c != glm::vec3(0.0f)) { // all three zero is not a light
-                l.attenuation = c;
+    lightFalloffEditor(l, prefix);
+}
+
+void lightsSection(Preset& p, PanelState& state) {
+    if (ImGui::Button("Add light") && p.lights.size() < static_cast<std::size_t>(limits::kMaxLights)) {
+        p.lights.push_back(LightDesc{});
+        state.selectedLight = static_cast<int>(p.lights.size()) - 1;
+    }
+    mark("lights.add");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(p.lights.empty());
+    if (ImGui::Button("Remove") && !p.lights.empty()) {
+        p.lights.erase(p.lights.begin() + std::clamp(state.selectedLight, 0, static_cast<int>(p.lights.size()) - 1));
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextDisabled("%zu of %d", p.lights.size(), limits::kMaxLights);
+    if (p.lights.empty()) {
+        ImGui::TextDisabled("No lights: only emissive and global ambient remain.");
+        return;
+    }
+    state.selectedLight = std::clamp(state.selectedLight, 0, static_cast<int>(p.lights.size()) - 1);
+    if (ImGui::BeginTabBar("lights")) {
+        for (std::size_t i = 0; i < p.lights.size(); ++i) {
+            std::string tab = "Light " + std::to_string(i + 1) + (p.lights[i].enabled ? "" : " (off)");
+            if (ImGui::BeginTabItem((tab + "###light" + std::to_string(i)).c_str())) {
+                state.selectedLight = static_cast<int>(i);
+                ImGui::EndTabItem();
             }
         }
-        mark(prefix + "attenuation");
-        helpMarker("Att = min(1, 1 / (c0 + c1 d + c2 d^2))");
-        struct Choice {
-            const char* name;
-            glm::vec3 c;
-        };
-        static const Choice choices[] = {
-            {"none", {1, 0, 0}}, {"1/d", {0, 1, 0}}, {"1/d^2", {0, 0, 1}}, {"OpenGL", {1, 0.35f, 0.44f}}};
-        for (std::size_t i = 0; i < std::size(choices); ++i) {
-            if (i > 0) {
-                ImGui::SameLine();
-            }
-            if (ImGui::SmallButton(choices[i].name)) {
-                l.attenuation = choices[i].c;
-            }
-            mark(prefix + "attenuation." + choices[i].name);
-        }
+        ImGui::EndTabBar();
     }
-    if (l.type == LightType::Spot) {
-        ImGui::SliderFloat("cut-off (deg)", &l.cutoffDeg, 0.0f, 90.0f, "%.1f");
-        mark(prefix + "cutoff");
-        ImGui::SliderFloat("exponent", &l.exponent, 0.0f, 128.0f, "%.1f");
-        l.exponent = std::max(l.exponent, 0.0f);
-        mark(prefix + "exponent");
-    }
+    ImGui::PushID(state.selectedLight);
+    lightEditor(p.lights[static_cast<std::size_t>(state.selectedLight)], "lights[" + std::to_string(state.selectedLight) + "].");
     ImGui::PopID();
 }
 
-void cameraSection(Preset& p, PanelActions& actions) {
+void cameraSection(Preset& p, std::vector<Request>& requests) {
     dragVec3("eye", p.camera.eye, 0.02f);
     dragVec3("target", p.camera.target, 0.02f);
-    ImGui::SliderFloat("fovy (deg)", &p.camera.fovyDeg, 5.0f, 120.0f, "%.1f");
-    if (ImGui::Button("Reset camera (R)")) {
-        actions.resetCamera = true;
-    }
+    limitedSlider("fovy (deg)", p.camera.fovyDeg, limits::kFovyDeg, "%.1f");
+    commandButton(Command::ResetCamera, requests);
     ImGui::TextDisabled("Left drag: orbit  Right drag: pan  Wheel: zoom");
     // Keep the camera valid whatever was dragged.
     if (glm::length(p.camera.eye - p.camera.target) < 1e-3f) {
@@ -398,42 +370,47 @@ void cameraSection(Preset& p, PanelActions& actions) {
     }
 }
 
-} // namespace
-
-void controlPanel(Preset& preset, PanelModel& model, PanelActions& actions) {
-    if (ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) {
-        filesSection(model, actions);
-    }
-    if (!model.presetFiles.empty() && ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) {
-        presetsSection(model, actions);
-    }
-    if (ImGui::Button(model.compare ? "Compare: on (C)" : "Compare: off (C)")) {
-        actions.toggleCompare = true;
+// Compare mode's switch, and which set the panel edits.
+void compareRow(ViewSettings& view, const PanelInfo& info, std::vector<Request>& requests) {
+    std::string label = std::string("Compare: ") + (view.compare ? "on" : "off") + " (C)###compare";
+    if (ImGui::Button(label.c_str())) {
+        requests.push_back({Command::ToggleCompare});
     }
     mark("compare");
-    if (model.compare) {
+    if (view.compare) {
         ImGui::SameLine();
-        if (ImGui::RadioButton(model.compareStacked ? "edit A (top)" : "edit A (left)", !model.editingB)) {
-            model.editingB = false;
+        if (ImGui::RadioButton(info.compareStacked ? "edit A (top)" : "edit A (left)", !view.editingB)) {
+            view.editingB = false;
         }
         ImGui::SameLine();
-        if (ImGui::RadioButton(model.compareStacked ? "edit B (bottom)" : "edit B (right)", model.editingB)) {
-            model.editingB = true;
+        if (ImGui::RadioButton(info.compareStacked ? "edit B (bottom)" : "edit B (right)", view.editingB)) {
+            view.editingB = true;
         }
         mark("compare.edit-b");
     }
-    if (ImGui::Button("Shader editor")) {
-        actions.openShaderEditor = true;
-    }
+}
+
+void toolButtons(std::vector<Request>& requests) {
+    commandButton(Command::ToggleShaderEditor, requests);
     ImGui::SameLine();
-    if (ImGui::Button("Screenshot")) {
-        actions.screenshot = true;
-    }
+    commandButton(Command::Screenshot, requests);
     mark("screenshot");
     ImGui::SameLine();
-    if (ImGui::Button("?")) {
-        actions.showHelp = true;
+    commandButton(Command::ToggleHelp, requests);
+}
+
+} // namespace
+
+void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, PanelState& state,
+                  std::vector<Request>& requests) {
+    if (ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) {
+        filesSection(info, state, requests);
     }
+    if (info.presetFiles && !info.presetFiles->empty() && ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) {
+        presetsSection(info, requests);
+    }
+    compareRow(view, info, requests);
+    toolButtons(requests);
     if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
         materialSection(preset);
     }
@@ -441,16 +418,16 @@ void controlPanel(Preset& preset, PanelModel& model, PanelActions& actions) {
         brdfSection(preset);
     }
     if (ImGui::CollapsingHeader("Shading and terms", ImGuiTreeNodeFlags_DefaultOpen)) {
-        shadingSection(preset, model);
+        shadingSection(preset, view);
     }
     if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) {
-        lightsSection(preset, model);
+        lightsSection(preset, state);
     }
     if (ImGui::CollapsingHeader("Model")) {
-        modelSection(preset, model, actions);
+        modelSection(preset, info, state, requests);
     }
     if (ImGui::CollapsingHeader("Camera")) {
-        cameraSection(preset, actions);
+        cameraSection(preset, requests);
     }
 }
 

@@ -3,6 +3,8 @@
 
 #include "ui/widgets.h"
 
+#include "core/limits.h"
+
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
 
@@ -89,112 +91,132 @@ Canvas beginCanvas(const char* id, const char* name, float aspect) {
     return c;
 }
 
-// Lobes and arrows for the preset's incident angle.
-void lobePlot(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
-    const Canvas canvas = beginCanvas("lobe", "plot.lobe", 0.62f);
-    // Plain locals, not structured bindings: clang 14 (the browser build) cannot capture those.
-    const ImVec2 corner = canvas.corner;
-    const float width = canvas.width, height = canvas.height;
-    ImDrawList* dl = canvas.dl;
-    Frame f{ImVec2(corner.x + width * 0.5f, corner.y + height - 14.0f), std::min(width * 0.46f, height - 34.0f)};
+// The lobes of one frame: A's samples (and B's), all scaled by the same maximum.
+struct Lobes {
+    float incident;
+    std::vector<PlotSample> a, b; // b empty without a compare set
+    float maxI;
+};
 
-    float incident = a.plotIncidentDeg;
-    std::vector<PlotSample> samples = reflectedIntensity(a, incident);
-    std::vector<std::vector<PlotSample>> sets{samples};
-    std::vector<PlotSample> samplesB;
-    if (b) {
-        samplesB = reflectedIntensity(*b, incident);
-        sets.push_back(samplesB);
+// x: θo from -90 to 90; y: intensity (radius function), 0 at the bottom.
+void cartesianLobes(const Canvas& c, const Lobes& lobes, const PlotSettings& s) {
+    ImDrawList* dl = c.dl;
+    ImVec2 lo(c.corner.x + 30, c.corner.y + c.height - 18), hi(c.corner.x + c.width - 10, c.corner.y + 10);
+    auto at = [&](float deg, float r) { return ImVec2(lo.x + (deg + 90.0f) / 180.0f * (hi.x - lo.x), lo.y + r * (hi.y - lo.y)); };
+    for (int deg = -90; deg <= 90; deg += 30) {
+        dl->AddLine(at(static_cast<float>(deg), 0), at(static_cast<float>(deg), 1), kGrid);
+        char t[8];
+        std::snprintf(t, sizeof t, "%d", deg);
+        dl->AddText(ImVec2(at(static_cast<float>(deg), 0).x - 8, lo.y + 2), kAxis, t);
     }
-    float maxI = maxTotal(sets);
+    dl->AddLine(at(-90, 0), at(90, 0), kAxis, 2.0f);
+    auto curve = [&](const std::vector<PlotSample>& set, PlotComponent component, ImU32 color) {
+        std::vector<ImVec2> pts;
+        for (const PlotSample& x : set) {
+            pts.push_back(at(x.thetaOutDeg, plotRadius(componentOf(x, component), lobes.maxI, s.scale)));
+        }
+        dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), color, 0, 2.0f);
+    };
+    curve(lobes.a, PlotComponent::Diffuse, kDiffuse);
+    curve(lobes.a, PlotComponent::Specular, kSpecular);
+    curve(lobes.a, PlotComponent::Total, kTotal);
+    if (!lobes.b.empty()) {
+        curve(lobes.b, PlotComponent::Total, kCompare);
+    }
+    dl->AddLine(at(lobes.incident, 0), at(lobes.incident, 1), IM_COL32(120, 220, 120, 160)); // the mirror angle
+}
 
-    if (s.cartesian) {
-        // x: θo from -90 to 90; y: intensity (radius function), 0 at the bottom.
-        ImVec2 lo(corner.x + 30, corner.y + height - 18), hi(corner.x + width - 10, corner.y + 10);
-        auto at = [&](float deg, float r) { return ImVec2(lo.x + (deg + 90.0f) / 180.0f * (hi.x - lo.x), lo.y + r * (hi.y - lo.y)); };
-        for (int deg = -90; deg <= 90; deg += 30) {
-            dl->AddLine(at(static_cast<float>(deg), 0), at(static_cast<float>(deg), 1), kGrid);
-            char t[8];
-            std::snprintf(t, sizeof t, "%d", deg);
-            dl->AddText(ImVec2(at(static_cast<float>(deg), 0).x - 8, lo.y + 2), kAxis, t);
-        }
-        dl->AddLine(at(-90, 0), at(90, 0), kAxis, 2.0f);
-        auto curve = [&](const std::vector<PlotSample>& set, PlotComponent c, ImU32 color) {
-            std::vector<ImVec2> pts;
-            for (const PlotSample& x : set) {
-                pts.push_back(at(x.thetaOutDeg, plotRadius(componentOf(x, c), maxI, s.scale)));
-            }
-            dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), color, 0, 2.0f);
-        };
-        curve(samples, PlotComponent::Diffuse, kDiffuse);
-        curve(samples, PlotComponent::Specular, kSpecular);
-        curve(samples, PlotComponent::Total, kTotal);
-        if (b) {
-            curve(samplesB, PlotComponent::Total, kCompare);
-        }
-        dl->AddLine(at(incident, 0), at(incident, 1), IM_COL32(120, 220, 120, 160)); // the mirror angle
+// The probe's vectors in its own plane of incidence: N up, L to the left.
+void probeArrows(ImDrawList* dl, const Frame& f, const ProbeResult& probe, BrdfModel brdf) {
+    const ProbeLight& pl = probe.lights.front();
+    glm::vec3 side = pl.L - pl.NoL * probe.N;
+    glm::vec3 ex = glm::length(side) > 1e-5f ? -glm::normalize(side) : glm::vec3(1, 0, 0);
+    auto project = [&](const glm::vec3& v) { return glm::vec2(glm::dot(v, ex), glm::dot(v, probe.N)); };
+    ImU32 c = IM_COL32(255, 255, 255, 150);
+    arrow(dl, f, project(pl.L), 0.6f, c, "probe L", 1.0f);
+    arrow(dl, f, project(probe.V), 0.6f, c, "probe V", 1.0f);
+    bool phong = brdf == BrdfModel::Phong;
+    arrow(dl, f, project(phong ? pl.R : pl.H), 0.6f, c, phong ? "probe R" : "probe H", 1.0f);
+}
+
+// Dragging L (the preset's incident angle) or V (the reading direction) by its tip.
+void dragArrows(const Frame& f, glm::vec2 L, glm::vec2 V, Preset& a, PlotSettings& s) {
+    if (ImGui::IsItemActivated()) {
+        glm::vec2 m = f.from(ImGui::GetIO().MousePos);
+        s.dragging = glm::distance(m, L) < glm::distance(m, V) ? 1 : 2;
+    }
+    if (!ImGui::IsItemActive() || !s.dragging) {
+        s.dragging = 0;
+        return;
+    }
+    glm::vec2 m = f.from(ImGui::GetIO().MousePos);
+    float deg = glm::degrees(std::atan2(m.x, std::max(m.y, 0.0f)));
+    if (s.dragging == 1) {
+        a.plotIncidentDeg = limits::clamp(limits::kPlotIncidentDeg, std::round(-deg));
     } else {
-        polarGrid(dl, f, s.scale);
-        polyline(dl, f, lobePoints(samples, PlotComponent::Diffuse, maxI, s.scale), kDiffuse, 2.0f);
-        polyline(dl, f, lobePoints(samples, PlotComponent::Specular, maxI, s.scale), kSpecular, 2.0f);
-        polyline(dl, f, lobePoints(samples, PlotComponent::Total, maxI, s.scale), kTotal, 2.5f);
-        if (b) {
-            polyline(dl, f, lobePoints(samplesB, PlotComponent::Total, maxI, s.scale), kCompare, 2.0f);
-        }
-        glm::vec2 L = dirFromDeg(incident, -1.0f), R = dirFromDeg(incident, 1.0f), V = dirFromDeg(s.viewerDeg, 1.0f);
-        arrow(dl, f, {0, 1}, 1.0f, kAxis, "N");
-        arrow(dl, f, L, 1.0f, IM_COL32(255, 230, 90, 255), "L", 2.5f);
-        arrow(dl, f, R, 0.85f, IM_COL32(120, 220, 120, 255), "R");
-        arrow(dl, f, V, 0.95f, IM_COL32(90, 220, 230, 255), "V");
-        if (a.brdf != BrdfModel::Phong) {
-            arrow(dl, f, glm::normalize(L + V), 0.7f, IM_COL32(255, 100, 100, 255), "H");
-        }
-        if (probe && !probe->lights.empty()) {
-            // The probe's vectors in its own plane of incidence: N up, L to the left.
-            const ProbeLight& pl = probe->lights.front();
-            glm::vec3 side = pl.L - pl.NoL * probe->N;
-            glm::vec3 ex = glm::length(side) > 1e-5f ? -glm::normalize(side) : glm::vec3(1, 0, 0);
-            auto project = [&](const glm::vec3& v) { return glm::vec2(glm::dot(v, ex), glm::dot(v, probe->N)); };
-            ImU32 c = IM_COL32(255, 255, 255, 150);
-            arrow(dl, f, project(pl.L), 0.6f, c, "probe L", 1.0f);
-            arrow(dl, f, project(probe->V), 0.6f, c, "probe V", 1.0f);
-            arrow(dl, f, project(a.brdf == BrdfModel::Phong ? pl.R : pl.H), 0.6f, c,
-                  a.brdf == BrdfModel::Phong ? "probe R" : "probe H", 1.0f);
-        }
-        // Dragging L or V by its tip.
-        if (ImGui::IsItemActivated()) {
-            glm::vec2 m = f.from(ImGui::GetIO().MousePos);
-            s.dragging = glm::distance(m, L) < glm::distance(m, V) ? 1 : 2;
-        }
-        if (ImGui::IsItemActive() && s.dragging) {
-            glm::vec2 m = f.from(ImGui::GetIO().MousePos);
-            float deg = glm::degrees(std::atan2(m.x, std::max(m.y, 0.0f)));
-            if (s.dragging == 1) {
-                a.plotIncidentDeg = std::round(glm::clamp(-deg, -90.0f, 90.0f));
-            } else {
-                s.viewerDeg = std::round(glm::clamp(deg, -90.0f, 90.0f));
-            }
-        } else {
-            s.dragging = 0;
-        }
+        s.viewerDeg = std::round(glm::clamp(deg, -90.0f, 90.0f));
     }
-    // The legend, and the values towards V.
-    const PlotSample& atV = samples[static_cast<std::size_t>(std::lround(glm::clamp(s.viewerDeg, -90.0f, 90.0f)) + 90)];
-    ImVec2 t(corner.x + 6, corner.y + 4);
+}
+
+void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s, const ProbeResult* probe) {
+    ImDrawList* dl = c.dl;
+    Frame f{ImVec2(c.corner.x + c.width * 0.5f, c.corner.y + c.height - 14.0f), std::min(c.width * 0.46f, c.height - 34.0f)};
+    polarGrid(dl, f, s.scale);
+    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Diffuse, lobes.maxI, s.scale), kDiffuse, 2.0f);
+    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Specular, lobes.maxI, s.scale), kSpecular, 2.0f);
+    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Total, lobes.maxI, s.scale), kTotal, 2.5f);
+    if (!lobes.b.empty()) {
+        polyline(dl, f, lobePoints(lobes.b, PlotComponent::Total, lobes.maxI, s.scale), kCompare, 2.0f);
+    }
+    glm::vec2 L = dirFromDeg(lobes.incident, -1.0f), R = dirFromDeg(lobes.incident, 1.0f), V = dirFromDeg(s.viewerDeg, 1.0f);
+    arrow(dl, f, {0, 1}, 1.0f, kAxis, "N");
+    arrow(dl, f, L, 1.0f, IM_COL32(255, 230, 90, 255), "L", 2.5f);
+    arrow(dl, f, R, 0.85f, IM_COL32(120, 220, 120, 255), "R");
+    arrow(dl, f, V, 0.95f, IM_COL32(90, 220, 230, 255), "V");
+    if (a.brdf != BrdfModel::Phong) {
+        arrow(dl, f, glm::normalize(L + V), 0.7f, IM_COL32(255, 100, 100, 255), "H");
+    }
+    if (probe && !probe->lights.empty()) {
+        probeArrows(dl, f, *probe, a.brdf);
+    }
+    dragArrows(f, L, V, a, s);
+}
+
+// The legend, and the values towards V.
+void lobeLegend(const Canvas& c, const Lobes& lobes, const PlotSettings& s) {
+    const PlotSample& atV = lobes.a[static_cast<std::size_t>(std::lround(glm::clamp(s.viewerDeg, -90.0f, 90.0f)) + 90)];
+    ImVec2 t(c.corner.x + 6, c.corner.y + 4);
     float line = ImGui::GetTextLineHeight();
-    dl->AddText(t, kDiffuse, "diffuse");
-    dl->AddText(ImVec2(t.x, t.y + line), kSpecular, "specular");
-    dl->AddText(ImVec2(t.x, t.y + 2 * line), kTotal, "total");
-    if (b) {
-        dl->AddText(ImVec2(t.x, t.y + 3 * line), kCompare, "total (B)");
+    c.dl->AddText(t, kDiffuse, "diffuse");
+    c.dl->AddText(ImVec2(t.x, t.y + line), kSpecular, "specular");
+    c.dl->AddText(ImVec2(t.x, t.y + 2 * line), kTotal, "total");
+    if (!lobes.b.empty()) {
+        c.dl->AddText(ImVec2(t.x, t.y + 3 * line), kCompare, "total (B)");
     }
     char values[96];
     std::snprintf(values, sizeof values, "at V %+.0f: %.3f + %.3f = %.3f", s.viewerDeg, atV.diffuse, atV.specular, atV.total);
     ImVec2 size = ImGui::CalcTextSize(values);
-    dl->AddText(ImVec2(corner.x + width - size.x - 6, corner.y + 4), kTotal, values);
+    c.dl->AddText(ImVec2(c.corner.x + c.width - size.x - 6, c.corner.y + 4), kTotal, values);
+}
 
+// Lobes and arrows for the preset's incident angle.
+void lobePlot(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
+    const Canvas canvas = beginCanvas("lobe", "plot.lobe", 0.62f);
+    Lobes lobes{a.plotIncidentDeg, reflectedIntensity(a, a.plotIncidentDeg), {}, 0.0f};
+    if (b) {
+        lobes.b = reflectedIntensity(*b, lobes.incident);
+    }
+    lobes.maxI = b ? maxTotal({lobes.a, lobes.b}) : maxTotal({lobes.a});
+    if (s.cartesian) {
+        cartesianLobes(canvas, lobes, s);
+    } else {
+        polarLobes(canvas, lobes, a, s, probe);
+    }
+    lobeLegend(canvas, lobes, s);
+    const limits::Range& incident = limits::kPlotIncidentDeg;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
-    ImGui::SliderFloat("incident", &a.plotIncidentDeg, -90.0f, 90.0f, "%.0f deg");
+    ImGui::SliderFloat("incident", &a.plotIncidentDeg, incident.sliderMin, incident.sliderMax, "%.0f deg");
+    a.plotIncidentDeg = limits::clamp(incident, a.plotIncidentDeg);
     mark("plot.incident");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);

@@ -7,32 +7,6 @@
 
 namespace lab::ui {
 
-const std::vector<Shortcut>& shortcuts() {
-    static const std::vector<Shortcut> list = {
-        {"F1", "show or hide this help"},
-        {"Left / Right", "previous / next preset in the list"},
-        {"1 / 2 / 3", "flat / Gouraud / Phong shading"},
-        {"B", "next BRDF: Phong, Blinn-Phong, Cook-Torrance"},
-        {"M", "normal matrix: correct / wrong"},
-        {"V", "next per-term view: lit, emissive, ambient, diffuse, specular, normals"},
-        {"C", "compare mode: the view split in two"},
-        {"Tab", "hide or show the panels"},
-        {"P", "presenter mode (large UI)"},
-        {"Ctrl + = / Ctrl + -", "presenter scale up / down (1.5x to 2.5x)"},
-        {"F11", "fullscreen"},
-        {"R", "reset the camera to the preset's"},
-        {"F12", "screenshot of the 3D view to PNG"},
-        {"Ctrl+Z / Ctrl+Y", "undo / redo (Ctrl+Shift+Z redoes too)"},
-        {"Ctrl+S / Ctrl+Shift+S", "save / save as (the path field)"},
-        {"Ctrl+O", "open a preset by path (the path field)"},
-        {"Ctrl+E", "shader editor; Ctrl+Enter compiles"},
-        {"Left drag / Right drag / Wheel", "orbit / pan / zoom; drag a light marker to move the light"},
-        {"Click", "probe the pixel under the mouse"},
-        {"Drop a file", ".json opens a preset, .gltf/.glb loads a model"},
-    };
-    return list;
-}
-
 void helpWindow(bool& open) {
     if (!open) {
         return;
@@ -42,12 +16,12 @@ void helpWindow(bool& open) {
     ImGui::SetNextWindowBgAlpha(0.92f);
     if (ImGui::Begin("Keyboard shortcuts (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
         if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-            for (const Shortcut& s : shortcuts()) {
+            for (const HelpRow& row : helpRows()) {
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(s.keys);
+                ImGui::TextUnformatted(row.keys.c_str());
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(s.action);
+                ImGui::TextUnformatted(row.help.c_str());
             }
             ImGui::EndTable();
         }
@@ -105,20 +79,16 @@ void probeWindow(const ProbeResult& probe, const Preset& preset, bool& open, flo
     ImGui::End();
 }
 
-void shaderEditorWindow(ShaderEditorState& s, ShaderEditorActions& actions, std::string_view lightingSource) {
+void shaderEditorWindow(ShaderEditorState& s, std::vector<Request>& requests, std::string_view lightingSource) {
     if (!s.open) {
         return;
     }
     ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 46, ImGui::GetFontSize() * 36), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Shader editor", &s.open)) {
-        if (ImGui::Button("Compile (Ctrl+Enter)")) {
-            actions.compile = true;
-        }
+        commandButton(Command::CompileShaders, requests);
         mark("shader.compile");
         ImGui::SameLine();
-        if (ImGui::Button("Revert to built-in")) {
-            actions.revert = true;
-        }
+        commandButton(Command::RevertShaders, requests);
         ImGui::SameLine();
         ImGui::TextDisabled(s.customActive ? "running: edited shaders" : "running: built-in shaders");
         ImVec2 editor(-1, -ImGui::GetTextLineHeightWithSpacing() * (s.log.empty() ? 1.0f : 7.0f));
@@ -139,9 +109,6 @@ void shaderEditorWindow(ShaderEditorState& s, ShaderEditorActions& actions, std:
                 ImGui::EndTabItem();
             }
             ImGui::EndTabBar();
-        }
-        if (ImGui::GetIO().KeyCtrl && (ImGui::IsKeyPressed(keys::Enter) || ImGui::IsKeyPressed(keys::KeypadEnter))) {
-            actions.compile = true;
         }
         if (!s.log.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, s.lastCompileFailed ? IM_COL32(255, 120, 110, 255) : IM_COL32(140, 220, 140, 255));

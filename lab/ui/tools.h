@@ -1,7 +1,8 @@
 // tools.h — the lab's smaller windows: pixel probe, shader editor, help overlay.
-// ImGui only; what they ask for comes back as actions for the app.
+// ImGui only; what they ask for comes back as requests (core/commands.h) for the app.
 #pragma once
 
+#include "core/commands.h"
 #include "core/probe.h"
 
 #include <string>
@@ -10,13 +11,7 @@
 
 namespace lab::ui {
 
-// One keyboard shortcut, as listed by the help overlay and the README.
-struct Shortcut {
-    const char* keys;
-    const char* action;
-};
-const std::vector<Shortcut>& shortcuts();
-
+// The shortcuts, from the command table (core/commands.h helpRows()).
 void helpWindow(bool& open);
 
 // Opens at `position` (screen units) the first time.
@@ -30,11 +25,7 @@ struct ShaderEditorState {
     bool customActive = false;     // edited shaders are running
 };
 
-struct ShaderEditorActions {
-    bool compile = false;
-    bool revert = false;
-};
-
-void shaderEditorWindow(ShaderEditorState& state, ShaderEditorActions& actions, std::string_view lightingSource);
+// Compile and "Revert to built-in" come back as CompileShaders and RevertShaders requests.
+void shaderEditorWindow(ShaderEditorState& state, std::vector<Request>& requests, std::string_view lightingSource);
 
 } // namespace lab::ui

@@ -1,6 +1,8 @@
 // widgets.cpp — shared ImGui helpers.
 #include "ui/widgets.h"
 
+#include "core/limits.h"
+
 #include <glm/common.hpp>
 
 #include <algorithm>
@@ -28,20 +30,24 @@ std::string WidgetMap::text() const {
     return s;
 }
 
-bool colorEdit(const char* label, glm::vec3& value) {
-    bool changed = ImGui::ColorEdit3(label, &value.x, ImGuiColorEditFlags_Float);
+namespace {
+
+bool limitedColorEdit(const char* label, glm::vec3& value, const limits::Range& r, ImGuiColorEditFlags flags) {
+    bool changed = ImGui::ColorEdit3(label, &value.x, ImGuiColorEditFlags_Float | flags);
     if (changed) {
-        value = glm::clamp(value, glm::vec3(0.0f), glm::vec3(1.0f));
+        value = {limits::clamp(r, value.x), limits::clamp(r, value.y), limits::clamp(r, value.z)};
     }
     return changed;
 }
 
+} // namespace
+
+bool colorEdit(const char* label, glm::vec3& value) {
+    return limitedColorEdit(label, value, limits::kMaterialColor, ImGuiColorEditFlags_None);
+}
+
 bool lightColorEdit(const char* label, glm::vec3& value) {
-    bool changed = ImGui::ColorEdit3(label, &value.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-    if (changed) {
-        value = glm::max(value, glm::vec3(0.0f));
-    }
-    return changed;
+    return limitedColorEdit(label, value, limits::kLightColor, ImGuiColorEditFlags_HDR);
 }
 
 bool dragVec3(const char* label, glm::vec3& value, float speed, float min, float max, const char* format) {
@@ -50,6 +56,20 @@ bool dragVec3(const char* label, glm::vec3& value, float speed, float min, float
         value = glm::clamp(value, glm::vec3(min), glm::vec3(max));
     }
     return changed;
+}
+
+bool commandButton(Command command, std::vector<Request>& requests, bool enabled) {
+    const CommandRow& row = commandRow(command);
+    ImGui::BeginDisabled(!enabled);
+    bool clicked = ImGui::Button(row.label);
+    ImGui::EndDisabled();
+    if (row.key != 0 && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        ImGui::SetTooltip("%s", keyName(row.key, row.modifiers).c_str());
+    }
+    if (clicked) {
+        requests.push_back({command});
+    }
+    return clicked;
 }
 
 void helpMarker(const char* text) {

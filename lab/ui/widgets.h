@@ -5,17 +5,17 @@
 // (`lab --layout-file`), so GUI tests can point real mouse events at real widgets.
 #pragma once
 
+#include "core/commands.h"
+#include "ui/layout.h"
+
 #include <glm/vec3.hpp>
 #include <imgui.h>
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace lab::ui {
-
-struct Rect {
-    float x, y, w, h;
-};
 
 class WidgetMap {
 public:
@@ -37,15 +37,10 @@ bool lightColorEdit(const char* label, glm::vec3& value);
 // A vec3 dragged in `speed` steps, optionally clamped.
 bool dragVec3(const char* label, glm::vec3& value, float speed, float min = 0.0f, float max = 0.0f,
               const char* format = "%.3f");
+// A button for `command`, labelled from the command table (with its shortcut in the tooltip);
+// a click appends the command to `requests`. Disabled (greyed) when `enabled` is false.
+bool commandButton(Command command, std::vector<Request>& requests, bool enabled = true);
 // A "(?)" marker with a tooltip.
 void helpMarker(const char* text);
-
-// Keyboard keys as the GLFW backend of ImGui 1.86 indexes io.KeysDown (GLFW key codes, the same
-// in the browser through Emscripten's GLFW). Letters and digits are their ASCII codes.
-namespace keys {
-constexpr int Space = 32, Escape = 256, Enter = 257, Tab = 258, Right = 262, Left = 263, Down = 264, Up = 265;
-constexpr int F1 = 290, F11 = 300, F12 = 301, Equal = 61, Minus = 45, KeypadAdd = 334, KeypadSubtract = 333;
-constexpr int KeypadEnter = 335;
-} // namespace keys
 
 } // namespace lab::ui

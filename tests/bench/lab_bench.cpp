@@ -204,7 +204,7 @@ void Frame(benchmark::State& state) {
     Renderer renderer;
     Diagnostics d;
     renderer.init(d);
-    GpuMesh mesh(makeBuiltin(preset.model.builtin, preset.model.subdivisions));
+    GpuMesh mesh(std::make_shared<const Mesh>(makeBuiltin(preset.model.builtin, preset.model.subdivisions)));
     BareDraw bare(preset);
     Framebuffer target(kWidth, kHeight);
     target.bind();
@@ -263,7 +263,7 @@ void GuiFrame(benchmark::State& state) {
     Renderer renderer;
     Diagnostics d;
     renderer.init(d);
-    GpuMesh mesh(makeBuiltin(preset.model.builtin, preset.model.subdivisions));
+    GpuMesh mesh(std::make_shared<const Mesh>(makeBuiltin(preset.model.builtin, preset.model.subdivisions)));
     Framebuffer modelTarget(kWidth, kHeight);
     double gui = 0, model = 0;
     for (auto _ : state) {

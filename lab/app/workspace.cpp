@@ -1,0 +1,397 @@
+// workspace.cpp — files, links, commands and meshes of the editing state.
+#include "app/workspace.h"
+
+#include "core/enums.h"
+#include "core/link.h"
+#include "core/paths.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace lab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<fs::path> listPresets(const fs::path& folder) {
+    std::vector<fs::path> files;
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
+        if (e.is_regular_file(ec) && e.path().extension() == ".json") {
+            files.push_back(e.path());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+bool hasExtension(const fs::path& p, std::initializer_list<const char*> extensions) {
+    std::string e = p.extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+    return std::any_of(extensions.begin(), extensions.end(), [&](const char* x) { return e == x; });
+}
+
+// A file name made of letters, digits, '-' and '_' only.
+std::string safeStem(const std::string& stem) {
+    std::string name;
+    for (char c : stem) {
+        name += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '-';
+    }
+    return name;
+}
+
+} // namespace
+
+Workspace::Workspace(WorkspaceOptions options) : options_(std::move(options)) {}
+
+void Workspace::start(const fs::path& folder, const std::optional<fs::path>& preset) {
+    Preset defaults;
+    defaults.name = "Default";
+    doc_.reset(defaults, {}, folder);
+    resolvedA_ = resolvedB_ = {};
+    refreshPresetList();
+    if (preset) {
+        open(*preset);
+    }
+}
+
+//----------------------------------------------------------------------------------------
+// Problems and questions
+//----------------------------------------------------------------------------------------
+
+void Workspace::problem(std::string title, Diagnostics diagnostics) {
+    problems_.push_back({std::move(title), std::move(diagnostics)});
+}
+
+void Workspace::problem(std::string title, std::string message) {
+    problem(std::move(title), Diagnostics{{"", "", std::move(message)}});
+}
+
+void Workspace::whenChangesAreSafe(std::string what, std::function<void()> action) {
+    doc_.commit(false);
+    if (!doc_.dirty()) {
+        action();
+        return;
+    }
+    pending_ = std::move(action);
+    question_ = std::move(what);
+}
+
+void Workspace::answer(UnsavedAnswer answer) {
+    std::function<void()> action = std::exchange(pending_, nullptr);
+    question_.reset();
+    bool saved = answer == UnsavedAnswer::SaveFirst && !doc_.file().empty() && saveTo(doc_.file());
+    if (action && (answer == UnsavedAnswer::Discard || saved)) {
+        action();
+    }
+}
+
+void Workspace::requestQuit() {
+    whenChangesAreSafe("quit", [this]() { quit_ = true; });
+}
+
+//----------------------------------------------------------------------------------------
+// Commands
+//----------------------------------------------------------------------------------------
+
+bool Workspace::run(const Request& r) {
+    switch (r.command) {
+    case Command::PreviousPreset: stepPreset(-1); return true;
+    case Command::NextPreset: stepPreset(+1); return true;
+    case Command::OpenPresetAt:
+        if (r.index >= 0 && r.index < static_cast<int>(presetFiles_.size())) {
+            open(presetFiles_[static_cast<std::size_t>(r.index)]);
+        }
+        return true;
+    case Command::OpenPath: open(r.path); return true;
+    case Command::Save: save(r.path); return true;
+    case Command::SaveAs:
+        if (r.path.empty()) {
+            problem("Save as", "type the new path in the \"Save as\" field, then press Enter");
+        } else {
+            saveTo(r.path);
+        }
+        return true;
+    case Command::LoadModel: useModel(r.path); return true;
+    case Command::DownloadPreset: download(); return true;
+    case Command::Revert: doc_.revert(); return true;
+    case Command::Undo: doc_.undo(); return true;
+    case Command::Redo: doc_.redo(); return true;
+    default: return runEdit(r.command);
+    }
+}
+
+// The commands that edit the scene or how it is shown.
+bool Workspace::runEdit(Command command) {
+    Preset& e = edited();
+    switch (command) {
+    case Command::ShadingFlat: e.shading = Shading::Flat; return true;
+    case Command::ShadingGouraud: e.shading = Shading::Gouraud; return true;
+    case Command::ShadingPhong: e.shading = Shading::Phong; return true;
+    case Command::NextBrdf: e.brdf = nextOf(kBrdfModels, e.brdf); return true;
+    case Command::ToggleNormalMatrix: e.normalMatrix = nextOf(kNormalMatrixModes, e.normalMatrix); return true;
+    case Command::NextViewMode: view.mode = nextOf(kViewModes, view.mode); return true;
+    case Command::ResetCamera: doc_.preset.camera = doc_.saved().camera; return true;
+    case Command::ToggleCompare:
+        view.compare = !view.compare;
+        view.editingB = false;
+        if (view.compare) { // a useful first comparison: the other shading mode
+            doc_.compare = doc_.preset;
+            doc_.compare.shading = doc_.preset.shading == Shading::Phong ? Shading::Gouraud : Shading::Phong;
+        }
+        return true;
+    default: return false;
+    }
+}
+
+//----------------------------------------------------------------------------------------
+// Files
+//----------------------------------------------------------------------------------------
+
+fs::path Workspace::bundledFolder() const {
+    return options_.presetFolders.empty() ? fs::path(".") : options_.presetFolders.front();
+}
+
+void Workspace::refreshPresetList() {
+    presetFiles_.clear();
+    std::vector<fs::path> folders;
+    if (!doc_.file().empty()) {
+        folders.push_back(doc_.folder());
+    }
+    folders.insert(folders.end(), options_.presetFolders.begin(), options_.presetFolders.end());
+    for (const fs::path& f : folders) {
+        std::error_code ec;
+        if (fs::is_directory(f, ec) && !(presetFiles_ = listPresets(f)).empty()) {
+            break;
+        }
+    }
+    currentPreset_ = -1;
+    std::error_code ec;
+    for (std::size_t i = 0; i < presetFiles_.size() && !doc_.file().empty(); ++i) {
+        if (fs::equivalent(presetFiles_[i], doc_.file(), ec)) {
+            currentPreset_ = static_cast<int>(i);
+        }
+    }
+}
+
+// The scene becomes `preset`: a new history, B a copy of A.
+void Workspace::adopt(Preset preset, fs::path file, fs::path folder) {
+    doc_.reset(std::move(preset), std::move(file), std::move(folder));
+    ++scenesOpened_;
+    refreshPresetList();
+}
+
+// Loads and checks everything first; the scene changes only when all of it worked.
+void Workspace::open(const fs::path& file) {
+    Diagnostics d;
+    std::optional<LoadedPreset> loaded = loadPreset(file, d);
+    if (!loaded) {
+        problem("Cannot open " + file.filename().string() + " (nothing was changed)", std::move(d));
+        return;
+    }
+    if (!meshes_.get(loaded->preset.model, loaded->folder(), d)) {
+        problem("Cannot load the model of " + file.filename().string() + " (nothing was changed)", std::move(d));
+        return;
+    }
+    whenChangesAreSafe("open " + file.filename().string(), [this, loaded = std::move(*loaded)]() {
+        adopt(loaded.preset, loaded.file, {});
+        notes_.push_back("Opened " + loaded.file.string());
+    });
+}
+
+void Workspace::stepPreset(int delta) {
+    if (presetFiles_.empty()) {
+        return;
+    }
+    int n = static_cast<int>(presetFiles_.size());
+    int next = currentPreset_ < 0 ? (delta > 0 ? 0 : n - 1) : (currentPreset_ + delta + n) % n;
+    open(presetFiles_[static_cast<std::size_t>(next)]);
+}
+
+bool Workspace::saveTo(const fs::path& file) {
+    doc_.commit(false);
+    Preset toSave = doc_.preset;
+    if (!toSave.model.gltf.empty()) {
+        // glTF paths are relative to the preset: rebase them onto the new folder.
+        fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+        std::optional<fs::path> relative = relativeInside(folder, doc_.folder() / toSave.model.gltf);
+        if (!relative) {
+            problem("Cannot save " + file.string(),
+                    "the model " + toSave.model.gltf + " would be outside the preset's folder " +
+                        canonicalFolder(folder).string() + "; save the preset in the model's folder or above it");
+            return false;
+        }
+        toSave.model.gltf = relative->generic_string();
+    }
+    Diagnostics d;
+    if (!savePreset(toSave, file, d)) {
+        problem("Cannot save " + file.string() + " (the old file is unchanged)", std::move(d));
+        return false;
+    }
+    doc_.preset = toSave;
+    doc_.commit(false);
+    doc_.markSaved(file);
+    refreshPresetList();
+    notes_.push_back("Saved " + file.string());
+    return true;
+}
+
+void Workspace::save(const std::string& saveAsField) {
+    if (options_.saveByDownload) {
+        download();
+    } else if (!doc_.file().empty()) {
+        saveTo(doc_.file());
+    } else if (!saveAsField.empty()) {
+        saveTo(saveAsField);
+    } else {
+        problem("Nothing to save to", "this preset has no file yet: type a path in the \"Save as\" field");
+    }
+}
+
+void Workspace::download() {
+    doc_.commit(false);
+    std::string name = safeStem(doc_.file().empty() ? doc_.preset.name : doc_.file().stem().string());
+    downloads_.push_back({(name.empty() ? "preset" : name) + ".json", presetToJson(doc_.preset)});
+    doc_.markSaved(doc_.file());
+    notes_.push_back("Downloaded " + downloads_.back().name);
+}
+
+void Workspace::useModel(const fs::path& path) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) {
+        problem("Cannot load the model", path.string() + ": no such file");
+        return;
+    }
+    if (doc_.file().empty() && !doc_.dirty()) {
+        doc_.setFolder(canonicalFolder(path.parent_path())); // an untitled scene adopts the model's folder
+    }
+    std::optional<fs::path> relative = relativeInside(doc_.folder(), path);
+    if (!relative) {
+        problem("Cannot use " + path.filename().string(),
+                "the model is outside this preset's folder " + canonicalFolder(doc_.folder()).string() +
+                    ". Save the preset next to the model first (Save as), or copy the model into that folder.");
+        return;
+    }
+    Model candidate = doc_.preset.model;
+    candidate.gltf = relative->generic_string();
+    Diagnostics d;
+    std::vector<std::string> notes;
+    if (!meshes_.get(candidate, doc_.folder(), d, &notes)) {
+        problem("Cannot load " + path.filename().string() + " (nothing was changed)", std::move(d));
+        return;
+    }
+    doc_.preset.model = candidate;
+    notes_.push_back(notes.empty() ? "Model " + candidate.gltf : notes.front());
+}
+
+void Workspace::drop(const std::vector<std::string>& files) {
+    for (const std::string& f : files) {
+        if (hasExtension(f, {".json"})) {
+            open(f);
+        } else if (hasExtension(f, {".gltf", ".glb"})) {
+            useModel(f);
+        } else {
+            problem("Cannot open " + fs::path(f).filename().string(), "drop a preset (.json) or a glTF model (.gltf, .glb)");
+        }
+    }
+}
+
+void Workspace::saveScreenshot(const Image& image) {
+    std::string stem = doc_.file().empty() ? "lab" : doc_.file().stem().string();
+    std::error_code ec;
+    fs::create_directories(options_.screenshotFolder, ec);
+    fs::path file;
+    do {
+        char number[32];
+        std::snprintf(number, sizeof number, "-%03d.png", ++screenshots_);
+        file = options_.screenshotFolder / (stem + number);
+    } while (fs::exists(file, ec));
+    if (options_.saveByDownload) {
+        downloads_.push_back({file.filename().string(), encodePng(image)});
+        notes_.push_back("Screenshot " + file.filename().string() + " downloaded");
+        return;
+    }
+    std::string error;
+    if (!writePng(image, file, error)) {
+        problem("Screenshot failed", error);
+        return;
+    }
+    notes_.push_back("Screenshot " + file.string());
+}
+
+//----------------------------------------------------------------------------------------
+// Links (the browser's URL fragment and saved state)
+//----------------------------------------------------------------------------------------
+
+void Workspace::openLink(const std::string& fragment) {
+    Diagnostics d;
+    auto parsed = parseLink(fragment, bundledFolder(), d);
+    if (!parsed) {
+        problem("Cannot open the link (nothing was changed)", std::move(d));
+        return;
+    }
+    if (auto* name = std::get_if<LinkedPresetName>(&*parsed)) {
+        fs::path file = bundledFolder() / (name->name + ".json");
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec)) {
+            problem("Cannot open the link (nothing was changed)", "there is no bundled preset \"" + name->name + "\"");
+            return;
+        }
+        open(file);
+        return;
+    }
+    Preset preset = std::get<Preset>(*parsed);
+    if (!meshes_.get(preset.model, bundledFolder(), d)) {
+        problem("Cannot load the linked preset's model (nothing was changed)", std::move(d));
+        return;
+    }
+    whenChangesAreSafe("open the link", [this, preset]() { adopt(preset, {}, bundledFolder()); });
+}
+
+const std::string& Workspace::link() {
+    if (!link_.valid || link_.preset != doc_.preset || link_.file != doc_.file()) {
+        std::optional<std::string> bundled;
+        std::error_code ec;
+        if (!doc_.dirty() && !doc_.file().empty() && fs::equivalent(doc_.folder(), bundledFolder(), ec)) {
+            bundled = doc_.file().stem().string();
+        }
+        link_ = {presetLink(doc_.preset, bundled), doc_.preset, doc_.file(), true};
+    }
+    return link_.text;
+}
+
+//----------------------------------------------------------------------------------------
+// Meshes
+//----------------------------------------------------------------------------------------
+
+// The mesh of `model`; looked up only when the model or the folder changed since `resolved`.
+// A model that cannot load goes back to the last one that did, with a problem.
+std::shared_ptr<const Mesh> Workspace::resolve(Model& model, Resolved& resolved, const char* which) {
+    fs::path folder = doc_.folder();
+    if (resolved.mesh && model == resolved.model && folder == resolved.folder) {
+        return resolved.mesh; // the common frame: nothing to look up
+    }
+    Diagnostics d;
+    std::vector<std::string> notes;
+    if (std::shared_ptr<const Mesh> mesh = meshes_.get(model, folder, d, &notes)) {
+        notes_.insert(notes_.end(), notes.begin(), notes.end());
+        resolved = {model, folder, std::move(mesh)};
+        return resolved.mesh;
+    }
+    problem(std::string("Cannot load ") + which, std::move(d));
+    if (resolved.mesh) {
+        model = resolved.model;
+        return resolved.mesh;
+    }
+    Diagnostics ignored; // nothing loaded yet: fall back to the default built-in
+    model = Model{};
+    resolved = {model, folder, meshes_.get(model, folder, ignored)};
+    return resolved.mesh;
+}
+
+std::shared_ptr<const Mesh> Workspace::meshA() { return resolve(doc_.preset.model, resolvedA_, "the model"); }
+
+std::shared_ptr<const Mesh> Workspace::meshB() { return resolve(doc_.compare.model, resolvedB_, "B's model"); }
+
+} // namespace lab

@@ -1,0 +1,140 @@
+// workspace.h — the editing state of the lab and every operation on files and links.
+//
+// The workspace owns the document (set A, compare set B, saved state, undo/redo), the view mode,
+// which set the panel edits, the preset list, and the meshes of both sets (through the one mesh
+// cache). It carries out the commands that change the scene or touch files: open, step through
+// presets, save, save as, revert, undo, redo, links in and out, downloads, dropped presets and
+// models, screenshots to files. Everything is checked before anything changes: a file that does
+// not load leaves the scene exactly as it was and reports why.
+//
+// It does not draw or read input: no ImGui, no GL (tests/workspace_test.cpp runs it headless).
+// Problems come out as Diagnostics with a title (takeProblems), short messages as notes
+// (takeNotes), files for the browser as downloads (takeDownloads); the app shows them.
+#pragma once
+
+#include "app/document.h"
+#include "core/commands.h"
+#include "core/diagnostics.h"
+#include "core/image.h"
+#include "core/mesh_cache.h"
+#include "core/view_mode.h"
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lab {
+
+// A file the platform should hand to the user (the browser downloads it).
+struct Download {
+    std::string name;
+    std::string bytes;
+};
+
+struct WorkspaceOptions {
+    std::vector<std::filesystem::path> presetFolders; // the first that has presets fills the list
+    std::filesystem::path screenshotFolder = ".";
+    bool saveByDownload = false; // the browser: save and screenshots become downloads
+};
+
+class Workspace {
+public:
+    explicit Workspace(WorkspaceOptions options);
+
+    // The default scene (untitled, in `folder`), then `preset` when given.
+    void start(const std::filesystem::path& folder, const std::optional<std::filesystem::path>& preset = {});
+
+    //--- what is being edited -----------------------------------------------------------
+    Document& document() { return doc_; }
+    const Document& document() const { return doc_; }
+    Preset& a() { return doc_.preset; }
+    Preset& b() { return doc_.compare; }
+    Preset& edited() { return view.compare && view.editingB ? doc_.compare : doc_.preset; }
+    ViewSettings view; // the per-term view and compare mode
+
+    const std::vector<std::filesystem::path>& presetFiles() const { return presetFiles_; }
+    int currentPreset() const { return currentPreset_; } // index in presetFiles, -1 if none
+
+    //--- commands -----------------------------------------------------------------------
+    // Carries out a scene or file command; false if `request` is not the workspace's.
+    bool run(const Request& request);
+    void open(const std::filesystem::path& file);
+    void openLink(const std::string& fragment); // "preset=name" or "p=..." (core/link.h)
+    bool saveTo(const std::filesystem::path& file);
+    void useModel(const std::filesystem::path& file); // a .gltf/.glb becomes the model
+    void drop(const std::vector<std::string>& files);
+    void requestQuit();
+    // A PNG of the view into the screenshot folder (a download in the browser).
+    void saveScreenshot(const Image& image);
+
+    // B follows A's camera; then the frame's edits become one undo step unless a gesture is
+    // still in progress.
+    void endFrame(bool gestureInProgress) {
+        doc_.compare.camera = doc_.preset.camera;
+        doc_.commit(gestureInProgress);
+    }
+    // Counts the scenes opened (files, links): what belonged to the last scene can be dropped.
+    unsigned scenesOpened() const { return scenesOpened_; }
+
+    //--- a question for the user: discard unsaved changes? -------------------------------
+    const std::optional<std::string>& question() const { return question_; } // "open x.json", "quit"
+    void answer(UnsavedAnswer answer);
+    bool quit() const { return quit_; }
+
+    //--- what the app shows ---------------------------------------------------------------
+    std::vector<Problem> takeProblems() { return std::exchange(problems_, {}); }
+    std::vector<std::string> takeNotes() { return std::exchange(notes_, {}); }
+    std::vector<Download> takeDownloads() { return std::exchange(downloads_, {}); }
+
+    // The meshes of A and B. A model edit that cannot load is undone with a problem.
+    std::shared_ptr<const Mesh> meshA();
+    std::shared_ptr<const Mesh> meshB();
+
+    // The current scene as a preset link, recomputed only when the scene changed.
+    const std::string& link();
+
+private:
+    struct Resolved {
+        Model model;
+        std::filesystem::path folder;
+        std::shared_ptr<const Mesh> mesh;
+    };
+    std::shared_ptr<const Mesh> resolve(Model& model, Resolved& resolved, const char* which);
+    bool runEdit(Command command);
+    void stepPreset(int delta);
+    void save(const std::string& saveAsField);
+    void download();
+    void refreshPresetList();
+    void whenChangesAreSafe(std::string what, std::function<void()> action);
+    void adopt(Preset preset, std::filesystem::path file, std::filesystem::path folder);
+    void problem(std::string title, Diagnostics diagnostics);
+    void problem(std::string title, std::string message);
+    std::filesystem::path bundledFolder() const;
+
+    WorkspaceOptions options_;
+    Document doc_;
+    MeshCache meshes_;
+    Resolved resolvedA_, resolvedB_;
+    std::vector<std::filesystem::path> presetFiles_;
+    int currentPreset_ = -1;
+    std::optional<std::string> question_;
+    std::function<void()> pending_;
+    bool quit_ = false;
+    std::vector<Problem> problems_;
+    std::vector<std::string> notes_;
+    std::vector<Download> downloads_;
+    int screenshots_ = 0;
+    unsigned scenesOpened_ = 0;
+    struct {
+        std::string text;
+        Preset preset;
+        std::filesystem::path file;
+        bool valid = false;
+    } link_;
+};
+
+} // namespace lab

@@ -1,0 +1,40 @@
+// imgui_host.h — the Dear ImGui start-up and frame sequence that every platform shares.
+//
+// Desktop (glfw_window.cpp), browser (web_window.cpp) and headless (headless_app.cpp) differ only
+// in where input, the display size and the loop come from: each passes its platform backend's
+// NewFrame as a callback, and everything else — the context, the OpenGL3 renderer backend on
+// GLSL ES 3.00, the frame order, fonts re-rasterized at the app's UI scale — is here, once.
+// Not here: windows, events, the loop.
+#pragma once
+
+#include "app/app.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lab {
+
+// Owns the ImGui context and its renderer backend (not copyable: impl_ is unique).
+class ImGuiHost {
+public:
+    // `fontFiles`: the first that exists is the UI font; ImGui's built-in font when none does.
+    explicit ImGuiHost(std::vector<std::string> fontFiles = {});
+    ~ImGuiHost(); // shuts the renderer backend down and destroys the context
+
+    // Creates the context (no .ini file, dark style) and the renderer backend; needs a current
+    // GL ES 3.0 context. Then App::init. False with `error` when either fails.
+    bool start(App& app, std::string& error);
+
+    // One frame: the renderer backend's NewFrame, `platformNewFrame` (mouse, keys, display
+    // size), ImGui::NewFrame, App::frame, ImGui::Render, and ImGui's draw data over the app's
+    // frame in in.targetFramebuffer. Fonts are rebuilt when the app asks for another UI scale.
+    FrameOutput frame(const FrameInput& in, const std::function<void()>& platformNewFrame);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace lab

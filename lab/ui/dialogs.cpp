@@ -1,0 +1,77 @@
+// dialogs.cpp — modal popups, centred in the window.
+#include "ui/dialogs.h"
+
+#include "ui/widgets.h"
+
+#include <imgui.h>
+
+namespace lab::ui {
+
+namespace {
+
+// Opens the popup `name` if it is not open yet, centred; then BeginPopupModal.
+bool beginModal(const char* name) {
+    if (!ImGui::IsPopupOpen(name)) {
+        ImGui::OpenPopup(name);
+    }
+    ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.4f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(io.DisplaySize.x * 0.8f, io.DisplaySize.y * 0.8f));
+    return ImGui::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+}
+
+bool answered(const char* label, const char* widget) {
+    bool clicked = ImGui::Button(label);
+    mark(widget);
+    return clicked;
+}
+
+} // namespace
+
+bool problemDialog(const Problem& problem) {
+    if (!beginModal("Error")) {
+        return false;
+    }
+    ImGui::TextUnformatted(problem.title.c_str());
+    ImGui::Separator();
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 150, 140, 255));
+    for (const Diagnostic& d : problem.diagnostics) {
+        ImGui::TextUnformatted(d.str().c_str());
+    }
+    ImGui::PopStyleColor();
+    widgets().set("error", {ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowSize().x, ImGui::GetWindowSize().y});
+    bool close = ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+                 ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+    mark("error.ok");
+    if (close) {
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+    return close;
+}
+
+std::optional<UnsavedAnswer> unsavedChangesDialog(const std::string& documentName, const std::string& what) {
+    if (!beginModal("Unsaved changes")) {
+        return std::nullopt;
+    }
+    std::optional<UnsavedAnswer> answer;
+    ImGui::Text("%s has unsaved changes. Discard them to %s?", documentName.c_str(), what.c_str());
+    if (answered("Save first", "confirm.save")) {
+        answer = UnsavedAnswer::SaveFirst;
+    }
+    ImGui::SameLine();
+    if (answered("Discard", "confirm.discard")) {
+        answer = UnsavedAnswer::Discard;
+    }
+    ImGui::SameLine();
+    if (answered("Cancel", "confirm.cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+        answer = UnsavedAnswer::Cancel;
+    }
+    if (answer) {
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+    return answer;
+}
+
+} // namespace lab::ui

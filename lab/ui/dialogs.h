@@ -1,0 +1,19 @@
+// dialogs.h — the lab's modal questions: a problem to acknowledge, unsaved changes to decide on.
+// ImGui only; the answers go back to the app, which carries them out.
+#pragma once
+
+#include "core/commands.h"
+#include "core/diagnostics.h"
+
+#include <optional>
+#include <string>
+
+namespace lab::ui {
+
+// Shows `problem` until the user closes it (OK, Enter or Escape); true on the frame it closes.
+bool problemDialog(const Problem& problem);
+
+// "<document> has unsaved changes. Discard them to <what>?" Save first, Discard or Cancel.
+std::optional<UnsavedAnswer> unsavedChangesDialog(const std::string& documentName, const std::string& what);
+
+} // namespace lab::ui

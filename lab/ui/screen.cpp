@@ -1,0 +1,66 @@
+// screen.cpp — the fixed windows of the lab and everything drawn over them.
+#include "ui/screen.h"
+
+#include "ui/dialogs.h"
+#include "ui/widgets.h"
+
+#include <imgui.h>
+
+namespace lab::ui {
+
+namespace {
+
+constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+void beginFixed(const char* title, const Rect& r) {
+    ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
+    ImGui::SetNextWindowSize(ImVec2(r.w, r.h));
+    ImGui::Begin(title, nullptr, kFixed);
+}
+
+void panels(const Layout& layout, ScreenModel& m, ScreenEvents& events) {
+    beginFixed("Lighting Lab###panel", layout.panel);
+    controlPanel(*m.edited, *m.view, m.panelInfo, *m.panel, events.requests);
+    ImGui::End();
+    beginFixed("Reflected intensity###plots", layout.plots);
+    plotsPanel(*m.a, m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr);
+    ImGui::End();
+    widgets().set("plots", layout.plots);
+    widgets().set("panel", layout.panel);
+}
+
+void dialogs(ScreenModel& m, ScreenEvents& events) {
+    if (m.problem) {
+        events.problemClosed = problemDialog(*m.problem);
+    } else if (m.unsavedQuestion) {
+        events.answer = unsavedChangesDialog(m.overlay.documentName, *m.unsavedQuestion);
+    }
+}
+
+} // namespace
+
+float uiScale() { return ImGui::GetFontSize() / 13.0f; }
+
+ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
+    ScreenEvents events;
+    events.typing = ImGui::GetIO().WantTextInput;
+    if (m.showPanels) {
+        panels(layout, m, events);
+    }
+    widgets().set("view", layout.view);
+    helpWindow(*m.showHelp);
+    if (m.probe) {
+        probeWindow(*m.probe, *m.a, *m.probeOpen, layout.view.x + 10.0f, layout.view.y + ImGui::GetFontSize() * 2.5f);
+    }
+    shaderEditorWindow(*m.shaderEditor, events.requests, m.lightingSource);
+    dialogs(m, events);
+    const Rect& active = m.b ? layout.viewA : layout.view;
+    events.view = viewControls(*m.a, active, layout.view, *m.viewControls);
+    lightMarkers(*m.a, active, m.viewControls->light);
+    viewOverlay(m.overlay, layout);
+    events.gesture = ImGui::IsAnyItemActive() || events.view.gesture;
+    return events;
+}
+
+} // namespace lab::ui

@@ -1,0 +1,59 @@
+// screen.h — the whole UI of one frame, laid out: the panel, the plots, the tools, the dialogs,
+// and the 3D view's controls and overlay.
+//
+// The app fills a ScreenModel with what there is to show and edit (plain references into the
+// workspace and its own UI state), calls drawScreen between ImGui::NewFrame and ImGui::Render,
+// and carries out the ScreenEvents that come back. ImGui only: no GL, no files.
+#pragma once
+
+#include "core/commands.h"
+#include "core/diagnostics.h"
+#include "core/probe.h"
+#include "ui/layout.h"
+#include "ui/panel.h"
+#include "ui/plots.h"
+#include "ui/tools.h"
+#include "ui/view.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lab::ui {
+
+struct ScreenModel {
+    Preset* a = nullptr;      // set A (the plots and the view's gestures edit it)
+    Preset* b = nullptr;      // set B in compare mode, else nullptr
+    Preset* edited = nullptr; // the set the panel edits
+    ViewSettings* view = nullptr;
+    PanelInfo panelInfo;
+    PanelState* panel = nullptr;
+    PlotSettings* plots = nullptr;
+    ShaderEditorState* shaderEditor = nullptr;
+    std::string_view lightingSource;
+    ViewControls* viewControls = nullptr;
+    const ProbeResult* probe = nullptr; // the last probe, shown while probeOpen
+    bool* probeOpen = nullptr;
+    bool* showHelp = nullptr;
+    bool showPanels = true;
+    const Problem* problem = nullptr;           // shown until closed
+    const std::string* unsavedQuestion = nullptr; // "open x.json": discard unsaved changes to do it?
+    OverlayModel overlay;
+};
+
+struct ScreenEvents {
+    std::vector<Request> requests;        // buttons and fields, in the order they were used
+    ViewEvents view;                      // gestures and probe clicks in the 3D view
+    bool problemClosed = false;
+    std::optional<UnsavedAnswer> answer;
+    bool gesture = false; // a widget or a view gesture is still active (one undo step when it ends)
+    bool typing = false;  // a text field has the keyboard: plain-key shortcuts are off
+};
+
+// The UI's size relative to ImGui's 13-pixel default font (presenter mode makes it larger).
+float uiScale();
+
+ScreenEvents drawScreen(const Layout& layout, ScreenModel& model);
+
+} // namespace lab::ui

@@ -1,0 +1,51 @@
+// view.h — the 3D view's ImGui side: mouse gestures, light markers and the text drawn over it.
+//
+// viewControls() edits the camera and the light positions of the preset it is given, in place,
+// like the panel edits the rest (left drag orbits, right drag pans, the wheel zooms, a drag on a
+// light marker moves that light in the plane parallel to the image), and reports a click that
+// did not move as a probe. viewOverlay() draws the header, the frame time, the view mode, the
+// compare labels and the toast. ImGui only: the 3D view itself is drawn by the renderer.
+#pragma once
+
+#include "core/preset.h"
+#include "core/view_mode.h"
+#include "ui/layout.h"
+
+#include <optional>
+#include <string>
+
+namespace lab::ui {
+
+// What a gesture remembers between frames.
+struct ViewControls {
+    enum class Drag { None, Orbit, Pan, Light } drag = Drag::None;
+    bool pressMoved = false;
+    float pressX = 0, pressY = 0;
+    int light = -1; // the light being dragged
+};
+
+struct ViewEvents {
+    std::optional<Rect> probed;  // a click: the pixel is probeX/probeY in this rectangle
+    float probeX = 0, probeY = 0; // window units
+    bool gesture = false;         // a drag is in progress (one undo step when it ends)
+};
+
+// `active` is where A is drawn (the whole view, or its half in compare mode); `whole` the view.
+ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, ViewControls& state);
+
+// Numbered markers at the point and spot lights (window units), for the GUI tests as well.
+void lightMarkers(const Preset& scene, const Rect& r, int draggedLight);
+
+struct OverlayModel {
+    std::string documentName;
+    bool dirty = false;
+    const Preset* a = nullptr;
+    const Preset* b = nullptr; // compare mode's B, else nullptr
+    ViewMode viewMode = ViewMode::Lit;
+    float frameMs = 0;
+    const char* toast = nullptr; // a short message at the bottom of the view, else nullptr
+};
+
+void viewOverlay(const OverlayModel& model, const Layout& layout);
+
+} // namespace lab::ui

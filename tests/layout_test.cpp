@@ -1,0 +1,70 @@
+// layout_test.cpp — the window's arithmetic: three columns when there is room, plots below the
+// view when not, compare halves that never crop the model, nothing outside the window.
+#include "ui/layout.h"
+
+#include <gtest/gtest.h>
+
+namespace lab::ui {
+namespace {
+
+void expectInside(const Rect& r, float w, float h, const char* what) {
+    EXPECT_GE(r.x, 0.0f) << what;
+    EXPECT_GE(r.y, 0.0f) << what;
+    EXPECT_LE(r.x + r.w, w + 0.01f) << what;
+    EXPECT_LE(r.y + r.h, h + 0.01f) << what;
+}
+
+TEST(Layout, WideWindowHasThreeColumnsThatTileIt) {
+    Layout l = computeLayout({1600, 900, 1.0f, true});
+    EXPECT_FALSE(l.plotsBelow);
+    EXPECT_FLOAT_EQ(l.panel.x, 0.0f);
+    EXPECT_FLOAT_EQ(l.view.x, l.panel.w);
+    EXPECT_FLOAT_EQ(l.plots.x, l.view.x + l.view.w);
+    EXPECT_FLOAT_EQ(l.plots.x + l.plots.w, 1600.0f);
+    EXPECT_FLOAT_EQ(l.view.h, 900.0f);
+}
+
+TEST(Layout, NarrowWindowPutsThePlotsBelowTheView) {
+    Layout l = computeLayout({1024, 768, 1.0f, true});
+    EXPECT_TRUE(l.plotsBelow);
+    EXPECT_FLOAT_EQ(l.plots.y, l.view.y + l.view.h);
+    EXPECT_FLOAT_EQ(l.plots.x, l.view.x);
+    for (const Rect* r : {&l.panel, &l.view, &l.plots}) {
+        expectInside(*r, 1024, 768, "1024x768");
+    }
+}
+
+TEST(Layout, PresenterScaleGrowsThePanelsAndCanMoveThePlots) {
+    Layout normal = computeLayout({1920, 1080, 1.0f, true});
+    Layout large = computeLayout({1920, 1080, 2.0f, true});
+    EXPECT_GT(large.panel.w, normal.panel.w);
+    EXPECT_FALSE(normal.plotsBelow);
+    EXPECT_TRUE(large.plotsBelow);
+}
+
+TEST(Layout, HiddenPanelsGiveTheViewTheWholeWindow) {
+    Layout l = computeLayout({800, 600, 1.0f, false});
+    EXPECT_FLOAT_EQ(l.view.w, 800.0f);
+    EXPECT_FLOAT_EQ(l.view.h, 600.0f);
+    EXPECT_FLOAT_EQ(l.panel.w, 0.0f);
+}
+
+TEST(Layout, CompareHalvesSplitTheViewAndStackWhenSideBySideWouldBeNarrow) {
+    Layout wide = computeLayout({1600, 600, 1.0f, false});
+    EXPECT_FALSE(wide.compareStacked);
+    EXPECT_FLOAT_EQ(wide.viewA.w + wide.viewB.w, wide.view.w);
+    EXPECT_FLOAT_EQ(wide.viewB.x, wide.viewA.x + wide.viewA.w);
+    Layout tall = computeLayout({600, 900, 1.0f, false});
+    EXPECT_TRUE(tall.compareStacked);
+    EXPECT_FLOAT_EQ(tall.viewA.h + tall.viewB.h, tall.view.h);
+    EXPECT_FLOAT_EQ(tall.viewB.y, tall.viewA.y + tall.viewA.h);
+}
+
+TEST(Layout, ATinyWindowStillHasAView) {
+    Layout l = computeLayout({1, 1, 1.0f, true});
+    EXPECT_GE(l.view.w, 1.0f);
+    EXPECT_GE(l.view.h, 1.0f);
+}
+
+} // namespace
+} // namespace lab::ui

@@ -1,0 +1,252 @@
+// workspace_test.cpp — files, links, drops and undo of the editing state, headless: no window,
+// no ImGui, no GL. What went wrong must leave the scene exactly as it was, with a problem that
+// says why.
+#include "app/workspace.h"
+
+#include "core/link.h"
+#include "test_files.h"
+
+#include <gtest/gtest.h>
+
+namespace lab {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kPresets = fs::path(LAB_SOURCE_DIR) / "presets";
+const fs::path kModel = kPresets / "models" / "trefoil.glb";
+
+// A workspace over a temporary folder with two presets in it.
+struct Fixture {
+    TempFolder dir;
+    Workspace ws{WorkspaceOptions{{}, {}, false}};
+    fs::path red, blue;
+
+    Fixture() {
+        red = dir.path() / "red.json";
+        blue = dir.path() / "blue.json";
+        Preset p;
+        p.name = "red";
+        p.material.diffuse = {1, 0, 0};
+        Diagnostics d;
+        EXPECT_TRUE(savePreset(p, red, d));
+        p.name = "blue";
+        p.material.diffuse = {0, 0, 1};
+        EXPECT_TRUE(savePreset(p, blue, d));
+        ws = Workspace(WorkspaceOptions{{dir.path()}, dir.path() / "shots", false});
+        ws.start(dir.path(), red);
+        EXPECT_TRUE(ws.takeProblems().empty());
+    }
+};
+
+std::string titles(const std::vector<Problem>& problems) {
+    std::string s;
+    for (const Problem& p : problems) {
+        s += p.title + "\n" + toString(p.diagnostics);
+    }
+    return s;
+}
+
+TEST(Workspace, OpensAPresetAndListsItsFolder) {
+    Fixture f;
+    EXPECT_EQ(f.ws.document().file(), f.red);
+    EXPECT_EQ(f.ws.a().material.diffuse, glm::vec3(1, 0, 0));
+    ASSERT_EQ(f.ws.presetFiles().size(), 2u);
+    EXPECT_EQ(f.ws.presetFiles()[static_cast<std::size_t>(f.ws.currentPreset())], f.red);
+    f.ws.run({Command::NextPreset}); // blue sorts first: red is last, and the next wraps around
+    EXPECT_EQ(f.ws.document().file(), f.blue);
+    f.ws.run({Command::PreviousPreset});
+    EXPECT_EQ(f.ws.document().file(), f.red);
+}
+
+TEST(Workspace, ABrokenFileLeavesTheSceneAsItWasAndSaysWhere) {
+    Fixture f;
+    f.ws.a().material.shininess = 77.0f; // an unsaved edit
+    Preset before = f.ws.a();
+    fs::path broken = f.dir.path() / "broken.json";
+    writeText(broken, R"({"format": "lighting-lab-preset", "version": 1, "material": {"shininess": -3}})");
+    f.ws.open(broken);
+    std::vector<Problem> problems = f.ws.takeProblems();
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_NE(problems[0].title.find("broken.json"), std::string::npos);
+    EXPECT_NE(toString(problems[0].diagnostics).find("material.shininess"), std::string::npos) << titles(problems);
+    EXPECT_EQ(f.ws.a(), before);
+    EXPECT_EQ(f.ws.document().file(), f.red);
+    EXPECT_FALSE(f.ws.question()); // nothing to confirm: nothing will happen
+}
+
+TEST(Workspace, UnsavedEditsAreNotDroppedWithoutAnAnswer) {
+    Fixture f;
+    f.ws.a().material.shininess = 5.0f;
+    f.ws.open(f.blue);
+    ASSERT_TRUE(f.ws.question());
+    EXPECT_EQ(*f.ws.question(), "open blue.json");
+    f.ws.answer(UnsavedAnswer::Cancel);
+    EXPECT_EQ(f.ws.document().file(), f.red);
+    EXPECT_EQ(f.ws.a().material.shininess, 5.0f);
+
+    f.ws.open(f.blue);
+    f.ws.answer(UnsavedAnswer::SaveFirst); // saves red.json, then opens blue
+    EXPECT_EQ(f.ws.document().file(), f.blue);
+    Diagnostics d;
+    EXPECT_EQ(loadPreset(f.red, d)->preset.material.shininess, 5.0f);
+
+    f.ws.a().material.shininess = 9.0f;
+    f.ws.requestQuit();
+    EXPECT_FALSE(f.ws.quit());
+    f.ws.answer(UnsavedAnswer::Discard);
+    EXPECT_TRUE(f.ws.quit());
+}
+
+TEST(Workspace, SaveAsWritesANewFileThatBecomesTheDocument) {
+    Fixture f;
+    f.ws.a().material.shininess = 12.0f;
+    fs::path copy = f.dir.path() / "sub" / "copy.json";
+    fs::create_directories(copy.parent_path());
+    f.ws.run({Command::SaveAs, copy.string()});
+    EXPECT_TRUE(f.ws.takeProblems().empty());
+    EXPECT_EQ(f.ws.document().file(), copy);
+    EXPECT_FALSE(f.ws.document().dirty());
+    Diagnostics d;
+    EXPECT_EQ(loadPreset(copy, d)->preset.material.shininess, 12.0f);
+    EXPECT_NE(loadPreset(f.red, d)->preset.material.shininess, 12.0f); // the original is untouched
+
+    f.ws.run({Command::SaveAs, ""});
+    EXPECT_EQ(f.ws.takeProblems().size(), 1u); // no path typed
+    f.ws.run({Command::SaveAs, (f.dir.path() / "no-such-folder" / "x.json").string()});
+    EXPECT_EQ(f.ws.takeProblems().size(), 1u);
+    EXPECT_EQ(f.ws.document().file(), copy);
+}
+
+TEST(Workspace, RevertReturnsToTheFileAndIsUndoable) {
+    Fixture f;
+    f.ws.a().material.shininess = 3.0f;
+    f.ws.endFrame(false);
+    f.ws.run({Command::Revert});
+    EXPECT_FALSE(f.ws.document().dirty());
+    f.ws.run({Command::Undo});
+    EXPECT_EQ(f.ws.a().material.shininess, 3.0f);
+}
+
+TEST(Workspace, UndoWalksAcrossCompareEdits) {
+    Fixture f;
+    f.ws.run({Command::ToggleCompare});
+    ASSERT_TRUE(f.ws.view.compare);
+    EXPECT_EQ(f.ws.b().shading, Shading::Gouraud); // B starts as A with the other shading
+    f.ws.endFrame(false);
+    f.ws.view.editingB = true;
+    f.ws.run({Command::NextBrdf}); // edits B
+    f.ws.endFrame(false);
+    EXPECT_EQ(f.ws.b().brdf, BrdfModel::BlinnPhong);
+    EXPECT_EQ(f.ws.a().brdf, BrdfModel::Phong);
+    f.ws.view.editingB = false;
+    f.ws.run({Command::ShadingFlat}); // edits A
+    f.ws.endFrame(false);
+    f.ws.run({Command::Undo});
+    EXPECT_EQ(f.ws.a().shading, Shading::Phong);
+    EXPECT_EQ(f.ws.b().brdf, BrdfModel::BlinnPhong);
+    f.ws.run({Command::Undo});
+    EXPECT_EQ(f.ws.b().brdf, BrdfModel::Phong);
+    EXPECT_FALSE(f.ws.document().dirty()); // B's edits never make the file dirty
+}
+
+TEST(Workspace, ALinkRoundTripsTheSceneAndABrokenLinkChangesNothing) {
+    Fixture f;
+    f.ws.a().material.shininess = 64.0f;
+    f.ws.a().brdf = BrdfModel::CookTorrance;
+    std::string link = f.ws.link();
+    ASSERT_EQ(link.rfind("p=", 0), 0u);
+    Preset shared = f.ws.a();
+
+    Fixture g;
+    g.ws.openLink(link);
+    EXPECT_TRUE(g.ws.takeProblems().empty());
+    Preset opened = g.ws.a();
+    EXPECT_EQ(opened, shared);
+    EXPECT_TRUE(g.ws.document().file().empty()); // a link is untitled
+
+    g.ws.openLink("p=not-base64!");
+    EXPECT_EQ(g.ws.takeProblems().size(), 1u);
+    EXPECT_EQ(g.ws.a(), opened);
+}
+
+TEST(Workspace, ABundledPresetIsLinkedByName) {
+    Workspace ws(WorkspaceOptions{{kPresets}, {}, false});
+    ws.start(kPresets, kPresets / "05-full-phong.json");
+    EXPECT_EQ(ws.link(), "preset=05-full-phong");
+    ws.a().material.shininess += 1.0f;
+    EXPECT_EQ(ws.link().rfind("p=", 0), 0u);
+}
+
+TEST(Workspace, ADroppedModelInsideTheFolderBecomesTheModelAndOneOutsideIsRefused) {
+    Fixture f;
+    fs::copy_file(kModel, f.dir.path() / "trefoil.glb");
+    f.ws.drop({(f.dir.path() / "trefoil.glb").string()});
+    EXPECT_TRUE(f.ws.takeProblems().empty());
+    EXPECT_EQ(f.ws.a().model.gltf, "trefoil.glb");
+    ASSERT_TRUE(f.ws.meshA());
+    EXPECT_GT(f.ws.meshA()->indices.size(), 0u);
+
+    TempFolder elsewhere;
+    fs::copy_file(kModel, elsewhere.path() / "outside.glb");
+    Preset before = f.ws.a();
+    f.ws.drop({(elsewhere.path() / "outside.glb").string()});
+    std::vector<Problem> problems = f.ws.takeProblems();
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_NE(toString(problems[0].diagnostics).find("outside this preset's folder"), std::string::npos);
+    EXPECT_EQ(f.ws.a(), before);
+
+    f.ws.drop({(f.dir.path() / "notes.txt").string()});
+    EXPECT_EQ(f.ws.takeProblems().size(), 1u);
+}
+
+TEST(Workspace, SavingElsewhereRebasesTheModelPath) {
+    Fixture f;
+    fs::create_directories(f.dir.path() / "models");
+    fs::copy_file(kModel, f.dir.path() / "models" / "trefoil.glb");
+    f.ws.useModel(f.dir.path() / "models" / "trefoil.glb");
+    ASSERT_EQ(f.ws.a().model.gltf, "models/trefoil.glb");
+    fs::path inside = f.dir.path() / "models" / "next-to-model.json";
+    ASSERT_TRUE(f.ws.saveTo(inside));
+    EXPECT_EQ(f.ws.a().model.gltf, "trefoil.glb");
+    Diagnostics d;
+    EXPECT_TRUE(loadPreset(inside, d).has_value()) << toString(d);
+
+    TempFolder elsewhere;
+    EXPECT_FALSE(f.ws.saveTo(elsewhere.path() / "far.json")); // the model would be outside
+    EXPECT_EQ(f.ws.takeProblems().size(), 1u);
+    EXPECT_FALSE(fs::exists(elsewhere.path() / "far.json"));
+}
+
+TEST(Workspace, AModelEditThatCannotLoadGoesBackWithAProblem) {
+    Fixture f;
+    ASSERT_TRUE(f.ws.meshA());
+    Model good = f.ws.a().model;
+    f.ws.a().model.gltf = "missing.glb";
+    EXPECT_TRUE(f.ws.meshA());
+    EXPECT_EQ(f.ws.a().model, good);
+    EXPECT_EQ(f.ws.takeProblems().size(), 1u);
+}
+
+TEST(Workspace, ScreenshotsAreNumberedFilesOrDownloads) {
+    Fixture f;
+    Image image{4, 3, std::vector<std::uint8_t>(4 * 3 * 3, 128)};
+    f.ws.saveScreenshot(image);
+    f.ws.saveScreenshot(image);
+    EXPECT_TRUE(fs::exists(f.dir.path() / "shots" / "red-001.png"));
+    EXPECT_TRUE(fs::exists(f.dir.path() / "shots" / "red-002.png"));
+
+    Workspace browser(WorkspaceOptions{{f.dir.path()}, "/nonexistent-screenshots", true});
+    browser.start(f.dir.path(), f.red);
+    browser.saveScreenshot(image);
+    browser.run({Command::Save});
+    std::vector<Download> downloads = browser.takeDownloads();
+    ASSERT_EQ(downloads.size(), 2u);
+    EXPECT_EQ(downloads[0].name, "red-001.png");
+    EXPECT_EQ(downloads[1].name, "red.json");
+    Diagnostics d;
+    EXPECT_TRUE(parsePreset(downloads[1].bytes, "red.json", std::nullopt, d).has_value()) << toString(d);
+}
+
+} // namespace
+} // namespace lab
