@@ -1,7 +1,16 @@
-// gltf.cpp — glTF 2.0 through tinygltf, with the bounds checks tinygltf leaves out.
+// gltf.cpp — glTF 2.0 through tinygltf, with the checks tinygltf leaves out.
+//
+// Owns loadGltf: the file-system guard tinygltf reads through (regular files in the model's
+// folder only), the GLB header and URI checks before tinygltf parses, the scene's node
+// hierarchy (transforms, cycles, depth) and each triangle primitive's assembly into the one
+// output Mesh, with the vertex and triangle limits.
+//
+// It does not read accessor bytes itself: gltf_accessors.cpp proves each accessor in bounds and
+// copies out of it.
 #include "core/gltf.h"
 
 #include "core/file_io.h"
+#include "core/gltf_accessors.h"
 #include "core/paths.h"
 
 #include <nlohmann/json.hpp>
@@ -21,6 +30,9 @@
 namespace lab {
 
 namespace fs = std::filesystem;
+using gltf_detail::Accessors;
+using gltf_detail::AccessorUse;
+using gltf_detail::View;
 
 namespace {
 
@@ -100,196 +112,44 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
 }
 
 //----------------------------------------------------------------------------------------
-// Bounds-checked accessor views
+// Primitives and the node hierarchy
 //----------------------------------------------------------------------------------------
 
-std::size_t componentSize(int componentType) {
-    switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;
+// A primitive's vertex order as triangles: strips and fans unrolled, a triangle list cut to
+// whole triangles. glTF's strip order alternates so every triangle keeps its winding.
+std::vector<std::uint32_t> triangleList(std::vector<std::uint32_t> sequence, int mode) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        sequence.resize(sequence.size() - sequence.size() % 3);
+        return sequence;
     }
+    std::vector<std::uint32_t> triangles;
+    triangles.reserve(sequence.size() >= 2 ? 3 * (sequence.size() - 2) : 0);
+    for (std::size_t i = 2; i < sequence.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+            triangles.insert(triangles.end(), {sequence[0], sequence[i - 1], sequence[i]});
+        } else if (i % 2 == 0) {
+            triangles.insert(triangles.end(), {sequence[i - 2], sequence[i - 1], sequence[i]});
+        } else {
+            triangles.insert(triangles.end(), {sequence[i - 1], sequence[i - 2], sequence[i]});
+        }
+    }
+    return triangles;
 }
 
-std::size_t componentCount(int type) {
-    switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
-    case TINYGLTF_TYPE_MAT2: return 4;
-    case TINYGLTF_TYPE_MAT3: return 9;
-    case TINYGLTF_TYPE_MAT4: return 16;
-    default: return 0;
-    }
-}
-
-struct View {
-    const unsigned char* data = nullptr;
-    std::size_t stride = 0;
-    std::size_t count = 0;
-    int componentType = 0;
+// A primitive's vertex attributes, validated.
+struct Attributes {
+    int positionAccessor = -1;
+    int normalAccessor = -1; // -1: none, normals are computed
+    View positions;
+    View normals;
 };
 
 class Loader {
 public:
     Loader(const tinygltf::Model& model, const std::string& file, Diagnostics& out, const GltfLimits& limits)
-        : model_(model), file_(file), out_(out), limits_(limits) {}
+        : model_(model), accessors_(model, file, out), limits_(limits) {}
 
-    bool error(const std::string& where, const std::string& message) {
-        out_.push_back({file_, where, message});
-        return false;
-    }
-
-    // Validates accessor `index` completely before anything reads through it.
-    bool view(int index, const std::string& usedBy, bool (*typeOk)(int componentType, int type), const char* expected,
-              View& v) {
-        if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) {
-            return error(usedBy, "accessor " + std::to_string(index) + " does not exist");
-        }
-        const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
-        std::string where = "accessors[" + std::to_string(index) + "]";
-        if (a.sparse.isSparse) {
-            return error(where, "sparse accessors are not supported");
-        }
-        if (!typeOk(a.componentType, a.type)) {
-            return error(where, std::string("bad component type or type for ") + usedBy + ": expected " + expected);
-        }
-        if (a.count == 0) {
-            return error(where, "count is 0");
-        }
-        if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= model_.bufferViews.size()) {
-            return error(where, "bufferView " + std::to_string(a.bufferView) + " does not exist");
-        }
-        const tinygltf::BufferView& bv = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
-        std::string bvWhere = "bufferViews[" + std::to_string(a.bufferView) + "]";
-        if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= model_.buffers.size()) {
-            return error(bvWhere, "buffer " + std::to_string(bv.buffer) + " does not exist");
-        }
-        const std::vector<unsigned char>& buffer = model_.buffers[static_cast<std::size_t>(bv.buffer)].data;
-        if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset) {
-            return error(bvWhere, "byte range [" + std::to_string(bv.byteOffset) + ", +" +
-                                      std::to_string(bv.byteLength) + ") lies beyond its buffer of " +
-                                      std::to_string(buffer.size()) + " bytes");
-        }
-        std::size_t element = componentSize(a.componentType) * componentCount(a.type);
-        std::size_t stride = bv.byteStride ? bv.byteStride : element;
-        if (bv.byteStride && (bv.byteStride < element || bv.byteStride > 252 || bv.byteStride % 4 != 0)) {
-            return error(bvWhere, "byteStride " + std::to_string(bv.byteStride) + " is invalid for elements of " +
-                                      std::to_string(element) + " bytes");
-        }
-        // The last element ends at byteOffset + stride * (count - 1) + element; compute it without overflow.
-        std::size_t span = 0;
-        if (__builtin_mul_overflow(stride, a.count - 1, &span) || __builtin_add_overflow(span, element, &span) ||
-            __builtin_add_overflow(span, a.byteOffset, &span) || span > bv.byteLength) {
-            return error(where, "reads beyond its bufferView (" + std::to_string(a.count) + " elements from byte " +
-                                    std::to_string(a.byteOffset) + " need more than the view's " +
-                                    std::to_string(bv.byteLength) + " bytes)");
-        }
-        v.data = buffer.data() + bv.byteOffset + a.byteOffset;
-        v.stride = stride;
-        v.count = a.count;
-        v.componentType = a.componentType;
-        return true;
-    }
-
-    static bool isFloatVec3(int componentType, int type) {
-        return componentType == TINYGLTF_COMPONENT_TYPE_FLOAT && type == TINYGLTF_TYPE_VEC3;
-    }
-    static bool isIndex(int componentType, int type) {
-        return type == TINYGLTF_TYPE_SCALAR && (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                                componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-                                                componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
-    }
-
-    // Appends the accessor's vec3s to `out`, transformed by `m` unless it is the identity (and
-    // then normalized when `normalize`; untransformed normals are used as given: glTF requires
-    // unit length and the shaders renormalize). Non-finite input is refused. The loops are
-    // written to vectorize: a model of a million triangles is mostly this copy.
-    bool appendVec3s(const View& v, const std::string& where, const glm::mat3& m, const glm::vec3& offset,
-                     bool identity, bool normalize, std::vector<glm::vec3>& out) {
-        std::size_t first = out.size();
-        out.resize(first + v.count);
-        glm::vec3* dst = out.data() + first;
-        if (v.stride == sizeof(glm::vec3)) {
-            std::memcpy(static_cast<void*>(dst), v.data, v.count * sizeof(glm::vec3));
-        } else {
-            for (std::size_t i = 0; i < v.count; ++i) {
-                std::memcpy(static_cast<void*>(dst + i), v.data + i * v.stride, sizeof(glm::vec3));
-            }
-        }
-        // Infinity and NaN are the values whose exponent bits are all ones.
-        const auto* bits = reinterpret_cast<const std::uint32_t*>(dst);
-        std::uint32_t nonFinite = 0;
-        for (std::size_t i = 0; i < 3 * v.count; ++i) {
-            nonFinite |= static_cast<std::uint32_t>((bits[i] & 0x7F800000u) == 0x7F800000u);
-        }
-        if (nonFinite) {
-            std::size_t bad = 0;
-            while (std::isfinite(dst[bad].x) && std::isfinite(dst[bad].y) && std::isfinite(dst[bad].z)) {
-                ++bad;
-            }
-            out.resize(first);
-            return error(where, "element " + std::to_string(bad) + " is not a finite number");
-        }
-        if (!identity) {
-            bool finite = true;
-            for (std::size_t i = 0; i < v.count; ++i) {
-                glm::vec3 p = m * dst[i] + offset;
-                if (normalize) {
-                    float len = glm::length(p);
-                    p = len > 0.0f ? p / len : glm::vec3(0, 0, 1);
-                }
-                finite &= std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-                dst[i] = p;
-            }
-            // Finite input can overflow under a node's scale (found by fuzz_gltf).
-            if (!finite) {
-                out.resize(first);
-                return error(where, "values overflow to infinity under the node's transform");
-            }
-        }
-        return true;
-    }
-
-    // The primitive's vertex order (its indices), checked against the vertex count.
-    template <typename Index>
-    bool readIndices(const View& v, std::size_t vertexCount, int accessor, const std::string& where,
-                     std::vector<std::uint32_t>& sequence) {
-        sequence.resize(v.count);
-        std::uint32_t* dst = sequence.data();
-        std::uint32_t largest = 0;
-        if (v.stride == sizeof(Index)) {
-            const auto* src = reinterpret_cast<const unsigned char*>(v.data);
-            for (std::size_t i = 0; i < v.count; ++i) {
-                Index x;
-                std::memcpy(&x, src + i * sizeof(Index), sizeof x);
-                dst[i] = x;
-                largest = std::max<std::uint32_t>(largest, x);
-            }
-        } else {
-            for (std::size_t i = 0; i < v.count; ++i) {
-                Index x;
-                std::memcpy(&x, v.data + i * v.stride, sizeof x);
-                dst[i] = x;
-                largest = std::max<std::uint32_t>(largest, x);
-            }
-        }
-        if (largest >= vertexCount) {
-            std::size_t i = 0;
-            while (dst[i] < vertexCount) {
-                ++i;
-            }
-            return error("accessors[" + std::to_string(accessor) + "]",
-                         "index " + std::to_string(dst[i]) + " at element " + std::to_string(i) + " is beyond the " +
-                             std::to_string(vertexCount) + " vertices of " + where);
-        }
-        return true;
-    }
+    bool error(const std::string& where, const std::string& message) { return accessors_.error(where, message); }
 
     // Appends primitive `pi` of mesh `mi` under the world matrix to the output mesh. Each array
     // is read once and written once, straight into the output (large models are mostly copying).
@@ -301,71 +161,13 @@ public:
             result.notes.push_back(where + ": skipped (points or lines, not triangles)");
             return true;
         }
-        auto pos = prim.attributes.find("POSITION");
-        if (pos == prim.attributes.end()) {
-            return error(where, "has no POSITION attribute");
-        }
-        View positions;
-        if (!view(pos->second, where + ".attributes.POSITION", isFloatVec3, "FLOAT VEC3", positions)) {
+        Attributes attributes;
+        std::vector<std::uint32_t> sequence;
+        if (!readAttributes(prim, where, out, attributes) ||
+            !readVertexOrder(prim, where, attributes.positions.count, sequence)) {
             return false;
         }
-        if (positions.count > limits_.maxVertices - std::min(limits_.maxVertices, out.positions.size())) {
-            return error(where, "more than " + std::to_string(limits_.maxVertices) + " vertices in the model");
-        }
-        View normals;
-        auto nrm = prim.attributes.find("NORMAL");
-        bool hasNormals = nrm != prim.attributes.end();
-        if (hasNormals) {
-            if (!view(nrm->second, where + ".attributes.NORMAL", isFloatVec3, "FLOAT VEC3", normals)) {
-                return false;
-            }
-            if (normals.count != positions.count) {
-                return error(where, "NORMAL has " + std::to_string(normals.count) + " elements but POSITION has " +
-                                        std::to_string(positions.count));
-            }
-        }
-
-        // The vertex order, then triangles (strips and fans unrolled).
-        std::vector<std::uint32_t> sequence;
-        if (prim.indices >= 0) {
-            View indices;
-            if (!view(prim.indices, where + ".indices", isIndex, "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT SCALAR",
-                      indices)) {
-                return false;
-            }
-            if (indices.count > 3 * limits_.maxTriangles) {
-                return error(where, "more than " + std::to_string(limits_.maxTriangles) + " triangles");
-            }
-            bool ok = indices.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE
-                          ? readIndices<std::uint8_t>(indices, positions.count, prim.indices, where, sequence)
-                      : indices.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT
-                          ? readIndices<std::uint16_t>(indices, positions.count, prim.indices, where, sequence)
-                          : readIndices<std::uint32_t>(indices, positions.count, prim.indices, where, sequence);
-            if (!ok) {
-                return false;
-            }
-        } else {
-            sequence.resize(positions.count);
-            for (std::size_t i = 0; i < positions.count; ++i) {
-                sequence[i] = static_cast<std::uint32_t>(i);
-            }
-        }
-        if (mode == TINYGLTF_MODE_TRIANGLES) {
-            sequence.resize(sequence.size() - sequence.size() % 3);
-        } else {
-            std::vector<std::uint32_t> triangles;
-            triangles.reserve(sequence.size() >= 2 ? 3 * (sequence.size() - 2) : 0);
-            for (std::size_t i = 2; i < sequence.size(); ++i) {
-                if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
-                    triangles.insert(triangles.end(), {sequence[0], sequence[i - 1], sequence[i]});
-                } else if (i % 2 == 0) {
-                    triangles.insert(triangles.end(), {sequence[i - 2], sequence[i - 1], sequence[i]});
-                } else {
-                    triangles.insert(triangles.end(), {sequence[i - 1], sequence[i - 2], sequence[i]});
-                }
-            }
-            sequence.swap(triangles);
-        }
+        sequence = triangleList(std::move(sequence), mode);
         if (sequence.empty()) {
             result.notes.push_back(where + ": skipped (no complete triangle)");
             return true;
@@ -373,37 +175,7 @@ public:
         if (sequence.size() / 3 > limits_.maxTriangles - std::min(limits_.maxTriangles, out.triangleCount())) {
             return error(where, "more than " + std::to_string(limits_.maxTriangles) + " triangles in the model");
         }
-
-        // Vertices: straight into the output, transformed by the node's world matrix.
-        const auto base = static_cast<std::uint32_t>(out.positions.size());
-        const bool identity = world == glm::mat4(1.0f);
-        if (!appendVec3s(positions, "accessors[" + std::to_string(pos->second) + "]", glm::mat3(world),
-                         glm::vec3(world[3]), identity, false, out.positions)) {
-            return false;
-        }
-        if (hasNormals) {
-            glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
-            if (!appendVec3s(normals, "accessors[" + std::to_string(nrm->second) + "]", normalMatrix, glm::vec3(0.0f),
-                             identity, true, out.normals)) {
-                out.positions.resize(base);
-                return false;
-            }
-        } else {
-            // Computed after the node transform, so the area weights are those of the model as drawn.
-            std::vector<glm::vec3> own(out.positions.begin() + base, out.positions.end());
-            std::vector<glm::vec3> computed = computeVertexNormals(own, sequence);
-            out.normals.insert(out.normals.end(), computed.begin(), computed.end());
-            ++computedNormals_;
-        }
-        if (base == 0 && out.indices.empty()) {
-            out.indices = std::move(sequence);
-        } else {
-            out.indices.reserve(out.indices.size() + sequence.size());
-            for (std::uint32_t i : sequence) {
-                out.indices.push_back(base + i);
-            }
-        }
-        return true;
+        return appendPrimitive(attributes, std::move(sequence), world, out);
     }
 
     bool nodeMatrix(const tinygltf::Node& node, const std::string& where, glm::mat4& m) {
@@ -495,9 +267,94 @@ public:
     int computedNormals() const { return computedNormals_; }
 
 private:
+    // POSITION and NORMAL (when present) of the primitive, validated and within the vertex limit.
+    bool readAttributes(const tinygltf::Primitive& prim, const std::string& where, const Mesh& out,
+                        Attributes& attributes) {
+        auto pos = prim.attributes.find("POSITION");
+        if (pos == prim.attributes.end()) {
+            return error(where, "has no POSITION attribute");
+        }
+        attributes.positionAccessor = pos->second;
+        if (!accessors_.view(pos->second, where + ".attributes.POSITION", AccessorUse::FloatVec3,
+                             attributes.positions)) {
+            return false;
+        }
+        if (attributes.positions.count > limits_.maxVertices - std::min(limits_.maxVertices, out.positions.size())) {
+            return error(where, "more than " + std::to_string(limits_.maxVertices) + " vertices in the model");
+        }
+        auto nrm = prim.attributes.find("NORMAL");
+        if (nrm == prim.attributes.end()) {
+            return true;
+        }
+        attributes.normalAccessor = nrm->second;
+        if (!accessors_.view(nrm->second, where + ".attributes.NORMAL", AccessorUse::FloatVec3, attributes.normals)) {
+            return false;
+        }
+        if (attributes.normals.count != attributes.positions.count) {
+            return error(where, "NORMAL has " + std::to_string(attributes.normals.count) +
+                                    " elements but POSITION has " + std::to_string(attributes.positions.count));
+        }
+        return true;
+    }
+
+    // The primitive's vertex order: its indices (checked against the vertex count), or 0, 1, 2, ...
+    bool readVertexOrder(const tinygltf::Primitive& prim, const std::string& where, std::size_t vertexCount,
+                         std::vector<std::uint32_t>& sequence) {
+        if (prim.indices < 0) {
+            sequence.resize(vertexCount);
+            for (std::size_t i = 0; i < vertexCount; ++i) {
+                sequence[i] = static_cast<std::uint32_t>(i);
+            }
+            return true;
+        }
+        View indices;
+        if (!accessors_.view(prim.indices, where + ".indices", AccessorUse::Index, indices)) {
+            return false;
+        }
+        if (indices.count > 3 * limits_.maxTriangles) {
+            return error(where, "more than " + std::to_string(limits_.maxTriangles) + " triangles");
+        }
+        return accessors_.readIndices(indices, vertexCount, prim.indices, where, sequence);
+    }
+
+    // Vertices straight into the output, transformed by the node's world matrix; normals
+    // transformed by its normal matrix, or computed when the primitive has none; then the
+    // triangles, offset to the vertices' place in the output.
+    bool appendPrimitive(const Attributes& attributes, std::vector<std::uint32_t> triangles, const glm::mat4& world,
+                         Mesh& out) {
+        const auto base = static_cast<std::uint32_t>(out.positions.size());
+        const bool identity = world == glm::mat4(1.0f);
+        if (!accessors_.appendVec3s(attributes.positions, attributes.positionAccessor, glm::mat3(world),
+                                    glm::vec3(world[3]), identity, false, out.positions)) {
+            return false;
+        }
+        if (attributes.normalAccessor >= 0) {
+            glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
+            if (!accessors_.appendVec3s(attributes.normals, attributes.normalAccessor, normalMatrix, glm::vec3(0.0f),
+                                        identity, true, out.normals)) {
+                out.positions.resize(base);
+                return false;
+            }
+        } else {
+            // Computed after the node transform, so the area weights are those of the model as drawn.
+            std::vector<glm::vec3> own(out.positions.begin() + base, out.positions.end());
+            std::vector<glm::vec3> computed = computeVertexNormals(own, triangles);
+            out.normals.insert(out.normals.end(), computed.begin(), computed.end());
+            ++computedNormals_;
+        }
+        if (base == 0 && out.indices.empty()) {
+            out.indices = std::move(triangles);
+        } else {
+            out.indices.reserve(out.indices.size() + triangles.size());
+            for (std::uint32_t i : triangles) {
+                out.indices.push_back(base + i);
+            }
+        }
+        return true;
+    }
+
     const tinygltf::Model& model_;
-    const std::string& file_;
-    Diagnostics& out_;
+    Accessors accessors_;
     const GltfLimits& limits_;
     int computedNormals_ = 0;
 };
@@ -583,48 +440,38 @@ bool checkUris(std::string_view json, const std::string& file, Diagnostics& out)
     return ok;
 }
 
-} // namespace
-
-std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& displayName, Diagnostics& diagnostics,
-                                   const GltfLimits& limits) {
-    std::string error;
-    std::optional<MappedFile> mapped = MappedFile::open(file, limits.maxFileBytes, error);
-    if (!mapped) {
-        diagnostics.push_back({displayName, "", error});
-        return std::nullopt;
-    }
-    std::optional<std::string_view> bytes = mapped->bytes();
-    FileGuard guard{canonicalFolder(file.parent_path()), limits.maxFileBytes, {}};
+// The file parsed by tinygltf behind the guards: the GLB header and every URI checked first,
+// files opened only through `guard`, images skipped and counted in `skippedImages`. Nullopt
+// after a diagnostic.
+std::optional<tinygltf::Model> parseModel(std::string_view bytes, FileGuard& guard, int& skippedImages,
+                                          const std::string& displayName, Diagnostics& diagnostics) {
     tinygltf::TinyGLTF gltf;
     gltf.SetFsCallbacks({guardedFileExists, noExpansion, guardedReadWholeFile, refuseWrite, &guard});
-    int skippedImages = 0;
     gltf.SetImageLoader(skipImage, &skippedImages);
 
     tinygltf::Model model;
-    std::string err, warn;
-    bool isGlb = bytes->size() >= 4 && std::memcmp(bytes->data(), "glTF", 4) == 0;
+    std::string err, warn, error;
+    bool isGlb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     bool ok;
     if (isGlb) {
-        if (!checkGlbHeader(*bytes, error)) {
+        if (!checkGlbHeader(bytes, error)) {
             diagnostics.push_back({displayName, "", error});
             return std::nullopt;
         }
         std::uint32_t jsonLength;
-        std::memcpy(&jsonLength, bytes->data() + 12, 4);
-        if (!checkUris(std::string_view(*bytes).substr(20, jsonLength), displayName, diagnostics)) {
+        std::memcpy(&jsonLength, bytes.data() + 12, 4);
+        if (!checkUris(bytes.substr(20, jsonLength), displayName, diagnostics)) {
             return std::nullopt;
         }
-        ok = gltf.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes->data()),
-                                       static_cast<unsigned>(bytes->size()), guard.folder.string());
+        ok = gltf.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                       static_cast<unsigned>(bytes.size()), guard.folder.string());
     } else {
-        if (!checkUris(*bytes, displayName, diagnostics)) {
+        if (!checkUris(bytes, displayName, diagnostics)) {
             return std::nullopt;
         }
-        ok = gltf.LoadASCIIFromString(&model, &err, &warn, bytes->data(), static_cast<unsigned>(bytes->size()),
+        ok = gltf.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()),
                                       guard.folder.string());
     }
-    bytes.reset();
-    mapped.reset(); // tinygltf holds its own copy of the buffers now
     if (!ok) {
         std::string message = err.empty() ? "not a valid glTF file" : err;
         while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) {
@@ -636,24 +483,52 @@ std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& disp
         diagnostics.push_back({displayName, "", message});
         return std::nullopt;
     }
+    return model;
+}
 
-    Diagnostics out;
-    Loader loader(model, displayName, out, limits);
-    GltfResult result;
-    std::vector<int> roots;
-    if (!model.scenes.empty()) {
-        int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
-        if (static_cast<std::size_t>(scene) >= model.scenes.size()) {
-            diagnostics.push_back({displayName, "scene", "scene " + std::to_string(scene) + " does not exist"});
-            return std::nullopt;
-        }
-        roots = model.scenes[static_cast<std::size_t>(scene)].nodes;
-    } else {
+// The root nodes of the default scene (scene 0 when the file names none); nullopt after a
+// diagnostic.
+std::optional<std::vector<int>> sceneRoots(const tinygltf::Model& model, const std::string& displayName,
+                                           Diagnostics& diagnostics) {
+    if (model.scenes.empty()) {
         diagnostics.push_back({displayName, "scenes", "the file has no scene to show"});
         return std::nullopt;
     }
-    std::vector<char> onPath(model.nodes.size(), 0);
-    for (int root : roots) {
+    int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+    if (static_cast<std::size_t>(scene) >= model.scenes.size()) {
+        diagnostics.push_back({displayName, "scene", "scene " + std::to_string(scene) + " does not exist"});
+        return std::nullopt;
+    }
+    return model.scenes[static_cast<std::size_t>(scene)].nodes;
+}
+
+} // namespace
+
+std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& displayName, Diagnostics& diagnostics,
+                                   const GltfLimits& limits) {
+    std::string error;
+    std::optional<MappedFile> mapped = MappedFile::open(file, limits.maxFileBytes, error);
+    if (!mapped) {
+        diagnostics.push_back({displayName, "", error});
+        return std::nullopt;
+    }
+    FileGuard guard{canonicalFolder(file.parent_path()), limits.maxFileBytes, {}};
+    int skippedImages = 0;
+    std::optional<tinygltf::Model> model = parseModel(mapped->bytes(), guard, skippedImages, displayName, diagnostics);
+    mapped.reset(); // tinygltf holds its own copy of the buffers now
+    if (!model) {
+        return std::nullopt;
+    }
+    std::optional<std::vector<int>> roots = sceneRoots(*model, displayName, diagnostics);
+    if (!roots) {
+        return std::nullopt;
+    }
+
+    Diagnostics out;
+    Loader loader(*model, displayName, out, limits);
+    GltfResult result;
+    std::vector<char> onPath(model->nodes.size(), 0);
+    for (int root : *roots) {
         if (!loader.visit(root, glm::mat4(1.0f), onPath, 0, result.mesh, result)) {
             diagnostics.insert(diagnostics.end(), out.begin(), out.end());
             return std::nullopt;

@@ -1,0 +1,205 @@
+// gltf_accessors.cpp — accessor views proved in bounds, and the copies out of them.
+#include "core/gltf_accessors.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace lab::gltf_detail {
+
+namespace {
+
+std::size_t componentSize(int componentType) {
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0;
+    }
+}
+
+std::size_t componentCount(int type) {
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_VEC4: return 4;
+    case TINYGLTF_TYPE_MAT2: return 4;
+    case TINYGLTF_TYPE_MAT3: return 9;
+    case TINYGLTF_TYPE_MAT4: return 16;
+    default: return 0;
+    }
+}
+
+bool holds(const tinygltf::Accessor& a, AccessorUse use) {
+    if (use == AccessorUse::FloatVec3) {
+        return a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT && a.type == TINYGLTF_TYPE_VEC3;
+    }
+    return a.type == TINYGLTF_TYPE_SCALAR && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                              a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+                                              a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+}
+
+const char* expectedFor(AccessorUse use) {
+    return use == AccessorUse::FloatVec3 ? "FLOAT VEC3" : "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT SCALAR";
+}
+
+} // namespace
+
+bool Accessors::error(const std::string& where, const std::string& message) {
+    out_.push_back({file_, where, message});
+    return false;
+}
+
+bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, View& v) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) {
+        return error(usedBy, "accessor " + std::to_string(index) + " does not exist");
+    }
+    const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+    std::string where = "accessors[" + std::to_string(index) + "]";
+    if (a.sparse.isSparse) {
+        return error(where, "sparse accessors are not supported");
+    }
+    if (!holds(a, use)) {
+        return error(where, std::string("bad component type or type for ") + usedBy + ": expected " + expectedFor(use));
+    }
+    if (a.count == 0) {
+        return error(where, "count is 0");
+    }
+    if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= model_.bufferViews.size()) {
+        return error(where, "bufferView " + std::to_string(a.bufferView) + " does not exist");
+    }
+    const tinygltf::BufferView& bv = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+    std::string bvWhere = "bufferViews[" + std::to_string(a.bufferView) + "]";
+    if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= model_.buffers.size()) {
+        return error(bvWhere, "buffer " + std::to_string(bv.buffer) + " does not exist");
+    }
+    const std::vector<unsigned char>& buffer = model_.buffers[static_cast<std::size_t>(bv.buffer)].data;
+    if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset) {
+        return error(bvWhere, "byte range [" + std::to_string(bv.byteOffset) + ", +" +
+                                  std::to_string(bv.byteLength) + ") lies beyond its buffer of " +
+                                  std::to_string(buffer.size()) + " bytes");
+    }
+    std::size_t element = componentSize(a.componentType) * componentCount(a.type);
+    std::size_t stride = bv.byteStride ? bv.byteStride : element;
+    if (bv.byteStride && (bv.byteStride < element || bv.byteStride > 252 || bv.byteStride % 4 != 0)) {
+        return error(bvWhere, "byteStride " + std::to_string(bv.byteStride) + " is invalid for elements of " +
+                                  std::to_string(element) + " bytes");
+    }
+    // The last element ends at byteOffset + stride * (count - 1) + element; compute it without overflow.
+    std::size_t span = 0;
+    if (__builtin_mul_overflow(stride, a.count - 1, &span) || __builtin_add_overflow(span, element, &span) ||
+        __builtin_add_overflow(span, a.byteOffset, &span) || span > bv.byteLength) {
+        return error(where, "reads beyond its bufferView (" + std::to_string(a.count) + " elements from byte " +
+                                std::to_string(a.byteOffset) + " need more than the view's " +
+                                std::to_string(bv.byteLength) + " bytes)");
+    }
+    v.data = buffer.data() + bv.byteOffset + a.byteOffset;
+    v.stride = stride;
+    v.count = a.count;
+    v.componentType = a.componentType;
+    return true;
+}
+
+
+// The loops are written to vectorize: a model of a million triangles is mostly this copy.
+bool Accessors::appendVec3s(const View& v, int accessor, const glm::mat3& m, const glm::vec3& offset, bool identity,
+                            bool normalize, std::vector<glm::vec3>& out) {
+    const std::string where = "accessors[" + std::to_string(accessor) + "]";
+    std::size_t first = out.size();
+    out.resize(first + v.count);
+    glm::vec3* dst = out.data() + first;
+    if (v.stride == sizeof(glm::vec3)) {
+        std::memcpy(static_cast<void*>(dst), v.data, v.count * sizeof(glm::vec3));
+    } else {
+        for (std::size_t i = 0; i < v.count; ++i) {
+            std::memcpy(static_cast<void*>(dst + i), v.data + i * v.stride, sizeof(glm::vec3));
+        }
+    }
+    // Infinity and NaN are the values whose exponent bits are all ones.
+    const auto* bits = reinterpret_cast<const std::uint32_t*>(dst);
+    std::uint32_t nonFinite = 0;
+    for (std::size_t i = 0; i < 3 * v.count; ++i) {
+        nonFinite |= static_cast<std::uint32_t>((bits[i] & 0x7F800000u) == 0x7F800000u);
+    }
+    if (nonFinite) {
+        std::size_t bad = 0;
+        while (std::isfinite(dst[bad].x) && std::isfinite(dst[bad].y) && std::isfinite(dst[bad].z)) {
+            ++bad;
+        }
+        out.resize(first);
+        return error(where, "element " + std::to_string(bad) + " is not a finite number");
+    }
+    if (!identity) {
+        bool finite = true;
+        for (std::size_t i = 0; i < v.count; ++i) {
+            glm::vec3 p = m * dst[i] + offset;
+            if (normalize) {
+                float len = glm::length(p);
+                p = len > 0.0f ? p / len : glm::vec3(0, 0, 1);
+            }
+            finite &= std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+            dst[i] = p;
+        }
+        // Finite input can overflow under a node's scale (found by fuzz_gltf).
+        if (!finite) {
+            out.resize(first);
+            return error(where, "values overflow to infinity under the node's transform");
+        }
+    }
+    return true;
+}
+
+
+template <typename Index>
+bool Accessors::readIndicesOf(const View& v, std::size_t vertexCount, int accessor, const std::string& where,
+                              std::vector<std::uint32_t>& sequence) {
+    sequence.resize(v.count);
+    std::uint32_t* dst = sequence.data();
+    std::uint32_t largest = 0;
+    if (v.stride == sizeof(Index)) {
+        const auto* src = reinterpret_cast<const unsigned char*>(v.data);
+        for (std::size_t i = 0; i < v.count; ++i) {
+            Index x;
+            std::memcpy(&x, src + i * sizeof(Index), sizeof x);
+            dst[i] = x;
+            largest = std::max<std::uint32_t>(largest, x);
+        }
+    } else {
+        for (std::size_t i = 0; i < v.count; ++i) {
+            Index x;
+            std::memcpy(&x, v.data + i * v.stride, sizeof x);
+            dst[i] = x;
+            largest = std::max<std::uint32_t>(largest, x);
+        }
+    }
+    if (largest >= vertexCount) {
+        std::size_t i = 0;
+        while (dst[i] < vertexCount) {
+            ++i;
+        }
+        return error("accessors[" + std::to_string(accessor) + "]",
+                     "index " + std::to_string(dst[i]) + " at element " + std::to_string(i) + " is beyond the " +
+                         std::to_string(vertexCount) + " vertices of " + where);
+    }
+    return true;
+}
+
+
+bool Accessors::readIndices(const View& v, std::size_t vertexCount, int accessor, const std::string& where,
+                            std::vector<std::uint32_t>& sequence) {
+    switch (v.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return readIndicesOf<std::uint8_t>(v, vertexCount, accessor, where, sequence);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return readIndicesOf<std::uint16_t>(v, vertexCount, accessor, where, sequence);
+    default: return readIndicesOf<std::uint32_t>(v, vertexCount, accessor, where, sequence);
+    }
+}
+
+} // namespace lab::gltf_detail
