@@ -267,6 +267,43 @@ TEST(Gltf, GlbWhoseHeaderClaimsMoreThanTheFileHolds) {
     EXPECT_NE(d[0].message.find("claims 1000 bytes"), std::string::npos) << d[0].str();
 }
 
+// tinygltf's JSON parse recurses once per level: a deep file must be refused before it runs,
+// not overflow the stack (100,000 levels crashed `lab render` before the bound).
+TEST(Gltf, DeeplyNestedJsonIsRefusedBeforeParsing) {
+    TempFolder dir;
+    const std::string deep = std::string(100'000, '[') + std::string(100'000, ']');
+    writeText(dir.path() / "deep.gltf", R"({"asset": {"version": "2.0"}, "extras": )" + deep + "}");
+    std::string json = R"({"asset":{"version":"2.0"},"extras":)" + deep + "}";
+    json.resize((json.size() + 3) & ~std::size_t{3}, ' ');
+    std::string glb = "glTF";
+    auto u32 = [&](std::size_t v) {
+        auto x = static_cast<std::uint32_t>(v);
+        glb.append(reinterpret_cast<const char*>(&x), 4);
+    };
+    u32(2);
+    u32(20 + json.size());
+    u32(json.size());
+    u32(0x4E4F534Au);
+    glb += json;
+    writeText(dir.path() / "deep.glb", glb);
+    for (const char* name : {"deep.gltf", "deep.glb"}) {
+        Diagnostics d;
+        EXPECT_FALSE(loadGltf(dir.path() / name, name, d)) << name;
+        ASSERT_EQ(d.size(), 1u) << name;
+        EXPECT_NE(d[0].message.find("nested deeper than 128 levels"), std::string::npos) << d[0].str();
+    }
+    GltfLimits shallow;
+    shallow.maxJsonDepth = 2; // the quad nests 4 deep
+    TempFolder quad;
+    Fixture f;
+    fs::create_directories(quad.path() / "model");
+    writeText(quad.path() / "model" / "quad.bin", f.bin);
+    writeText(quad.path() / "model" / "quad.gltf", f.gltf.dump());
+    Diagnostics d;
+    EXPECT_FALSE(loadGltf(quad.path() / "model" / "quad.gltf", "quad.gltf", d, shallow));
+    EXPECT_TRUE(loadGltf(quad.path() / "model" / "quad.gltf", "quad.gltf", d)) << toString(d);
+}
+
 TEST(Gltf, LimitsAreCheckedBeforeAllocating) {
     TempFolder dir;
     Fixture f;

@@ -11,6 +11,7 @@
 
 #include "core/file_io.h"
 #include "core/gltf_accessors.h"
+#include "core/json_text.h"
 #include "core/paths.h"
 
 #include <nlohmann/json.hpp>
@@ -440,11 +441,22 @@ bool checkUris(std::string_view json, const std::string& file, Diagnostics& out)
     return ok;
 }
 
-// The file parsed by tinygltf behind the guards: the GLB header and every URI checked first,
+// The JSON of a .gltf, or of a .glb's JSON chunk, checked before any parser recurses into it:
+// nested no deeper than `maxDepth`, and every buffer or image URI inside the model's folder.
+bool checkJson(std::string_view json, int maxDepth, const std::string& displayName, Diagnostics& diagnostics) {
+    if (!jsonNestingWithin(json, maxDepth)) {
+        diagnostics.push_back({displayName, "", "JSON nested deeper than " + std::to_string(maxDepth) + " levels"});
+        return false;
+    }
+    return checkUris(json, displayName, diagnostics);
+}
+
+// The file parsed by tinygltf behind the guards: the GLB header and the JSON checked first,
 // files opened only through `guard`, images skipped and counted in `skippedImages`. Nullopt
 // after a diagnostic.
 std::optional<tinygltf::Model> parseModel(std::string_view bytes, FileGuard& guard, int& skippedImages,
-                                          const std::string& displayName, Diagnostics& diagnostics) {
+                                          const GltfLimits& limits, const std::string& displayName,
+                                          Diagnostics& diagnostics) {
     tinygltf::TinyGLTF gltf;
     gltf.SetFsCallbacks({guardedFileExists, noExpansion, guardedReadWholeFile, refuseWrite, &guard});
     gltf.SetImageLoader(skipImage, &skippedImages);
@@ -460,13 +472,13 @@ std::optional<tinygltf::Model> parseModel(std::string_view bytes, FileGuard& gua
         }
         std::uint32_t jsonLength;
         std::memcpy(&jsonLength, bytes.data() + 12, 4);
-        if (!checkUris(bytes.substr(20, jsonLength), displayName, diagnostics)) {
+        if (!checkJson(bytes.substr(20, jsonLength), limits.maxJsonDepth, displayName, diagnostics)) {
             return std::nullopt;
         }
         ok = gltf.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                        static_cast<unsigned>(bytes.size()), guard.folder.string());
     } else {
-        if (!checkUris(bytes, displayName, diagnostics)) {
+        if (!checkJson(bytes, limits.maxJsonDepth, displayName, diagnostics)) {
             return std::nullopt;
         }
         ok = gltf.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()),
@@ -514,7 +526,7 @@ std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& disp
     }
     FileGuard guard{canonicalFolder(file.parent_path()), limits.maxFileBytes, {}};
     int skippedImages = 0;
-    std::optional<tinygltf::Model> model = parseModel(mapped->bytes(), guard, skippedImages, displayName, diagnostics);
+    std::optional<tinygltf::Model> model = parseModel(mapped->bytes(), guard, skippedImages, limits, displayName, diagnostics);
     mapped.reset(); // tinygltf holds its own copy of the buffers now
     if (!model) {
         return std::nullopt;

@@ -25,6 +25,7 @@ struct GltfLimits {
     std::size_t maxTriangles = 20'000'000;
     std::size_t maxVertices = 20'000'000;
     int maxNodeDepth = 64;
+    int maxJsonDepth = 128; // JSON nesting, bounded before tinygltf's recursive parse sees the text
 };
 
 struct GltfResult {
