@@ -180,6 +180,109 @@ int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float
 // lab check
 //----------------------------------------------------------------------------------------
 
+namespace {
+
+// What `lab check` prints and keeps for report.txt: one line a preset, then the totals.
+struct CheckLog {
+    std::string text;
+    int passed = 0;
+    int failed = 0;
+
+    void line(const std::string& s) {
+        std::printf("%s\n", s.c_str());
+        text += s + "\n";
+    }
+    void pass(const std::string& s) {
+        line(s);
+        ++passed;
+    }
+    void fail(const std::string& s) {
+        line(s);
+        ++failed;
+    }
+};
+
+// "max M  mean X  over tolerance P%", or both sizes when they differ; "" without a golden.
+std::string comparisonFigures(const std::optional<Comparison>& cmp, const Image& actual,
+                              const std::optional<Image>& golden) {
+    if (cmp && cmp->sameSize) {
+        return "max " + std::to_string(cmp->maxDifference) + "  mean " + fixed(cmp->meanDifference, 3) +
+               "  over tolerance " + fixed(cmp->failingShare * 100.0, 3) + "%";
+    }
+    if (cmp) {
+        return "size " + std::to_string(actual.width) + "x" + std::to_string(actual.height) + " vs golden " +
+               std::to_string(golden->width) + "x" + std::to_string(golden->height);
+    }
+    return "";
+}
+
+// --update: rewrites the golden unless the render is the same image.
+void updateGolden(const std::string& name, const Image& actual, const fs::path& goldenFile, bool hadGolden,
+                  const std::optional<Comparison>& cmp, const std::string& figures, CheckLog& log) {
+    std::string error;
+    if (cmp && cmp->sameSize && cmp->maxDifference == 0) {
+        log.pass("SAME     " + name);
+    } else if (!writePng(actual, goldenFile, error)) {
+        log.fail("ERROR    " + name + ": " + error);
+    } else {
+        log.pass((hadGolden ? "UPDATED  " : "CREATED  ") + name + (figures.empty() ? "" : "  (" + figures + ")"));
+    }
+}
+
+// A render that differs: the actual and diff images go to the report folder, named in the line.
+void reportFailure(const std::string& name, const Image& actual, const Comparison& cmp, const std::string& figures,
+                   const fs::path& reportFolder, CheckLog& log) {
+    std::error_code ec;
+    fs::create_directories(reportFolder, ec);
+    fs::path actualFile = reportFolder / (name + ".actual.png");
+    fs::path diffFile = reportFolder / (name + ".diff.png");
+    std::string error, written;
+    if (writePng(actual, actualFile, error) && (!cmp.sameSize || writePng(cmp.diff, diffFile, error))) {
+        written = "  -> " + actualFile.string() + (cmp.sameSize ? ", " + diffFile.string() : "");
+    } else {
+        written = "  (could not write the images: " + error + ")";
+    }
+    log.fail("FAIL     " + name + "  " + figures + written);
+}
+
+// One preset: render, then compare with its golden (or, with --update, rewrite the golden).
+void checkPreset(Gpu& gpu, const LoadedPreset& preset, const std::string& name, const CheckOptions& options,
+                 CheckLog& log) {
+    Diagnostics diagnostics;
+    std::optional<Image> actual = gpu.renderer.render(preset, options.size.width, options.size.height, diagnostics);
+    if (!actual) {
+        printDiagnostics(diagnostics);
+        log.fail("ERROR    " + name + ": render failed");
+        return;
+    }
+    fs::path goldenFile = options.golden / (name + ".png");
+    std::string error;
+    std::optional<Image> golden;
+    if (fs::exists(goldenFile)) {
+        golden = readPng(goldenFile, error);
+        if (!golden) {
+            log.fail("ERROR    " + name + ": golden " + goldenFile.string() + ": " + error);
+            return;
+        }
+    }
+    std::optional<Comparison> cmp;
+    if (golden) {
+        cmp = compareImages(*actual, *golden, options.tolerance);
+    }
+    std::string figures = comparisonFigures(cmp, *actual, golden);
+    if (options.update) {
+        updateGolden(name, *actual, goldenFile, golden.has_value(), cmp, figures, log);
+    } else if (!golden) {
+        log.fail("MISSING  " + name + ": no golden " + goldenFile.string() + " (create it with --update)");
+    } else if (cmp->passes(options.tolerance)) {
+        log.pass("PASS     " + name + "  " + figures);
+    } else {
+        reportFailure(name, *actual, *cmp, figures, options.report, log);
+    }
+}
+
+} // namespace
+
 int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) {
     if (!options.update && !fs::is_directory(options.golden)) {
         std::fprintf(stderr, "lab check: --golden %s: no such folder\n", options.golden.string().c_str());
@@ -193,99 +296,24 @@ int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) 
     if (!gpu.start()) {
         return kExitFailure;
     }
-    std::string report;
-    auto line = [&](const std::string& s) {
-        std::printf("%s\n", s.c_str());
-        report += s + "\n";
-    };
-    int passed = 0, failed = 0;
-    bool reportFolderReady = false;
+    CheckLog log;
     for (std::size_t i = 0; i < presets.size(); ++i) {
         std::string name = presets[i].stem().string();
-        if (!loaded[i]) {
-            line("ERROR    " + name + ": the preset does not load (see above)");
-            ++failed;
-            continue;
-        }
-        Diagnostics diagnostics;
-        std::optional<Image> actual =
-            gpu.renderer.render(*loaded[i], options.size.width, options.size.height, diagnostics);
-        if (!actual) {
-            printDiagnostics(diagnostics);
-            line("ERROR    " + name + ": render failed");
-            ++failed;
-            continue;
-        }
-        fs::path goldenFile = options.golden / (name + ".png");
-        std::string error;
-        std::optional<Image> golden;
-        if (fs::exists(goldenFile)) {
-            golden = readPng(goldenFile, error);
-            if (!golden) {
-                line("ERROR    " + name + ": golden " + goldenFile.string() + ": " + error);
-                ++failed;
-                continue;
-            }
-        }
-        std::optional<Comparison> cmp;
-        if (golden) {
-            cmp = compareImages(*actual, *golden, options.tolerance);
-        }
-        std::string figures;
-        if (cmp && cmp->sameSize) {
-            figures = "max " + std::to_string(cmp->maxDifference) + "  mean " + fixed(cmp->meanDifference, 3) +
-                      "  over tolerance " + fixed(cmp->failingShare * 100.0, 3) + "%";
-        } else if (cmp) {
-            figures = "size " + std::to_string(actual->width) + "x" + std::to_string(actual->height) + " vs golden " +
-                      std::to_string(golden->width) + "x" + std::to_string(golden->height);
-        }
-        if (options.update) {
-            if (cmp && cmp->sameSize && cmp->maxDifference == 0) {
-                line("SAME     " + name);
-            } else if (!writePng(*actual, goldenFile, error)) {
-                line("ERROR    " + name + ": " + error);
-                ++failed;
-                continue;
-            } else {
-                line((golden ? "UPDATED  " : "CREATED  ") + name + (figures.empty() ? "" : "  (" + figures + ")"));
-            }
-            ++passed;
-            continue;
-        }
-        if (!golden) {
-            line("MISSING  " + name + ": no golden " + goldenFile.string() + " (create it with --update)");
-            ++failed;
-            continue;
-        }
-        if (cmp->passes(options.tolerance)) {
-            line("PASS     " + name + "  " + figures);
-            ++passed;
-            continue;
-        }
-        ++failed;
-        if (!reportFolderReady) {
-            fs::create_directories(options.report, ec);
-            reportFolderReady = true;
-        }
-        fs::path actualFile = options.report / (name + ".actual.png");
-        fs::path diffFile = options.report / (name + ".diff.png");
-        std::string written;
-        if (writePng(*actual, actualFile, error) && (!cmp->sameSize || writePng(cmp->diff, diffFile, error))) {
-            written = "  -> " + actualFile.string() + (cmp->sameSize ? ", " + diffFile.string() : "");
+        if (loaded[i]) {
+            checkPreset(gpu, *loaded[i], name, options, log);
         } else {
-            written = "  (could not write the images: " + error + ")";
+            log.fail("ERROR    " + name + ": the preset does not load (see above)");
         }
-        line("FAIL     " + name + "  " + figures + written);
     }
-    line(std::to_string(passed) + " passed, " + std::to_string(failed) + " failed");
+    log.line(std::to_string(log.passed) + " passed, " + std::to_string(log.failed) + " failed");
     if (!options.update) {
         std::string error;
         fs::create_directories(options.report, ec);
-        if (!writeFileAtomic(options.report / "report.txt", report, error)) {
+        if (!writeFileAtomic(options.report / "report.txt", log.text, error)) {
             std::fprintf(stderr, "lab check: %s\n", error.c_str());
         }
     }
-    if (failed > 0) {
+    if (log.failed > 0) {
         return anyBad ? kExitBadInput : kExitFailure;
     }
     return kExitOk;
