@@ -6,7 +6,7 @@
 #include "render/renderer.h"
 #include "render/shader.h"
 #include "ui/screen.h"
-#include "ui/widgets.h"
+#include "ui/widget_map.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -21,7 +21,7 @@ constexpr float kMinPresenterScale = 1.5f, kMaxPresenterScale = 2.5f, kPresenter
 constexpr float kToastSeconds = 4.0f;
 const glm::vec3 kWindowBackground(0.09f, 0.09f, 0.11f);
 
-unsigned modifiersOf(const KeyPress& k) { return (k.ctrl ? kCtrl : 0u) | (k.shift ? kShift : 0u) | (k.alt ? 4u : 0u); }
+unsigned modifiersOf(const KeyPress& k) { return (k.ctrl ? kCtrl : 0u) | (k.shift ? kShift : 0u) | (k.alt ? kAlt : 0u); }
 
 } // namespace
 

@@ -23,7 +23,8 @@ constexpr int F1 = 290, F11 = 300, F12 = 301, Equal = 61, Minus = 45, KeypadAdd 
 constexpr int KeypadEnter = 335;
 } // namespace keys
 
-enum Modifier : unsigned { kNoModifier = 0, kCtrl = 1, kShift = 2 };
+// Modifier bits of a key press. No row uses Alt, so a press with Alt held runs no command.
+enum Modifier : unsigned { kNoModifier = 0, kCtrl = 1, kShift = 2, kAlt = 4 };
 
 enum class Command {
     // The scene and its files (the workspace carries these out)

@@ -16,7 +16,7 @@
 
 #include "platform/imgui_glfw.h"
 #include "platform/imgui_host.h"
-#include "ui/widgets.h"
+#include "ui/widget_map.h"
 #include "render/gl.h"
 
 #include <GLFW/glfw3.h>

@@ -3,6 +3,7 @@
 
 #include "ui/widgets.h"
 
+#include "core/lighting.h"
 #include "core/limits.h"
 
 #include <glm/glm.hpp>
@@ -174,7 +175,8 @@ void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s,
     arrow(dl, f, R, 0.85f, IM_COL32(120, 220, 120, 255), "R");
     arrow(dl, f, V, 0.95f, IM_COL32(90, 220, 230, 255), "V");
     if (a.brdf != BrdfModel::Phong) {
-        arrow(dl, f, glm::normalize(L + V), 0.7f, IM_COL32(255, 100, 100, 255), "H");
+        glm::vec3 H = glsl::halfVector(glm::vec3(L, 0.0f), glm::vec3(V, 0.0f)); // the model's own H
+        arrow(dl, f, glm::vec2(H), 0.7f, IM_COL32(255, 100, 100, 255), "H");
     }
     if (probe && !probe->lights.empty()) {
         probeArrows(dl, f, *probe, a.brdf);

@@ -1,34 +1,18 @@
-// widgets.h — small ImGui helpers shared by the panels, and the widget map for GUI tests.
+// widgets.h — small ImGui helpers shared by the panels.
 //
-// ImGui only: no GL, no files. mark() records the screen rectangle of the last item under a
-// stable name ("material.diffuse"); the app writes the map to a file when asked
-// (`lab --layout-file`), so GUI tests can point real mouse events at real widgets.
+// ImGui only: no GL, no files. mark() (ui/widget_map.h) names the last item for the GUI tests.
 #pragma once
 
 #include "core/commands.h"
-#include "ui/layout.h"
+#include "ui/widget_map.h"
 
 #include <glm/vec3.hpp>
 #include <imgui.h>
 
-#include <map>
 #include <string>
 #include <vector>
 
 namespace lab::ui {
-
-class WidgetMap {
-public:
-    void clear() { rects_.clear(); }
-    void mark(const std::string& name); // the last ImGui item
-    void set(const std::string& name, const Rect& r) { rects_[name] = r; }
-    std::string text() const;           // "name x y w h" per line, sorted by name
-private:
-    std::map<std::string, Rect> rects_;
-};
-
-WidgetMap& widgets();
-inline void mark(const std::string& name) { widgets().mark(name); }
 
 // A material coefficient triplet: colour square plus typed R, G, B in [0, 1]. True if changed.
 bool colorEdit(const char* label, glm::vec3& value);

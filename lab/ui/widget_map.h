@@ -1,0 +1,29 @@
+// widget_map.h — where each named widget was drawn this frame, for the GUI and browser tests.
+//
+// mark() records the screen rectangle of the last ImGui item under a stable name
+// ("material.diffuse"); the app writes the map to a file when asked (`lab --layout-file`), the
+// page hands it to its tests, so tests can point real mouse events at real widgets. This header
+// needs no ImGui.
+#pragma once
+
+#include "ui/layout.h"
+
+#include <map>
+#include <string>
+
+namespace lab::ui {
+
+class WidgetMap {
+public:
+    void clear() { rects_.clear(); }
+    void mark(const std::string& name); // the last ImGui item
+    void set(const std::string& name, const Rect& r) { rects_[name] = r; }
+    std::string text() const;           // "name x y w h" per line, sorted by name
+private:
+    std::map<std::string, Rect> rects_;
+};
+
+WidgetMap& widgets();
+inline void mark(const std::string& name) { widgets().mark(name); }
+
+} // namespace lab::ui
