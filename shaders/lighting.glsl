@@ -203,6 +203,21 @@ float lightAttenuation(Light l, vec3 p, vec3 L) {
     return att;
 }
 
+// Light l's terms of the sum below, Ia_i*Ka + Att_i (Id_i*Kd max(0, N.L_i) + Is_i*Ks S_i),
+// each on its own and 0 where its switch is off. The shaders add them up; the GUI's probe shows
+// them one by one. Phong 1975, with the OpenGL 1.x light model.
+LightTerms lightContribution(Material m, Brdf b, Terms t, Light l, vec3 p, vec3 N, vec3 V) {
+    LightTerms c;
+    c.L = lightVector(l, p);
+    c.attenuation = lightAttenuation(l, p, c.L);
+    c.NoL = dot(N, c.L);
+    c.specularFactor = specularFactor(N, c.L, V, m.shininess, b);
+    c.ambient = t.ambient ? l.ambient * m.ambient : vec3(0.0f);
+    c.diffuse = t.diffuse ? c.attenuation * l.diffuse * m.diffuse * max(c.NoL, 0.0f) : vec3(0.0f);
+    c.specular = t.specular ? c.attenuation * l.specular * m.specular * c.specularFactor : vec3(0.0f);
+    return c;
+}
+
 // colour = Ke + Ia*Ka + sum_i [ Ia_i*Ka + Att_i (Id_i*Kd max(0, N.L_i) + Is_i*Ks S_i) ],
 // clamped to [0, 1]. Phong 1975, with the OpenGL 1.x light model.
 vec3 shade(Material m, Brdf b, Terms t, vec3 ambientLight, Light lights[MAX_LIGHTS],
@@ -216,19 +231,10 @@ vec3 shade(Material m, Brdf b, Terms t, vec3 ambientLight, Light lights[MAX_LIGH
         color += ambientLight * m.ambient;
     }
     for (int i = 0; i < lightCount; ++i) {
-        Light l = lights[i];
-        if (t.ambient) {
-            color += l.ambient * m.ambient;
-        }
-        vec3 L = lightVector(l, p);
-        float att = lightAttenuation(l, p, L);
-        float NoL = dot(N, L);
-        if (t.diffuse) {
-            color += att * l.diffuse * m.diffuse * max(NoL, 0.0f);
-        }
-        if (t.specular) {
-            color += att * l.specular * m.specular * specularFactor(N, L, V, m.shininess, b);
-        }
+        LightTerms c = lightContribution(m, b, t, lights[i], p, N, V);
+        color += c.ambient;
+        color += c.diffuse;
+        color += c.specular;
     }
     return clamp(color, 0.0f, 1.0f);
 }

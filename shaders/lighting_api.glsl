@@ -8,20 +8,12 @@
 const float PI = 3.14159265358979f;
 const int MAX_LIGHTS = 8;
 
-const int LIGHT_POINT = 0;
-const int LIGHT_DIRECTIONAL = 1;
-const int LIGHT_SPOT = 2;
-
-const int BRDF_PHONG = 0;
-const int BRDF_BLINN_PHONG = 1;
-const int BRDF_COOK_TORRANCE = 2;
-
-const int DISTRIBUTION_BECKMANN = 0;
-const int DISTRIBUTION_GAUSSIAN = 1;
-const int DISTRIBUTION_GGX = 2;
-
-const int FRESNEL_SCHLICK = 0;
-const int FRESNEL_FULL = 1;
+// The values of Light.type, Brdf.model, Brdf.distribution and Brdf.fresnel, one line each: the
+// order of preset.h's enums (lab/core/lighting.cpp checks that they agree).
+const int LIGHT_POINT = 0, LIGHT_DIRECTIONAL = 1, LIGHT_SPOT = 2;
+const int BRDF_PHONG = 0, BRDF_BLINN_PHONG = 1, BRDF_COOK_TORRANCE = 2;
+const int DISTRIBUTION_BECKMANN = 0, DISTRIBUTION_GAUSSIAN = 1, DISTRIBUTION_GGX = 2;
+const int FRESNEL_SCHLICK = 0, FRESNEL_FULL = 1;
 
 struct Material {
     vec3 emissive;
@@ -62,6 +54,18 @@ struct Light {
     float exponent;
 };
 
+// One light's share of the colour at a point, term by term, with what the terms come from.
+// A term whose switch (Terms) is off is 0.
+struct LightTerms {
+    vec3 L;               // unit vector towards the light
+    float attenuation;    // Att_i, the spot factor included
+    float NoL;            // N.L, not clamped
+    float specularFactor; // S_i, 0 wherever N.L <= 0
+    vec3 ambient;         // Ia_i*Ka
+    vec3 diffuse;         // Att_i Id_i*Kd max(0, N.L)
+    vec3 specular;        // Att_i Is_i*Ks S_i
+};
+
 // Light falloff
 float attenuation(vec3 c, float d);
 float spotFactor(vec3 L, vec3 S, float cosCutoff, float exponent);
@@ -89,5 +93,6 @@ float specularFactor(vec3 N, vec3 L, vec3 V, float shininess, Brdf b);
 // The whole model
 vec3 lightVector(Light l, vec3 p);
 float lightAttenuation(Light l, vec3 p, vec3 L);
+LightTerms lightContribution(Material m, Brdf b, Terms t, Light l, vec3 p, vec3 N, vec3 V);
 vec3 shade(Material m, Brdf b, Terms t, vec3 ambientLight, Light lights[MAX_LIGHTS],
            int lightCount, vec3 p, vec3 N);
