@@ -44,12 +44,17 @@ struct Fixture {
         })");
     }
 
-    // Writes model/quad.gltf and model/quad.bin under `dir` and loads the .gltf.
-    std::optional<GltfResult> load(const fs::path& dir, Diagnostics& d) const {
+    // Writes model/quad.gltf and model/quad.bin under `dir`; returns the .gltf's path.
+    fs::path write(const fs::path& dir) const {
         fs::create_directories(dir / "model");
         writeText(dir / "model" / "quad.bin", bin);
         writeText(dir / "model" / "quad.gltf", gltf.dump());
-        return loadGltf(dir / "model" / "quad.gltf", "quad.gltf", d);
+        return dir / "model" / "quad.gltf";
+    }
+
+    // Writes the files and loads the .gltf.
+    std::optional<GltfResult> load(const fs::path& dir, Diagnostics& d, const GltfLimits& limits = {}) const {
+        return loadGltf(write(dir), "quad.gltf", d, limits);
     }
 };
 
@@ -295,13 +300,10 @@ TEST(Gltf, DeeplyNestedJsonIsRefusedBeforeParsing) {
     GltfLimits shallow;
     shallow.maxJsonDepth = 2; // the quad nests 4 deep
     TempFolder quad;
-    Fixture f;
-    fs::create_directories(quad.path() / "model");
-    writeText(quad.path() / "model" / "quad.bin", f.bin);
-    writeText(quad.path() / "model" / "quad.gltf", f.gltf.dump());
     Diagnostics d;
-    EXPECT_FALSE(loadGltf(quad.path() / "model" / "quad.gltf", "quad.gltf", d, shallow));
-    EXPECT_TRUE(loadGltf(quad.path() / "model" / "quad.gltf", "quad.gltf", d)) << toString(d);
+    EXPECT_FALSE(Fixture().load(quad.path(), d, shallow));
+    d.clear();
+    EXPECT_TRUE(Fixture().load(quad.path(), d)) << toString(d);
 }
 
 TEST(Gltf, LimitsAreCheckedBeforeAllocating) {
@@ -309,11 +311,8 @@ TEST(Gltf, LimitsAreCheckedBeforeAllocating) {
     Fixture f;
     GltfLimits limits;
     limits.maxTriangles = 1;
-    fs::create_directories(dir.path() / "model");
-    writeText(dir.path() / "model" / "quad.bin", f.bin);
-    writeText(dir.path() / "model" / "quad.gltf", f.gltf.dump());
     Diagnostics d;
-    EXPECT_FALSE(loadGltf(dir.path() / "model" / "quad.gltf", "quad.gltf", d, limits));
+    EXPECT_FALSE(f.load(dir.path(), d, limits));
     ASSERT_EQ(d.size(), 1u);
     EXPECT_NE(d[0].message.find("more than 1 triangles"), std::string::npos) << d[0].str();
 }
@@ -321,9 +320,7 @@ TEST(Gltf, LimitsAreCheckedBeforeAllocating) {
 TEST(Gltf, VertexAndFileSizeLimitsAreCheckedBeforeReading) {
     TempFolder dir;
     Fixture f;
-    fs::create_directories(dir.path() / "model");
-    writeText(dir.path() / "model" / "quad.bin", f.bin);
-    writeText(dir.path() / "model" / "quad.gltf", f.gltf.dump());
+    f.write(dir.path());
     GltfLimits vertices;
     vertices.maxVertices = 3; // the quad has 4
     Diagnostics d;
