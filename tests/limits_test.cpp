@@ -42,6 +42,14 @@ TEST(Limits, ClampGivesTheNearestAcceptedValue) {
     EXPECT_FALSE(limits::contains(limits::kMaterialColor, std::nanf("")));
 }
 
+TEST(Limits, FiniteIsEveryFiniteFloat) {
+    static_assert(limits::contains(limits::kFinite, -limits::kUnbounded));
+    static_assert(limits::contains(limits::kFinite, limits::kUnbounded));
+    EXPECT_FALSE(limits::contains(limits::kFinite, kInf));
+    EXPECT_FALSE(limits::contains(limits::kFinite, -kInf));
+    EXPECT_EQ(limits::clamp(limits::kFinite, kInf), limits::kUnbounded);
+}
+
 // Every range a preset key is validated against, with a body that puts a value at that key.
 struct Field {
     const char* where;  // the diagnostic's path

@@ -3,8 +3,8 @@
 // The preset validator (preset_read.cpp) refuses what lies outside these ranges, with `text` as
 // its wording ("must be greater than 0, got -3"); the GUI's sliders span [sliderMin, sliderMax]
 // and clamp typed values with clamp(), so the panel can never produce a preset the validator
-// refuses. Numbers with no range (positions, directions, the model's transform) are any finite
-// float and have no entry here; rules that tie several values together (far > near, a non-zero
+// refuses. Numbers with no range of their own (positions, directions, the model's transform)
+// are any finite float, kFinite. Rules that tie several values together (far > near, a non-zero
 // direction or scale, c0, c1, c2 not all 0) are the validator's.
 //
 // This file owns the ranges and the two questions asked of them. It does not read JSON or
