@@ -12,6 +12,7 @@
 #include "ui/layout.h"
 #include "ui/panel.h"
 #include "ui/plots.h"
+#include "ui/shader_editor.h"
 #include "ui/tools.h"
 #include "ui/view.h"
 
