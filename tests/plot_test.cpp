@@ -2,10 +2,13 @@
 #include "core/plot.h"
 
 #include "core/lighting.h"
+#include "core/preset.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <optional>
 
 namespace lab {
 namespace {
@@ -51,6 +54,45 @@ TEST(Plot, SpecularMatchesTheSharedLightingFunctions) {
                                            glm::vec3(std::sin(to), std::cos(to), 0), p.material.shininess, packBrdf(p));
             EXPECT_FLOAT_EQ(s[std::size_t(deg + 90)].specular, luminance(p.material.specular * S)) << deg;
         }
+    }
+}
+
+// The plot follows the preset's term switches as the shaders do: a switched-off term reads 0.
+TEST(Plot, SwitchedOffTermsReadZero) {
+    Preset p;
+    p.terms.specular = false;
+    for (const PlotSample& x : reflectedIntensity(p, 30.0f)) {
+        EXPECT_EQ(x.specular, 0.0f) << x.thetaOutDeg;
+        EXPECT_GT(x.diffuse, 0.0f) << x.thetaOutDeg;
+        EXPECT_EQ(x.total, x.diffuse);
+    }
+    p.terms = {};
+    p.terms.diffuse = false;
+    std::vector<PlotSample> s = reflectedIntensity(p, 30.0f);
+    for (const PlotSample& x : s) {
+        EXPECT_EQ(x.diffuse, 0.0f) << x.thetaOutDeg;
+        EXPECT_EQ(x.total, x.specular);
+    }
+    EXPECT_GT(s[120].specular, 0.0f); // the mirror direction, 30 degrees
+    // Emissive and ambient are not plotted: switching them changes nothing.
+    Preset q;
+    q.terms.emissive = false;
+    q.terms.ambient = false;
+    std::vector<PlotSample> a = reflectedIntensity(q, 30.0f), b = reflectedIntensity(Preset{}, 30.0f);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].total, b[i].total);
+    }
+}
+
+// The shipped "ambient only" preset: no diffuse, no specular anywhere in the plot.
+TEST(Plot, AmbientOnlyPresetPlotsNothing) {
+    Diagnostics diagnostics;
+    std::optional<LoadedPreset> p = loadPreset(std::filesystem::path(LAB_SOURCE_DIR) / "presets/01-ambient-only.json", diagnostics);
+    ASSERT_TRUE(p);
+    for (const PlotSample& x : reflectedIntensity(p->preset, p->preset.plotIncidentDeg)) {
+        EXPECT_EQ(x.diffuse, 0.0f);
+        EXPECT_EQ(x.specular, 0.0f);
+        EXPECT_EQ(x.total, 0.0f);
     }
 }
 

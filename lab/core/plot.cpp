@@ -28,19 +28,39 @@ const std::array<glm::vec2, 181>& outgoingDirections() {
 } // namespace
 
 std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentDeg) {
+    // The material, BRDF and term switches as the shaders get them, and a unit white directional
+    // light from L: lightContribution() then gives each sample's diffuse and specular parts, 0
+    // where the preset switches the term off, exactly as the renderer sums them.
+    glsl::Material material;
+    material.emissive = preset.material.emissive;
+    material.ambient = preset.material.ambient;
+    material.diffuse = preset.material.diffuse;
+    material.specular = preset.material.specular;
+    material.shininess = preset.material.shininess;
     const glsl::Brdf brdf = packBrdf(preset);
+    glsl::Terms terms;
+    terms.emissive = preset.terms.emissive;
+    terms.ambient = preset.terms.ambient;
+    terms.diffuse = preset.terms.diffuse;
+    terms.specular = preset.terms.specular;
     const float ti = glm::radians(incidentDeg);
     const glm::vec3 N(0.0f, 1.0f, 0.0f);
     const glm::vec3 L(-std::sin(ti), std::cos(ti), 0.0f);
-    const float diffuse = luminance(preset.material.diffuse * std::max(glm::dot(N, L), 0.0f));
+    glsl::Light light{};
+    light.type = glsl::LIGHT_DIRECTIONAL;
+    light.direction = -L;
+    light.diffuse = glm::vec3(1.0f);
+    light.specular = glm::vec3(1.0f);
+    light.attenuation = glm::vec3(1.0f, 0.0f, 0.0f);
+    const glm::vec3 p(0.0f);
     std::vector<PlotSample> samples;
     samples.reserve(181);
     const std::array<glm::vec2, 181>& directions = outgoingDirections();
     for (int deg = -90; deg <= 90; ++deg) {
         const glm::vec2& d = directions[static_cast<std::size_t>(deg + 90)];
-        glm::vec3 V(d.x, d.y, 0.0f);
-        float S = glsl::specularFactor(N, L, V, preset.material.shininess, brdf);
-        float specular = luminance(preset.material.specular * S);
+        const glsl::LightTerms c = glsl::lightContribution(material, brdf, terms, light, p, N, glm::vec3(d.x, d.y, 0.0f));
+        float diffuse = luminance(c.diffuse);
+        float specular = luminance(c.specular);
         samples.push_back({static_cast<float>(deg), diffuse, specular, diffuse + specular});
     }
     return samples;

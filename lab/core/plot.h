@@ -2,8 +2,10 @@
 //
 // A unit white directional light in the plane of incidence: N = (0, 1, 0),
 // L = (-sin θi, cos θi, 0), V = (sin θo, cos θo, 0), θo from -90° to 90° in 1° steps. Each
-// sample is the Rec. 709 luminance of Kd·max(0, N·L), of Ks·S and of their sum, with S from the
-// same lighting functions the shaders run (lab::glsl).
+// sample is the Rec. 709 luminance of Kd·max(0, N·L), of Ks·S and of their sum, from the same
+// lighting function the shaders run for one light (glsl::lightContribution): a term the preset
+// switches off (Preset::terms.diffuse, .specular) reads 0, as on the model. Emissive and ambient
+// light do not depend on L or V and are not part of the plot.
 #pragma once
 
 #include "core/preset.h"

@@ -83,6 +83,19 @@ check plot-peak-at-mirror-angle test "$peak" = "45"
 peak=$(tail -n +2 "$tmp/p30.csv" | sort -t, -k3 -g | tail -1 | cut -d, -f1)
 check plot-incident-flag test "$peak" = "30"
 expect plot-bad-angle 2 'incident-deg' -- "$lab" plot "$phong" --out "$tmp/q.csv" --incident-deg 120
+# The preset's term switches apply: a switched-off term is 0 in every row (column 2 diffuse,
+# 3 specular), a switched-on one is not.
+column_max() { tail -n +2 "$1" | cut -d, -f"$2" | sort -g | tail -1; }
+"$lab" plot "$src/presets/01-ambient-only.json" --out "$tmp/ambient.csv" >/dev/null
+check plot-ambient-only-diffuse-is-0 test "$(column_max "$tmp/ambient.csv" 2)" = "0"
+check plot-ambient-only-specular-is-0 test "$(column_max "$tmp/ambient.csv" 3)" = "0"
+check plot-ambient-only-total-is-0 test "$(column_max "$tmp/ambient.csv" 4)" = "0"
+"$lab" plot "$src/presets/02-diffuse-only.json" --out "$tmp/diffuse.csv" >/dev/null
+check plot-diffuse-only-specular-is-0 test "$(column_max "$tmp/diffuse.csv" 3)" = "0"
+check plot-diffuse-only-diffuse-is-not-0 test "$(column_max "$tmp/diffuse.csv" 2)" != "0"
+"$lab" plot "$src/presets/04-specular-only.json" --out "$tmp/specular.csv" >/dev/null
+check plot-specular-only-diffuse-is-0 test "$(column_max "$tmp/specular.csv" 2)" = "0"
+check plot-specular-only-specular-is-not-0 test "$(column_max "$tmp/specular.csv" 3)" != "0"
 
 # --- check --------------------------------------------------------------------------------
 mkdir -p "$tmp/golden"
