@@ -119,7 +119,8 @@ void App::Impl::carryOut(const Request& r) {
 }
 
 void App::Impl::compileShaders(bool builtin) {
-    StageSources sources = builtin ? builtinStageSources() : StageSources{shaderEditor.vertex, shaderEditor.fragment};
+    StageSources sources = builtin ? builtinStageSources()
+                                   : StageSources{shaderEditor.vertex, shaderEditor.fragment, shaderEditor.lighting};
     Diagnostics d;
     shaderEditor.log.clear();
     shaderEditor.lastCompileFailed = !renderer.setStageSources(sources, d);
@@ -131,10 +132,13 @@ void App::Impl::compileShaders(bool builtin) {
         return;
     }
     shaderEditor.customActive = !builtin;
+    // The plots and the probe evaluate the C++ build of the built-in lighting.glsl.
+    shaderEditor.customLighting = sources.lighting != shaderSource("lighting.glsl");
     shaderEditor.log.push_back(builtin ? "Built-in shaders restored." : "Compiled: the edited shaders are running.");
     if (builtin) {
         shaderEditor.vertex = sources.vertex;
         shaderEditor.fragment = sources.fragment;
+        shaderEditor.lighting = sources.lighting;
     }
 }
 
@@ -238,6 +242,7 @@ bool App::init(Diagnostics& diagnostics) {
     StageSources builtin = builtinStageSources();
     m.shaderEditor.vertex = builtin.vertex;
     m.shaderEditor.fragment = builtin.fragment;
+    m.shaderEditor.lighting = builtin.lighting;
     m.workspace.start(fs::current_path(), m.options.preset);
     return true;
 }

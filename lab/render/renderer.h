@@ -56,7 +56,8 @@ public:
     // Compiles the built-in shaders. Needs a current GL ES 3.0 context.
     bool init(Diagnostics& diagnostics);
 
-    // Replaces the shader stage bodies; on failure keeps the previous programs running.
+    // Replaces the shader stage bodies and lighting.glsl (checked for non-ASCII text first); on
+    // failure keeps the previous programs running and stageSources() unchanged.
     bool setStageSources(const StageSources& sources, Diagnostics& diagnostics);
     const StageSources& stageSources() const;
 

@@ -3,8 +3,11 @@
 
 #include "render/shader_sources.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <sstream>
+#include <utility>
 
 namespace lab {
 
@@ -12,19 +15,29 @@ namespace {
 
 // The parts of an assembled stage start at these line numbers (`#line`), so a line in a
 // compiler log tells which file it is in. Source-string numbers in `#line` would be neater, but
-// Mesa reports every error as source 0.
-constexpr int kApiFirstLine = 100001;
-constexpr int kLightingFirstLine = 200001;
+// Mesa reports every error as source 0. The stage body starts at 1, so its lines are its own.
+struct Part {
+    const char* name;
+    long firstLine;
+};
+constexpr Part kPrelude{"prelude (precision and defines)", 100001};
+constexpr Part kApi{"lighting_api.glsl", 200001};
+constexpr Part kLighting{"lighting.glsl", 300001};
 
-std::string assemble(std::string_view body, const std::vector<std::string>& defines) {
-    std::string s = "#version 300 es\nprecision highp float;\nprecision highp int;\n";
+std::string lineDirective(const Part& part) { return "\n#line " + std::to_string(part.firstLine) + "\n"; }
+
+// The version line stays first (GLSL requires it); everything after it is numbered by its part.
+std::string assemble(std::string_view body, std::string_view lighting, const std::vector<std::string>& defines) {
+    std::string s = "#version 300 es";
+    s += lineDirective(kPrelude);
+    s += "precision highp float;\nprecision highp int;\n";
     for (const std::string& d : defines) {
         s += "#define " + d + "\n";
     }
-    s += "#line " + std::to_string(kApiFirstLine) + "\n";
+    s += lineDirective(kApi);
     s += shaderSource("lighting_api.glsl");
-    s += "\n#line " + std::to_string(kLightingFirstLine) + "\n";
-    s += shaderSource("lighting.glsl");
+    s += lineDirective(kLighting);
+    s += lighting;
     s += "\n#line 1\n";
     s += body;
     return s;
@@ -32,34 +45,117 @@ std::string assemble(std::string_view body, const std::vector<std::string>& defi
 
 // "file:line" for a line number of the assembled source.
 std::string place(long line, std::string_view bodyName) {
-    if (line >= kLightingFirstLine) {
-        return "lighting.glsl:" + std::to_string(line - kLightingFirstLine + 1);
-    }
-    if (line >= kApiFirstLine) {
-        return "lighting_api.glsl:" + std::to_string(line - kApiFirstLine + 1);
+    for (const Part* part : {&kLighting, &kApi, &kPrelude}) {
+        if (line >= part->firstLine) {
+            return std::string(part->name) + ":" + std::to_string(line - part->firstLine + 1);
+        }
     }
     return std::string(bodyName) + ":" + std::to_string(line);
 }
 
-// Mesa writes "0:12(5): error: ...", ANGLE "ERROR: 0:12: ...". Rewrite "0:12" as "lit.frag:12".
-void readableLog(const std::string& log, std::string_view bodyName, Diagnostics& out) {
-    std::istringstream lines(log);
+bool isDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+
+// The digits of `line` from `at` as a number; `end` is left after them.
+long readNumber(const std::string& line, std::size_t at, std::size_t& end) {
+    long number = 0;
+    for (end = at; end < line.size() && isDigit(line[end]); ++end) {
+        number = std::min(number * 10 + (line[end] - '0'), 1'000'000'000L);
+    }
+    return number;
+}
+
+} // namespace
+
+// Mesa writes "0:12(5): error: ...", ANGLE "ERROR: 0:12: ...", NVIDIA "0(12) : error ...".
+void readableLog(std::string_view log, std::string_view bodyName, Diagnostics& out) {
+    std::istringstream lines{std::string(log)};
     std::string line;
     while (std::getline(lines, line)) {
+        if (!line.empty() && line.back() == '\r') {
+            line.pop_back();
+        }
         if (line.empty()) {
             continue;
         }
-        std::size_t at = line.find("0:");
-        if (at != std::string::npos && (at == 0 || line[at - 1] == ' ') && at + 2 < line.size() &&
-            std::isdigit(static_cast<unsigned char>(line[at + 2]))) {
-            std::size_t end = at + 2;
-            long number = 0;
-            while (end < line.size() && std::isdigit(static_cast<unsigned char>(line[end]))) {
-                number = number * 10 + (line[end++] - '0');
+        for (std::size_t at = line.find('0'); at != std::string::npos; at = line.find('0', at + 1)) {
+            if ((at > 0 && line[at - 1] != ' ') || at + 2 >= line.size() || !isDigit(line[at + 2])) {
+                continue;
             }
-            line.replace(at, end - at, place(number, bodyName));
+            std::size_t end = 0;
+            if (line[at + 1] == ':') {
+                long number = readNumber(line, at + 2, end);
+                line.replace(at, end - at, place(number, bodyName));
+                break;
+            }
+            if (line[at + 1] == '(') {
+                long number = readNumber(line, at + 2, end);
+                if (end < line.size() && line[end] == ')') {
+                    line.replace(at, end + 1 - at, place(number, bodyName));
+                    break;
+                }
+            }
         }
         out.push_back({"", "", line});
+    }
+}
+
+namespace {
+
+// The code point of the UTF-8 sequence at `text[at]` and its length in bytes; 0 and 1 where
+// the bytes are not UTF-8.
+std::pair<unsigned, std::size_t> decodeUtf8(std::string_view text, std::size_t at) {
+    unsigned char lead = static_cast<unsigned char>(text[at]);
+    std::size_t length = lead >= 0xF0 && lead < 0xF8 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC2 && lead < 0xE0 ? 2 : 0;
+    if (length == 0 || lead >= 0xF8 || at + length > text.size()) {
+        return {0, 1};
+    }
+    unsigned code = lead & (0x7Fu >> length);
+    for (std::size_t k = 1; k < length; ++k) {
+        unsigned char c = static_cast<unsigned char>(text[at + k]);
+        if ((c & 0xC0) != 0x80) {
+            return {0, 1};
+        }
+        code = (code << 6) | (c & 0x3Fu);
+    }
+    return {code, length};
+}
+
+// The first non-ASCII character of each line of `text`, as diagnostics naming `file`.
+void findNonAscii(std::string_view file, std::string_view text, Diagnostics& out, int& budget) {
+    int lineNumber = 1;
+    int column = 1;
+    bool reported = false; // this line's first character is reported, the rest are not
+    for (std::size_t at = 0; at < text.size() && budget > 0;) {
+        char c = text[at];
+        if (c == '\n') {
+            ++lineNumber;
+            column = 1;
+            reported = false;
+            ++at;
+            continue;
+        }
+        if (static_cast<unsigned char>(c) < 0x80) {
+            ++column;
+            ++at;
+            continue;
+        }
+        auto [code, length] = decodeUtf8(text, at);
+        if (!reported) {
+            char what[96];
+            if (code != 0) {
+                std::snprintf(what, sizeof what, "non-ASCII character U+%04X '%.*s'", code, static_cast<int>(length),
+                              text.data() + at);
+            } else {
+                std::snprintf(what, sizeof what, "byte 0x%02X (not ASCII, not UTF-8)", static_cast<unsigned char>(c));
+            }
+            out.push_back({"", "",
+                           std::string(file) + ":" + std::to_string(lineNumber) + ": column " + std::to_string(column) +
+                               ": " + what + "; GLSL ES and WebGL accept only ASCII, in comments too"});
+            reported = true;
+            --budget;
+        }
+        ++column;
+        at += length;
     }
 }
 
@@ -106,13 +202,34 @@ std::string_view shaderSource(std::string_view name) {
 }
 
 StageSources builtinStageSources() {
-    return {std::string(shaderSource("lit.vert")), std::string(shaderSource("lit.frag"))};
+    return {std::string(shaderSource("lit.vert")), std::string(shaderSource("lit.frag")),
+            std::string(shaderSource("lighting.glsl"))};
+}
+
+bool checkAscii(const StageSources& sources, Diagnostics& diagnostics, int maxLines) {
+    std::size_t before = diagnostics.size();
+    int budget = maxLines;
+    findNonAscii("lit.vert", sources.vertex, diagnostics, budget);
+    findNonAscii("lit.frag", sources.fragment, diagnostics, budget);
+    findNonAscii("lighting.glsl", sources.lighting, diagnostics, budget);
+    return diagnostics.size() == before;
 }
 
 std::optional<GLuint> buildProgram(const StageSources& sources, const std::vector<std::string>& defines,
                                    Diagnostics& diagnostics) {
-    GLuint vs = compile(GL_VERTEX_SHADER, assemble(sources.vertex, defines), "lit.vert", diagnostics);
-    GLuint fs = compile(GL_FRAGMENT_SHADER, assemble(sources.fragment, defines), "lit.frag", diagnostics);
+    if (!checkAscii(sources, diagnostics)) {
+        return std::nullopt;
+    }
+    // Both stages include lighting.glsl: an error there is in both logs, and reported once.
+    Diagnostics log;
+    GLuint vs = compile(GL_VERTEX_SHADER, assemble(sources.vertex, sources.lighting, defines), "lit.vert", log);
+    GLuint fs = compile(GL_FRAGMENT_SHADER, assemble(sources.fragment, sources.lighting, defines), "lit.frag", log);
+    for (Diagnostic& x : log) {
+        auto same = [&](const Diagnostic& y) { return y.file == x.file && y.message == x.message; };
+        if (std::find_if(diagnostics.begin(), diagnostics.end(), same) == diagnostics.end()) {
+            diagnostics.push_back(std::move(x));
+        }
+    }
     if (!vs || !fs) {
         if (vs) {
             glDeleteShader(vs);

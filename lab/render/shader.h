@@ -2,9 +2,12 @@
 //
 // The GLSL files in shaders/ are embedded in the program at build time (shader_sources.h).
 // A program is assembled as: version line, precision, defines, lighting_api.glsl,
-// lighting.glsl, then the stage's own body, each part after a `#line 1 N` so compile errors
-// name the file and line they come from ("lit.frag:12: ..."). The stage bodies are strings the
-// caller owns, so the GUI's shader editor can compile edited text the same way.
+// lighting.glsl, then the stage's own body, each part after a `#line` so compile errors
+// name the file and line they come from ("lighting.glsl:12: ..."). lighting_api.glsl (the
+// constants, structs and prototypes) is always the embedded one; lighting.glsl and the stage
+// bodies are strings the caller owns, so the GUI's shader editor can compile edited text the
+// same way. Text that is not ASCII is refused before anything is compiled: GLSL ES and WebGL
+// reject it, and the drivers' messages about it are cryptic.
 #pragma once
 
 #include "core/diagnostics.h"
@@ -20,14 +23,26 @@ namespace lab {
 // The embedded text of a file in shaders/, e.g. "lit.frag"; empty if there is none.
 std::string_view shaderSource(std::string_view name);
 
+// The editable parts of the lit shaders, each named after the file it replaces.
 struct StageSources {
     std::string vertex;   // body of lit.vert (or an edited version)
     std::string fragment; // body of lit.frag
+    std::string lighting; // lighting.glsl: the definitions of lighting_api.glsl's functions
 };
 
 StageSources builtinStageSources();
 
-// Compiles and links; on failure adds one diagnostic per log line, with file names restored.
+// One diagnostic per line of `sources` that holds a character outside ASCII, at most `maxLines`
+// in all: "lighting.glsl:12: column 5: non-ASCII character U+00E9 ...". True if there is none.
+bool checkAscii(const StageSources& sources, Diagnostics& diagnostics, int maxLines = 8);
+
+// A driver's info log as diagnostics, one per line, with the first "0:12" (Mesa, ANGLE) or
+// "0(12)" (NVIDIA) of each rewritten as the file and line it is in: "lighting.glsl:12" for a
+// line of the assembled source inside lighting.glsl, "lit.frag:12" (`bodyName`) in the body.
+void readableLog(std::string_view log, std::string_view bodyName, Diagnostics& out);
+
+// Compiles and links; on failure adds one diagnostic per log line, with file names restored
+// and a message both stages repeat (an error in lighting.glsl) given once.
 std::optional<GLuint> buildProgram(const StageSources& sources, const std::vector<std::string>& defines,
                                    Diagnostics& diagnostics);
 
