@@ -1,47 +1,267 @@
 // plots.cpp — drawing the lobes, the arrows and the attenuation curve with ImDrawList.
+//
+// One frame: sample the lighting model (core/plot.h), write the readouts as tokens and measure
+// them, ask core/plot_layout.h where each plot goes in the room left in the window, then draw
+// each plot's block there — readout strip, canvas, controls — with the cursor set explicitly, so
+// nothing reaches past the region and the window never scrolls.
 #include "ui/plots.h"
 
 #include "ui/widgets.h"
 
 #include "core/lighting.h"
 #include "core/limits.h"
+#include "core/plot_layout.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
+#include <cstdarg>
 #include <cstdio>
+#include <functional>
+#include <string>
 
 namespace lab::ui {
 
 namespace {
 
+//----------------------------------------------------------------------------------------
+// Colours and pens
+//----------------------------------------------------------------------------------------
+
 constexpr ImU32 kDiffuse = IM_COL32(90, 160, 255, 255);
 constexpr ImU32 kSpecular = IM_COL32(255, 160, 60, 255);
-constexpr ImU32 kTotal = IM_COL32(240, 240, 240, 255);
-constexpr ImU32 kCompare = IM_COL32(230, 90, 220, 255);
-constexpr ImU32 kGrid = IM_COL32(255, 255, 255, 40);
-constexpr ImU32 kAxis = IM_COL32(255, 255, 255, 110);
+constexpr ImU32 kTotal = IM_COL32(255, 255, 255, 255);
+constexpr ImU32 kCompare = IM_COL32(240, 100, 230, 255);
+constexpr ImU32 kBackground = IM_COL32(16, 16, 20, 255);
+// Grid and axes bright enough to survive a projector: light grey on near black, not dark grey.
+constexpr ImU32 kGrid = IM_COL32(135, 135, 150, 255);
+constexpr ImU32 kAxis = IM_COL32(215, 215, 225, 255);
+constexpr ImU32 kLabel = IM_COL32(225, 225, 232, 255);
+constexpr ImU32 kLight = IM_COL32(255, 230, 90, 255);
+constexpr ImU32 kMirror = IM_COL32(120, 220, 120, 255);
+constexpr ImU32 kViewer = IM_COL32(90, 220, 230, 255);
+constexpr ImU32 kHalf = IM_COL32(255, 110, 110, 255);
+constexpr ImU32 kProbe = IM_COL32(255, 255, 255, 170);
+constexpr ImU32 kWarning = IM_COL32(255, 120, 100, 255);
 constexpr ImU32 kOverlay[3] = {IM_COL32(255, 110, 110, 255), IM_COL32(120, 230, 120, 255), IM_COL32(120, 170, 255, 255)};
+constexpr const char* kDeg = "\xc2\xb0"; // the degree sign, UTF-8
+
+// Sizes for this frame, all from the font size so that they grow with presenter mode.
+struct Pens {
+    float s;      // UI scale: font size / 13
+    float font;   // font size
+    float line;   // text line height
+    float frame;  // a slider's height
+    float gap;    // vertical space between rows (ImGui's item spacing)
+    float gapX;   // horizontal space between items
+    float inner;  // between a widget and its label
+    float pad;    // text offset from what it labels
+    float thin;   // grid
+    float stroke; // curves and arrows
+    float bold;   // the total and L
+    float head;   // arrowhead length
+};
+
+Pens pens() {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    Pens p;
+    p.font = ImGui::GetFontSize();
+    p.s = p.font / 13.0f;
+    p.line = ImGui::GetTextLineHeight();
+    p.frame = ImGui::GetFrameHeight();
+    p.gap = style.ItemSpacing.y;
+    p.gapX = style.ItemSpacing.x;
+    p.inner = style.ItemInnerSpacing.x;
+    p.pad = 4.0f * p.s;
+    p.thin = std::max(1.0f, 1.0f * p.s);
+    p.stroke = 2.0f * p.s;
+    p.bold = 3.0f * p.s;
+    p.head = 9.0f * p.s;
+    return p;
+}
+
+std::string format(const char* f, ...) {
+    char text[96];
+    va_list args;
+    va_start(args, f);
+    std::vsnprintf(text, sizeof text, f, args);
+    va_end(args);
+    return text;
+}
+
+// A value on an axis: 3 significant digits, no trailing zeros.
+std::string tickText(float v) { return format("%.3g", double(v)); }
+
+std::string degrees(float deg) { return format("%.0f%s", double(deg), kDeg); }
+
+ImVec2 textSize(const std::string& t) { return ImGui::CalcTextSize(t.c_str(), t.c_str() + t.size()); }
+
+// Text centred on c.
+void centredText(ImDrawList* dl, ImVec2 c, ImU32 color, const std::string& t) {
+    ImVec2 size = textSize(t);
+    dl->AddText(ImVec2(std::round(c.x - size.x * 0.5f), std::round(c.y - size.y * 0.5f)), color, t.c_str(),
+                t.c_str() + t.size());
+}
+
+//----------------------------------------------------------------------------------------
+// Readouts: coloured tokens that wrap, in a strip of their own above a canvas
+//----------------------------------------------------------------------------------------
+
+struct Token {
+    std::string text;
+    ImU32 color = kLabel;
+    bool swatch = false; // a short line in the colour before the text: the curve it names
+    float width = kLineBreak;
+};
+
+struct Readout {
+    std::vector<Token> tokens;
+    std::vector<float> widths;
+
+    void add(std::string text, ImU32 color, bool swatch = false) {
+        tokens.push_back({std::move(text), color, swatch, 0.0f});
+    }
+    void lineBreak() { tokens.push_back({}); }
+    void measure(const Pens& p) {
+        widths.clear();
+        for (Token& t : tokens) {
+            if (t.text.empty()) {
+                t.width = kLineBreak;
+            } else {
+                t.width = textSize(t.text).x + (t.swatch ? 1.4f * p.font + p.pad : 0.0f);
+            }
+            widths.push_back(t.width);
+        }
+    }
+    float height(const Pens& p, float width) const {
+        return static_cast<float>(flowLines(widths, p.font * 0.5f, width)) * p.line;
+    }
+    void draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const {
+        std::vector<FlowPlace> places = flowTokens(widths, p.font * 0.5f, width);
+        for (std::size_t i = 0; i < tokens.size(); ++i) {
+            const Token& t = tokens[i];
+            if (t.width == kLineBreak) {
+                continue;
+            }
+            ImVec2 c(at.x + places[i].x, at.y + static_cast<float>(places[i].line) * p.line);
+            if (t.swatch) {
+                float y = c.y + p.line * 0.5f;
+                dl->AddLine(ImVec2(c.x, y), ImVec2(c.x + 1.4f * p.font, y), t.color, p.bold);
+                c.x += 1.4f * p.font + p.pad;
+            }
+            dl->AddText(c, t.color, t.text.c_str(), t.text.c_str() + t.text.size());
+        }
+    }
+};
+
+// maxTotal()'s floor: below it there is nothing to plot, and the scale shows 0 to 1.
+constexpr float kNothing = 2e-6f;
+float scaleFor(float largest) { return largest > kNothing ? largest : 1.0f; }
+
+// What the outer circle stands for, in words (in tokens that can wrap), with a warning when a
+// locked scale cuts a lobe.
+void scaleTokens(Readout& r, float outer, float largest, bool locked, const char* what) {
+    if (!locked && !(largest > kNothing)) {
+        r.add("all 0 (terms switched off?)", kLabel);
+        return;
+    }
+    r.add(format("outer ring %s", tickText(outer).c_str()), kLabel);
+    if (locked) {
+        r.add("(locked)", kLabel);
+        if (largest > outer * 1.001f) {
+            r.add(format("peak %s beyond it", tickText(largest).c_str()), kWarning);
+        }
+    } else {
+        r.add(format("= %s", what), kLabel);
+    }
+}
+
+//----------------------------------------------------------------------------------------
+// Canvases and the polar frame
+//----------------------------------------------------------------------------------------
 
 // Maps the plot's unit half-disc (x right, y up along N) to screen pixels.
 struct Frame {
     ImVec2 origin;
     float radius;
     ImVec2 at(glm::vec2 p) const { return ImVec2(origin.x + p.x * radius, origin.y - p.y * radius); }
-    glm::vec2 from(ImVec2 s) const { return {(s.x - origin.x) / radius, (origin.y - s.y) / radius}; }
+    glm::vec2 from(ImVec2 s) const {
+        float r = std::max(radius, 1.0f);
+        return {(s.x - origin.x) / r, (origin.y - s.y) / r};
+    }
 };
 
-void arrow(ImDrawList* dl, const Frame& f, glm::vec2 dir, float length, ImU32 color, const char* label, float thickness = 2.0f) {
-    glm::vec2 tip = dir * length;
-    ImVec2 a = f.at({0, 0}), b = f.at(tip);
-    dl->AddLine(a, b, color, thickness);
-    glm::vec2 d = glm::normalize(glm::vec2(b.x - a.x, b.y - a.y));
+struct Canvas {
+    ImVec2 corner;
+    float width = 0, height = 0;
+    ImDrawList* dl = nullptr;
+    bool shown() const { return dl != nullptr; }
+};
+
+// A plot's area at the cursor: an invisible button (for the mouse), filled with the plot
+// background, registered in the widget map as `name`. Not drawn when it has no room.
+Canvas beginCanvas(const char* id, const char* name, float width, float height) {
+    Canvas c;
+    if (width < 1.0f || height < 1.0f) {
+        return c;
+    }
+    c.width = width;
+    c.height = height;
+    c.corner = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton(id, ImVec2(width, height));
+    mark(name);
+    c.dl = ImGui::GetWindowDrawList();
+    c.dl->AddRectFilled(c.corner, ImVec2(c.corner.x + width, c.corner.y + height), kBackground);
+    return c;
+}
+
+glm::vec2 dirFromDeg(float deg, float side) {
+    float r = glm::radians(deg);
+    return {side * std::sin(r), std::cos(r)};
+}
+
+// The room a polar plot keeps for its labels: angle labels above and beside the rim, ring
+// values and the 90° labels under the surface line.
+PlotMargins polarMargins(const Pens& p) {
+    float side = textSize("60" + std::string(kDeg)).x * 0.75f + p.pad;
+    return {side, side, p.line + p.pad, p.line + p.pad};
+}
+
+Frame polarFrame(const Canvas& c, const Pens& p) {
+    LobeFrame f = lobeFrame(c.corner.x, c.corner.y, c.width, c.height, polarMargins(p));
+    return {ImVec2(f.originX, f.originY), f.radius};
+}
+
+// The tallest a polar canvas is worth at `width`: the half-disc as wide as it can be.
+float polarMaxHeight(const Pens& p, float width) {
+    PlotMargins m = polarMargins(p);
+    return std::max((width - m.left - m.right) * 0.5f, 0.0f) + m.top + m.bottom;
+}
+
+void arrow(ImDrawList* dl, const Pens& p, const Frame& f, glm::vec2 dir, float length, ImU32 color, const char* label,
+           float thickness) {
+    ImVec2 a = f.at({0, 0}), b = f.at(dir * length);
+    glm::vec2 d(b.x - a.x, b.y - a.y);
+    if (glm::length(d) < 1e-3f) {
+        return;
+    }
+    d = glm::normalize(d);
     glm::vec2 n(-d.y, d.x);
-    float s = 8.0f;
-    dl->AddTriangleFilled(b, ImVec2(b.x - d.x * s + n.x * s * 0.5f, b.y - d.y * s + n.y * s * 0.5f),
-                          ImVec2(b.x - d.x * s - n.x * s * 0.5f, b.y - d.y * s - n.y * s * 0.5f), color);
-    dl->AddText(ImVec2(b.x + 4, b.y - ImGui::GetFontSize()), color, label);
+    float h = std::min(p.head, glm::length(glm::vec2(b.x - a.x, b.y - a.y)) * 0.5f);
+    ImVec2 base(b.x - d.x * h, b.y - d.y * h);
+    dl->AddLine(a, base, color, thickness);
+    dl->AddTriangleFilled(b, ImVec2(base.x + n.x * h * 0.5f, base.y + n.y * h * 0.5f),
+                          ImVec2(base.x - n.x * h * 0.5f, base.y - n.y * h * 0.5f), color);
+    if (label && *label) {
+        // Beside the tip, on the side away from the arrow's own line.
+        ImVec2 size = ImGui::CalcTextSize(label);
+        float x = d.x >= 0.0f ? b.x + p.pad : b.x - p.pad - size.x;
+        dl->AddText(ImVec2(x, b.y - size.y - p.pad * 0.5f), color, label);
+    }
 }
 
 void polyline(ImDrawList* dl, const Frame& f, const std::vector<glm::vec2>& points, ImU32 color, float thickness) {
@@ -53,91 +273,306 @@ void polyline(ImDrawList* dl, const Frame& f, const std::vector<glm::vec2>& poin
     dl->AddPolyline(screen.data(), static_cast<int>(screen.size()), color, 0, thickness);
 }
 
-glm::vec2 dirFromDeg(float deg, float side) {
-    float r = glm::radians(deg);
-    return {side * std::sin(r), std::cos(r)};
+// The rings a radial scale draws, innermost first, with their radii in [0, 1].
+struct Ring {
+    float value, radius;
+};
+std::vector<Ring> rings(float maxI, RadialScale scale) {
+    std::vector<float> values = scale == RadialScale::Linear ? linearTicks(maxI, 4) : decadeTicks(maxI, kLogDecades);
+    std::vector<Ring> out;
+    for (float v : values) {
+        float r = plotRadius(v, maxI, scale);
+        if (r > 0.02f) {
+            out.push_back({v, r});
+        }
+    }
+    std::sort(out.begin(), out.end(), [](const Ring& x, const Ring& y) { return x.radius < y.radius; });
+    return out;
 }
 
-// The grid of the polar plot: the surface, half circles and 30° spokes.
-void polarGrid(ImDrawList* dl, const Frame& f, RadialScale scale) {
-    int rings = scale == RadialScale::Linear ? 4 : static_cast<int>(kLogDecades);
-    for (int i = 1; i <= rings; ++i) {
-        float r = static_cast<float>(i) / static_cast<float>(rings);
-        dl->PathArcTo(f.origin, r * f.radius, glm::pi<float>(), 2.0f * glm::pi<float>(), 48);
-        dl->PathStroke(kGrid, 0, 1.0f);
+// The polar grid: rings with their intensities under the surface line (right of N), the outer
+// circle, spokes every 30° with their angles outside the rim (90° under the surface line's
+// ends), and on a log scale the marks of 2…9 within each decade along the surface.
+void polarGrid(ImDrawList* dl, const Pens& p, const Frame& f, float maxI, RadialScale scale) {
+    if (f.radius < 2.0f * p.font) {
+        dl->AddLine(f.at({-1.05f, 0}), f.at({1.05f, 0}), kAxis, p.stroke);
+        return;
     }
+    const float pi = glm::pi<float>();
+    int segments = std::clamp(static_cast<int>(f.radius / 4.0f), 24, 96);
+    // The 90° labels sit under the ends of the surface line; ring labels stop short of them.
+    const std::string ninety = degrees(90.0f);
+    const float ninetyW = textSize(ninety).x;
+    const float below = f.origin.y + p.pad + p.line * 0.5f;
+    for (float side : {-1.0f, 1.0f}) {
+        centredText(dl, ImVec2(f.origin.x + side * (f.radius + p.pad), below), kLabel, ninety);
+    }
+    float labelsEnd = f.origin.x; // the right edge of the last ring label, to skip crowded ones
+    const float labelsLimit = f.origin.x + f.radius + p.pad - ninetyW * 0.5f - p.pad;
+    for (const Ring& ring : rings(maxI, scale)) {
+        dl->PathArcTo(f.origin, ring.radius * f.radius, pi, 2.0f * pi, segments);
+        dl->PathStroke(kGrid, 0, p.thin);
+        std::string t = tickText(ring.value);
+        float w = textSize(t).x, x = f.origin.x + ring.radius * f.radius;
+        if (x - w * 0.5f > labelsEnd + p.pad && x + w * 0.5f < labelsLimit) {
+            centredText(dl, ImVec2(x, below), kLabel, t);
+            labelsEnd = x + w * 0.5f;
+        }
+    }
+    dl->PathArcTo(f.origin, f.radius, pi, 2.0f * pi, segments);
+    dl->PathStroke(kAxis, 0, p.thin);
     for (int deg = -60; deg <= 60; deg += 30) {
-        dl->AddLine(f.at({0, 0}), f.at(dirFromDeg(static_cast<float>(deg), 1.0f)), kGrid);
+        glm::vec2 d = dirFromDeg(static_cast<float>(deg), 1.0f);
+        dl->AddLine(f.at({0, 0}), f.at(d), kGrid, p.thin);
+        std::string t = degrees(static_cast<float>(std::abs(deg)));
+        ImVec2 size = textSize(t), rim = f.at(d * 1.0f);
+        float out = p.pad + 0.5f * (std::abs(d.x) * size.x + std::abs(d.y) * size.y);
+        centredText(dl, ImVec2(rim.x + d.x * out, rim.y - d.y * out), kLabel, t);
     }
-    dl->AddLine(f.at({-1.05f, 0}), f.at({1.05f, 0}), kAxis, 2.0f);
+    dl->AddLine(f.at({-1.02f, 0}), f.at({1.02f, 0}), kAxis, p.stroke);
+    if (scale == RadialScale::Log) {
+        // 2…9 times each decade: ticks standing on the surface line, on both sides of N.
+        for (float decade : decadeTicks(maxI * 10.0f, kLogDecades + 1.0f)) {
+            for (int k = 2; k <= 9; ++k) {
+                float r = plotRadius(decade * 0.1f * static_cast<float>(k), maxI, scale);
+                if (r <= 0.0f || r >= 1.0f) {
+                    continue;
+                }
+                for (float side : {-1.0f, 1.0f}) {
+                    ImVec2 m = f.at({side * r, 0});
+                    dl->AddLine(ImVec2(m.x, m.y - (k == 5 ? 0.6f : 0.4f) * p.font), m, kAxis, p.thin);
+                }
+            }
+        }
+    }
 }
 
-// A plot's area: an invisible button (for the mouse) `aspect` times as tall as the panel is wide,
-// filled with the plot background, registered in the widget map as `name`.
-struct Canvas {
-    ImVec2 corner;
-    float width, height;
-    ImDrawList* dl;
+// A Cartesian plot's frame: lo is the bottom left (x from, y 0), hi the top right.
+struct Box {
+    ImVec2 lo, hi;
+    ImVec2 at(float u, float v) const { return ImVec2(lo.x + u * (hi.x - lo.x), lo.y + v * (hi.y - lo.y)); }
 };
 
-Canvas beginCanvas(const char* id, const char* name, float aspect) {
-    Canvas c;
-    c.width = ImGui::GetContentRegionAvail().x;
-    c.height = c.width * aspect;
-    c.corner = ImGui::GetCursorScreenPos();
-    ImGui::InvisibleButton(id, ImVec2(c.width, c.height));
-    mark(name);
-    c.dl = ImGui::GetWindowDrawList();
-    c.dl->AddRectFilled(c.corner, ImVec2(c.corner.x + c.width, c.corner.y + c.height), IM_COL32(20, 20, 26, 255));
-    return c;
+// Values up the left axis of a box: each (value, v in [0, 1]) with a grid line and its text;
+// "0" at the bottom where the axis starts at 0 (not on a logarithmic one).
+void yAxis(ImDrawList* dl, const Pens& p, const Box& b, const std::vector<Ring>& ticks, bool fromZero) {
+    for (const Ring& t : ticks) {
+        ImVec2 y = b.at(0, t.radius);
+        dl->AddLine(y, b.at(1, t.radius), kGrid, p.thin);
+        std::string text = tickText(t.value);
+        ImVec2 size = textSize(text);
+        dl->AddText(ImVec2(b.lo.x - p.pad - size.x, y.y - size.y * 0.5f), kLabel, text.c_str());
+    }
+    if (fromZero) {
+        centredText(dl, ImVec2(b.lo.x - p.pad - textSize("0").x * 0.5f, b.lo.y), kLabel, "0");
+    }
 }
 
-// The lobes of one frame: A's samples (and B's), all scaled by the same maximum.
+//----------------------------------------------------------------------------------------
+// The plots' data, computed once a frame before anything is measured or drawn
+//----------------------------------------------------------------------------------------
+
+// The lobes of one frame: A's samples (and B's), all scaled by the same outer circle.
 struct Lobes {
-    float incident;
+    float incident = 0;
     std::vector<PlotSample> a, b; // b empty without a compare set
-    float maxI;
+    float largest = 0;            // the largest total now
+    float outer = 0;              // the outer circle's intensity (largest, or held while locked)
+    Readout readout;
 };
+
+struct Overlay {
+    std::array<std::vector<PlotSample>, 3> sets;
+    float largest = 0, outer = 0;
+    Readout readout;
+};
+
+struct Attenuation {
+    const LightDesc* light = nullptr; // none without lights
+    float distance = 0, att = 1, maxD = 5;
+    Readout readout;
+};
+
+const PlotSample& sampleAt(const std::vector<PlotSample>& s, float deg) {
+    return s[static_cast<std::size_t>(std::lround(glm::clamp(deg, -90.0f, 90.0f)) + 90)];
+}
+
+Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p) {
+    Lobes l;
+    l.incident = a.plotIncidentDeg;
+    l.a = reflectedIntensity(a, l.incident);
+    if (b) {
+        l.b = reflectedIntensity(*b, l.incident);
+    }
+    l.largest = b ? maxTotal({l.a, l.b}) : maxTotal({l.a});
+    l.outer = scaleMaximum(scaleFor(l.largest), s.lockScale, s.lobeScale);
+    const PlotSample& v = sampleAt(l.a, s.viewerDeg);
+    l.readout.add(format("at V %+.0f%s:", double(s.viewerDeg), kDeg), kViewer);
+    l.readout.add(format("diffuse %.3f", double(v.diffuse)), kDiffuse, true);
+    l.readout.add(format("specular %.3f", double(v.specular)), kSpecular, true);
+    l.readout.add(format("total %.3f", double(v.total)), kTotal, true);
+    if (b) {
+        l.readout.add(format("total B %.3f", double(sampleAt(l.b, s.viewerDeg).total)), kCompare, true);
+    }
+    l.readout.lineBreak();
+    scaleTokens(l.readout, l.outer, l.largest, s.lockScale, b ? "max total of A and B" : "max total");
+    l.readout.measure(p);
+    return l;
+}
+
+Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
+    Overlay o;
+    for (std::size_t i = 0; i < 3; ++i) {
+        o.sets[i] = reflectedIntensity(a, s.overlayDeg[static_cast<int>(i)]);
+    }
+    o.largest = maxTotal({o.sets[0], o.sets[1], o.sets[2]});
+    o.outer = scaleMaximum(scaleFor(o.largest), s.lockScale, s.overlayScale);
+    o.readout.add("total for each incident angle;", kLabel);
+    scaleTokens(o.readout, o.outer, o.largest, s.lockScale, "max of the three");
+    o.readout.measure(p);
+    return o;
+}
+
+Attenuation attenuationData(const Preset& a, PlotSettings& s, const Pens& p) {
+    Attenuation t;
+    if (a.lights.empty()) {
+        t.readout.add("No lights.", kLabel);
+        t.readout.measure(p);
+        return t;
+    }
+    s.attenuationLight = glm::clamp(s.attenuationLight, 0, static_cast<int>(a.lights.size()) - 1);
+    t.light = &a.lights[static_cast<std::size_t>(s.attenuationLight)];
+    std::string name = format("Light %d", s.attenuationLight + 1);
+    if (t.light->type == LightType::Directional) {
+        t.readout.add(name + " is directional:", kLabel);
+        t.readout.add("Att = 1 at every distance", kSpecular);
+    } else {
+        t.distance = glm::length(t.light->position - a.model.translate);
+        t.maxD = std::max(5.0f, std::ceil(t.distance * 2.0f));
+        t.att = glsl::attenuation(t.light->attenuation, t.distance);
+        t.readout.add(name + ", at the model:", kLabel);
+        t.readout.add(format("d = %.2f", double(t.distance)), kSpecular);
+        t.readout.add(format("Att(d) = %.3f", double(t.att)), kSpecular);
+    }
+    t.readout.measure(p);
+    return t;
+}
+
+//----------------------------------------------------------------------------------------
+// A plot's block: readout strip, canvas, controls
+//----------------------------------------------------------------------------------------
+
+// Where a block's canvas and controls go. Normally the readout is a strip above the canvas and
+// the controls a row below it. When even one plot at a time leaves the canvas too short (a low
+// band at a large UI scale), the readout moves to a column at the right of the canvas instead.
+struct Block {
+    ImVec2 canvas;
+    float canvasW = 0, canvasH = 0;
+    ImVec2 controls;
+    bool controlsFit = true; // false where the row would reach past the block: it is left out
+};
+
+Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout& r, const char* readoutMark,
+                 bool cramped, bool controls, const std::function<float(float)>& maxCanvas) {
+    const ImVec2 top(origin.x + box.x, origin.y + box.y);
+    const float controlsH = controls ? p.frame + p.gap : 0.0f;
+    Block b;
+    float stripW = box.w, stripH = r.height(p, box.w);
+    ImVec2 strip = top;
+    if (cramped) {
+        // The narrowest column (from 30% to 60% of the width) whose text fits the height.
+        for (float share = 0.3f; share <= 0.61f; share += 0.05f) {
+            stripW = box.w * share;
+            stripH = r.height(p, stripW);
+            if (stripH <= box.h) {
+                break;
+            }
+        }
+        stripH = std::min(stripH, box.h); // what still does not fit is clipped, never scrolled to
+        strip = ImVec2(top.x + box.w - stripW, top.y);
+        b.canvas = top;
+        b.canvasW = box.w - stripW - p.gapX;
+        // Too low for the controls too: the canvas takes the whole height (drag L and V in it).
+        float room = box.h - controlsH - p.gap >= 3.0f * p.line ? box.h - controlsH - p.gap : box.h;
+        b.canvasH = std::clamp(room, 0.0f, maxCanvas(b.canvasW));
+    } else {
+        b.canvas = ImVec2(top.x, top.y + stripH + p.gap);
+        b.canvasW = box.w;
+        b.canvasH = box.canvas;
+    }
+    b.controls = ImVec2(top.x, b.canvas.y + b.canvasH + p.gap);
+    b.controlsFit = b.controls.y + p.frame <= top.y + box.h + 0.5f;
+    ImGui::SetCursorScreenPos(strip);
+    ImGui::Dummy(ImVec2(stripW, std::max(stripH, 1.0f)));
+    mark(readoutMark);
+    r.draw(ImGui::GetWindowDrawList(), p, strip, stripW);
+    ImGui::SetCursorScreenPos(b.canvas);
+    return b;
+}
+
+//----------------------------------------------------------------------------------------
+// The lobe plot
+//----------------------------------------------------------------------------------------
 
 // x: θo from -90 to 90; y: intensity (radius function), 0 at the bottom.
-void cartesianLobes(const Canvas& c, const Lobes& lobes, const PlotSettings& s) {
+void cartesianLobes(const Canvas& c, const Pens& p, const Lobes& lobes, const PlotSettings& s) {
     ImDrawList* dl = c.dl;
-    ImVec2 lo(c.corner.x + 30, c.corner.y + c.height - 18), hi(c.corner.x + c.width - 10, c.corner.y + 10);
-    auto at = [&](float deg, float r) { return ImVec2(lo.x + (deg + 90.0f) / 180.0f * (hi.x - lo.x), lo.y + r * (hi.y - lo.y)); };
+    std::vector<Ring> ticks = rings(lobes.outer, s.scale);
+    float labelW = textSize("0.000").x;
+    Box b{ImVec2(c.corner.x + labelW + 2.0f * p.pad, c.corner.y + c.height - p.line - p.pad),
+          ImVec2(c.corner.x + c.width - textSize("90" + std::string(kDeg)).x * 0.5f - p.pad, c.corner.y + p.line * 0.6f)};
+    if (b.hi.x - b.lo.x < p.font || b.lo.y - b.hi.y < p.font) {
+        return;
+    }
+    auto at = [&](float deg, float r) { return b.at((deg + 90.0f) / 180.0f, r); };
+    yAxis(dl, p, b, ticks, s.scale == RadialScale::Linear);
+    dl->AddLine(at(-90, 1), at(90, 1), kAxis, p.thin); // the outer circle's value
     for (int deg = -90; deg <= 90; deg += 30) {
-        dl->AddLine(at(static_cast<float>(deg), 0), at(static_cast<float>(deg), 1), kGrid);
-        char t[8];
-        std::snprintf(t, sizeof t, "%d", deg);
-        dl->AddText(ImVec2(at(static_cast<float>(deg), 0).x - 8, lo.y + 2), kAxis, t);
+        dl->AddLine(at(static_cast<float>(deg), 0), at(static_cast<float>(deg), 1), kGrid, p.thin);
+        centredText(dl, ImVec2(at(static_cast<float>(deg), 0).x, b.lo.y + p.pad * 0.5f + p.line * 0.5f), kLabel,
+                    degrees(static_cast<float>(deg)));
     }
-    dl->AddLine(at(-90, 0), at(90, 0), kAxis, 2.0f);
-    auto curve = [&](const std::vector<PlotSample>& set, PlotComponent component, ImU32 color) {
-        std::vector<ImVec2> pts;
-        for (const PlotSample& x : set) {
-            pts.push_back(at(x.thetaOutDeg, plotRadius(componentOf(x, component), lobes.maxI, s.scale)));
+    if (s.scale == RadialScale::Log) {
+        for (float decade : decadeTicks(lobes.outer * 10.0f, kLogDecades + 1.0f)) {
+            for (int k = 2; k <= 9; ++k) {
+                float r = plotRadius(decade * 0.1f * static_cast<float>(k), lobes.outer, s.scale);
+                if (r > 0.0f && r < 1.0f) {
+                    ImVec2 m = b.at(0, r);
+                    dl->AddLine(m, ImVec2(m.x + (k == 5 ? 0.6f : 0.4f) * p.font, m.y), kAxis, p.thin);
+                }
+            }
         }
-        dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), color, 0, 2.0f);
-    };
-    curve(lobes.a, PlotComponent::Diffuse, kDiffuse);
-    curve(lobes.a, PlotComponent::Specular, kSpecular);
-    curve(lobes.a, PlotComponent::Total, kTotal);
-    if (!lobes.b.empty()) {
-        curve(lobes.b, PlotComponent::Total, kCompare);
     }
-    dl->AddLine(at(lobes.incident, 0), at(lobes.incident, 1), IM_COL32(120, 220, 120, 160)); // the mirror angle
+    dl->AddLine(at(-90, 0), at(90, 0), kAxis, p.stroke);
+    dl->AddLine(b.lo, b.at(0, 1), kAxis, p.stroke);
+    dl->AddLine(at(lobes.incident, 0), at(lobes.incident, 1), kMirror, p.thin); // the mirror angle
+    dl->AddLine(at(s.viewerDeg, 0), at(s.viewerDeg, 1), kViewer, p.thin);
+    auto curve = [&](const std::vector<PlotSample>& set, PlotComponent component, ImU32 color, float thickness) {
+        std::vector<ImVec2> pts;
+        pts.reserve(set.size());
+        for (const PlotSample& x : set) {
+            pts.push_back(at(x.thetaOutDeg, plotRadius(componentOf(x, component), lobes.outer, s.scale)));
+        }
+        dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), color, 0, thickness);
+    };
+    curve(lobes.a, PlotComponent::Diffuse, kDiffuse, p.stroke);
+    curve(lobes.a, PlotComponent::Specular, kSpecular, p.stroke);
+    curve(lobes.a, PlotComponent::Total, kTotal, p.bold);
+    if (!lobes.b.empty()) {
+        curve(lobes.b, PlotComponent::Total, kCompare, p.stroke);
+    }
 }
 
 // The probe's vectors in its own plane of incidence: N up, L to the left.
-void probeArrows(ImDrawList* dl, const Frame& f, const ProbeResult& probe, BrdfModel brdf) {
+void probeArrows(ImDrawList* dl, const Pens& p, const Frame& f, const ProbeResult& probe, BrdfModel brdf) {
     const ProbeLight& pl = probe.lights.front();
     glm::vec3 side = pl.L - pl.NoL * probe.N;
     glm::vec3 ex = glm::length(side) > 1e-5f ? -glm::normalize(side) : glm::vec3(1, 0, 0);
     auto project = [&](const glm::vec3& v) { return glm::vec2(glm::dot(v, ex), glm::dot(v, probe.N)); };
-    ImU32 c = IM_COL32(255, 255, 255, 150);
-    arrow(dl, f, project(pl.L), 0.6f, c, "probe L", 1.0f);
-    arrow(dl, f, project(probe.V), 0.6f, c, "probe V", 1.0f);
+    arrow(dl, p, f, project(pl.L), 0.6f, kProbe, "probe L", p.thin * 1.5f);
+    arrow(dl, p, f, project(probe.V), 0.6f, kProbe, "probe V", p.thin * 1.5f);
     bool phong = brdf == BrdfModel::Phong;
-    arrow(dl, f, project(phong ? pl.R : pl.H), 0.6f, c, phong ? "probe R" : "probe H", 1.0f);
+    arrow(dl, p, f, project(phong ? pl.R : pl.H), 0.6f, kProbe, phong ? "probe R" : "probe H", p.thin * 1.5f);
 }
 
 // Dragging L (the preset's incident angle) or V (the reading direction) by its tip.
@@ -159,160 +594,312 @@ void dragArrows(const Frame& f, glm::vec2 L, glm::vec2 V, Preset& a, PlotSetting
     }
 }
 
-void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s, const ProbeResult* probe) {
+void polarLobes(const Canvas& c, const Pens& p, const Lobes& lobes, Preset& a, PlotSettings& s, const ProbeResult* probe) {
     ImDrawList* dl = c.dl;
-    Frame f{ImVec2(c.corner.x + c.width * 0.5f, c.corner.y + c.height - 14.0f), std::min(c.width * 0.46f, c.height - 34.0f)};
-    polarGrid(dl, f, s.scale);
-    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Diffuse, lobes.maxI, s.scale), kDiffuse, 2.0f);
-    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Specular, lobes.maxI, s.scale), kSpecular, 2.0f);
-    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Total, lobes.maxI, s.scale), kTotal, 2.5f);
+    Frame f = polarFrame(c, p);
+    polarGrid(dl, p, f, lobes.outer, s.scale);
+    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Diffuse, lobes.outer, s.scale), kDiffuse, p.stroke);
+    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Specular, lobes.outer, s.scale), kSpecular, p.stroke);
+    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Total, lobes.outer, s.scale), kTotal, p.bold);
     if (!lobes.b.empty()) {
-        polyline(dl, f, lobePoints(lobes.b, PlotComponent::Total, lobes.maxI, s.scale), kCompare, 2.0f);
+        polyline(dl, f, lobePoints(lobes.b, PlotComponent::Total, lobes.outer, s.scale), kCompare, p.stroke);
     }
     glm::vec2 L = dirFromDeg(lobes.incident, -1.0f), R = dirFromDeg(lobes.incident, 1.0f), V = dirFromDeg(s.viewerDeg, 1.0f);
-    arrow(dl, f, {0, 1}, 1.0f, kAxis, "N");
-    arrow(dl, f, L, 1.0f, IM_COL32(255, 230, 90, 255), "L", 2.5f);
-    arrow(dl, f, R, 0.85f, IM_COL32(120, 220, 120, 255), "R");
-    arrow(dl, f, V, 0.95f, IM_COL32(90, 220, 230, 255), "V");
+    arrow(dl, p, f, {0, 1}, 0.8f, kAxis, "N", p.stroke);
+    arrow(dl, p, f, L, 0.92f, kLight, "L", p.bold);
+    arrow(dl, p, f, R, 0.8f, kMirror, "R", p.stroke);
+    arrow(dl, p, f, V, 0.88f, kViewer, "V", p.stroke);
     if (a.brdf != BrdfModel::Phong) {
         glm::vec3 H = glsl::halfVector(glm::vec3(L, 0.0f), glm::vec3(V, 0.0f)); // the model's own H
-        arrow(dl, f, glm::vec2(H), 0.7f, IM_COL32(255, 100, 100, 255), "H");
+        arrow(dl, p, f, glm::vec2(H), 0.65f, kHalf, "H", p.stroke);
     }
     if (probe && !probe->lights.empty()) {
-        probeArrows(dl, f, *probe, a.brdf);
+        probeArrows(dl, p, f, *probe, a.brdf);
     }
     dragArrows(f, L, V, a, s);
 }
 
-// The legend, and the values towards V.
-void lobeLegend(const Canvas& c, const Lobes& lobes, const PlotSettings& s) {
-    const PlotSample& atV = lobes.a[static_cast<std::size_t>(std::lround(glm::clamp(s.viewerDeg, -90.0f, 90.0f)) + 90)];
-    ImVec2 t(c.corner.x + 6, c.corner.y + 4);
-    float line = ImGui::GetTextLineHeight();
-    c.dl->AddText(t, kDiffuse, "diffuse");
-    c.dl->AddText(ImVec2(t.x, t.y + line), kSpecular, "specular");
-    c.dl->AddText(ImVec2(t.x, t.y + 2 * line), kTotal, "total");
-    if (!lobes.b.empty()) {
-        c.dl->AddText(ImVec2(t.x, t.y + 3 * line), kCompare, "total (B)");
-    }
-    char values[96];
-    std::snprintf(values, sizeof values, "at V %+.0f: %.3f + %.3f = %.3f", s.viewerDeg, atV.diffuse, atV.specular, atV.total);
-    ImVec2 size = ImGui::CalcTextSize(values);
-    c.dl->AddText(ImVec2(c.corner.x + c.width - size.x - 6, c.corner.y + 4), kTotal, values);
+// Lobe plot rows: readout strip, canvas, the incident-angle and V sliders.
+PlotNeeds lobeNeeds(const Lobes& lobes, const PlotSettings& s, const Pens& p, float width) {
+    PlotNeeds n;
+    n.fixed = lobes.readout.height(p, width) + 2.0f * p.gap + p.frame;
+    n.minWidth = 14.0f * p.font;
+    n.minCanvas = 7.0f * p.line;
+    n.maxCanvas = s.cartesian ? width * 0.55f : polarMaxHeight(p, width);
+    n.maxCanvas = std::max(n.maxCanvas, n.minCanvas);
+    return n;
 }
 
-// Lobes and arrows for the preset's incident angle.
-void lobePlot(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
-    const Canvas canvas = beginCanvas("lobe", "plot.lobe", 0.62f);
-    Lobes lobes{a.plotIncidentDeg, reflectedIntensity(a, a.plotIncidentDeg), {}, 0.0f};
-    if (b) {
-        lobes.b = reflectedIntensity(*b, lobes.incident);
+void lobePlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Lobes& lobes, Preset& a,
+              PlotSettings& s, const ProbeResult* probe) {
+    const Block block = placeBlock(box, origin, p, lobes.readout, "plot.lobe.readout", cramped, true, [&](float w) {
+        return s.cartesian ? w * 0.55f : polarMaxHeight(p, w);
+    });
+    const Canvas canvas = beginCanvas("lobe", "plot.lobe", block.canvasW, block.canvasH);
+    if (canvas.shown()) {
+        if (s.cartesian) {
+            cartesianLobes(canvas, p, lobes, s);
+        } else {
+            polarLobes(canvas, p, lobes, a, s, probe);
+        }
     }
-    lobes.maxI = b ? maxTotal({lobes.a, lobes.b}) : maxTotal({lobes.a});
-    if (s.cartesian) {
-        cartesianLobes(canvas, lobes, s);
-    } else {
-        polarLobes(canvas, lobes, a, s, probe);
+    if (!block.controlsFit) {
+        return;
     }
-    lobeLegend(canvas, lobes, s);
+    ImGui::SetCursorScreenPos(block.controls);
     const limits::Range& incident = limits::kPlotIncidentDeg;
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
-    ImGui::SliderFloat("incident", &a.plotIncidentDeg, incident.sliderMin, incident.sliderMax, "%.0f deg");
+    float labels = ImGui::CalcTextSize("incident").x + ImGui::CalcTextSize("V").x + 2.0f * p.inner + p.gapX;
+    float field = std::max((box.w - labels) * 0.5f, p.font);
+    std::string unit = "%.0f" + std::string(kDeg);
+    ImGui::SetNextItemWidth(field);
+    ImGui::SliderFloat("incident", &a.plotIncidentDeg, incident.sliderMin, incident.sliderMax, unit.c_str());
     a.plotIncidentDeg = limits::clamp(incident, a.plotIncidentDeg);
     mark("plot.incident");
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-    ImGui::SliderFloat("V##viewer", &s.viewerDeg, -90.0f, 90.0f, "%.0f deg");
+    ImGui::SetNextItemWidth(field);
+    ImGui::SliderFloat("V##viewer", &s.viewerDeg, -90.0f, 90.0f, unit.c_str());
+    mark("plot.viewer");
 }
 
-void overlayPlot(const Preset& a, PlotSettings& s) {
-    const Canvas canvas = beginCanvas("overlay", "plot.overlay", 0.55f);
-    // Plain locals, not structured bindings: clang 14 (the browser build) cannot capture those.
-    const ImVec2 corner = canvas.corner;
-    const float width = canvas.width, height = canvas.height;
-    ImDrawList* dl = canvas.dl;
-    Frame f{ImVec2(corner.x + width * 0.5f, corner.y + height - 10.0f), std::min(width * 0.46f, height - 24.0f)};
-    polarGrid(dl, f, s.scale);
-    std::vector<std::vector<PlotSample>> sets;
-    for (int i = 0; i < 3; ++i) {
-        sets.push_back(reflectedIntensity(a, s.overlayDeg[i]));
+//----------------------------------------------------------------------------------------
+// The incident angles overlaid
+//----------------------------------------------------------------------------------------
+
+PlotNeeds overlayNeeds(const Overlay& o, const Pens& p, float width) {
+    PlotNeeds n;
+    n.fixed = o.readout.height(p, width) + 2.0f * p.gap + p.frame;
+    n.minWidth = 12.0f * p.font;
+    n.minCanvas = 6.0f * p.line;
+    n.maxCanvas = std::max(polarMaxHeight(p, width), n.minCanvas);
+    return n;
+}
+
+// A colour's darker shade as a field background, white text on it readable.
+ImVec4 shade(ImU32 color, float k) {
+    ImVec4 c = ImGui::ColorConvertU32ToFloat4(color);
+    return ImVec4(c.x * k, c.y * k, c.z * k, 1.0f);
+}
+
+void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Overlay& o, PlotSettings& s) {
+    const Block block = placeBlock(box, origin, p, o.readout, "plot.overlay.readout", cramped, true,
+                                   [&](float w) { return polarMaxHeight(p, w); });
+    const Canvas canvas = beginCanvas("overlay", "plot.overlay", block.canvasW, block.canvasH);
+    if (canvas.shown()) {
+        Frame f = polarFrame(canvas, p);
+        polarGrid(canvas.dl, p, f, o.outer, s.scale);
+        for (std::size_t i = 0; i < 3; ++i) {
+            polyline(canvas.dl, f, lobePoints(o.sets[i], PlotComponent::Total, o.outer, s.scale), kOverlay[i], p.stroke);
+        }
+        for (std::size_t i = 0; i < 3; ++i) {
+            float deg = s.overlayDeg[static_cast<int>(i)];
+            arrow(canvas.dl, p, f, dirFromDeg(deg, -1.0f), 0.9f, kOverlay[i], nullptr, p.stroke); // the fields name them
+        }
     }
-    float maxI = maxTotal(sets);
-    for (int i = 0; i < 3; ++i) {
-        polyline(dl, f, lobePoints(sets[static_cast<std::size_t>(i)], PlotComponent::Total, maxI, s.scale), kOverlay[i], 2.0f);
-        arrow(dl, f, dirFromDeg(s.overlayDeg[i], -1.0f), 1.0f, kOverlay[i], "", 1.5f);
+    // The three angles, each field in its curve's colour.
+    if (!block.controlsFit) {
+        return;
     }
-    ImGui::DragFloat3("angles", &s.overlayDeg.x, 0.5f, -90.0f, 90.0f, "%.0f");
+    ImGui::SetCursorScreenPos(block.controls);
+    float label = ImGui::CalcTextSize("angles").x + p.inner;
+    float field = std::max((box.w - label - 2.0f * p.inner) / 3.0f, p.font);
+    std::string unit = "%.0f" + std::string(kDeg);
+    static const char* const ids[3] = {"##angle0", "##angle1", "##angle2"};
+    static const char* const marks[3] = {"plot.overlay.angle0", "plot.overlay.angle1", "plot.overlay.angle2"};
+    for (int i = 0; i < 3; ++i) {
+        if (i > 0) {
+            ImGui::SameLine(0.0f, p.inner);
+        }
+        ImGui::PushStyleColor(ImGuiCol_FrameBg, shade(kOverlay[i], 0.45f));
+        ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, shade(kOverlay[i], 0.6f));
+        ImGui::PushStyleColor(ImGuiCol_FrameBgActive, shade(kOverlay[i], 0.75f));
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 255, 255, 255));
+        ImGui::SetNextItemWidth(field);
+        ImGui::DragFloat(ids[i], &s.overlayDeg[i], 0.5f, -90.0f, 90.0f, unit.c_str());
+        ImGui::PopStyleColor(4);
+        mark(marks[i]);
+    }
+    ImGui::SameLine(0.0f, p.inner);
+    ImGui::TextUnformatted("angles");
     s.overlayDeg = glm::clamp(s.overlayDeg, glm::vec3(-90.0f), glm::vec3(90.0f));
 }
 
-void attenuationPlot(const Preset& a, PlotSettings& s) {
-    if (a.lights.empty()) {
-        ImGui::TextDisabled("No lights.");
+//----------------------------------------------------------------------------------------
+// Attenuation
+//----------------------------------------------------------------------------------------
+
+bool lightChooser(const Preset& a) { return a.lights.size() > 1; }
+
+PlotNeeds attenuationNeeds(const Attenuation& t, const Preset& a, const Pens& p, float width) {
+    PlotNeeds n;
+    n.fixed = t.readout.height(p, width) + p.gap + (lightChooser(a) ? p.frame + p.gap : 0.0f);
+    n.minWidth = 12.0f * p.font;
+    if (t.light) {
+        n.minCanvas = 5.0f * p.line;
+        n.maxCanvas = std::max(width * 0.42f, n.minCanvas);
+    }
+    return n;
+}
+
+void attenuationCanvas(const Canvas& c, const Pens& p, const Attenuation& t) {
+    ImDrawList* dl = c.dl;
+    Box b{ImVec2(c.corner.x + textSize("0.5").x + 2.0f * p.pad, c.corner.y + c.height - p.line - p.pad),
+          ImVec2(c.corner.x + c.width - textSize("10").x * 0.5f - p.pad, c.corner.y + p.line * 0.6f)};
+    if (b.hi.x - b.lo.x < p.font || b.lo.y - b.hi.y < p.font) {
         return;
     }
-    s.attenuationLight = glm::clamp(s.attenuationLight, 0, static_cast<int>(a.lights.size()) - 1);
-    const LightDesc& l = a.lights[static_cast<std::size_t>(s.attenuationLight)];
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.4f);
-    int shown = s.attenuationLight + 1;
-    if (ImGui::SliderInt("light", &shown, 1, static_cast<int>(a.lights.size()), "Light %d")) {
-        s.attenuationLight = shown - 1;
+    float maxD = t.maxD;
+    auto at = [&](float d, float att) { return b.at(d / maxD, att); };
+    yAxis(dl, p, b, {{0.5f, 0.5f}, {1.0f, 1.0f}}, true);
+    int count = std::clamp(static_cast<int>((b.hi.x - b.lo.x) / (3.5f * p.font)), 2, 10);
+    for (float d : linearTicks(maxD, count)) {
+        dl->AddLine(at(d, 0), at(d, 1), kGrid, p.thin);
+        centredText(dl, ImVec2(at(d, 0).x, b.lo.y + p.pad * 0.5f + p.line * 0.5f), kLabel, tickText(d));
     }
-    if (l.type == LightType::Directional) {
-        ImGui::TextDisabled("A directional light is not attenuated (Att = 1).");
-        return;
-    }
-    float distance = glm::length(l.position - a.model.translate);
-    float maxD = std::max(5.0f, std::ceil(distance * 2.0f));
-    const Canvas canvas = beginCanvas("attenuation", "plot.attenuation", 0.38f);
-    // Plain locals, not structured bindings: clang 14 (the browser build) cannot capture those.
-    const ImVec2 corner = canvas.corner;
-    const float width = canvas.width, height = canvas.height;
-    ImDrawList* dl = canvas.dl;
-    ImVec2 lo(corner.x + 28, corner.y + height - 16), hi(corner.x + width - 8, corner.y + 8);
-    auto at = [&](float d, float att) { return ImVec2(lo.x + d / maxD * (hi.x - lo.x), lo.y + att * (hi.y - lo.y)); };
-    for (int i = 0; i <= static_cast<int>(maxD); ++i) {
-        dl->AddLine(at(static_cast<float>(i), 0), at(static_cast<float>(i), 1), kGrid);
-    }
-    dl->AddLine(at(0, 0), at(maxD, 0), kAxis, 2.0f);
-    dl->AddLine(at(0, 1), at(maxD, 1), kGrid);
-    dl->AddText(ImVec2(corner.x + 4, at(0, 1).y - 6), kAxis, "1");
-    dl->AddText(ImVec2(corner.x + 4, lo.y - 6), kAxis, "0");
+    dl->AddLine(at(0, 0), at(maxD, 0), kAxis, p.stroke);
+    dl->AddLine(at(0, 0), at(0, 1), kAxis, p.stroke);
     std::vector<ImVec2> pts;
-    for (const glm::vec2& p : attenuationCurve(l.attenuation, maxD, 200)) {
-        pts.push_back(at(p.x, p.y));
+    if (t.light->type == LightType::Directional) {
+        pts = {at(0, 1), at(maxD, 1)};
+    } else {
+        for (const glm::vec2& q : attenuationCurve(t.light->attenuation, maxD, 200)) {
+            pts.push_back(at(q.x, q.y));
+        }
     }
-    dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), kTotal, 0, 2.0f);
-    float att = glsl::attenuation(l.attenuation, distance);
-    ImVec2 m = at(distance, att);
-    dl->AddCircleFilled(m, 5.0f, kSpecular);
-    char label[64];
-    std::snprintf(label, sizeof label, "d = %.2f, Att = %.3f", distance, att);
-    dl->AddText(ImVec2(m.x + 8, m.y - ImGui::GetFontSize()), kSpecular, label);
+    dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), kTotal, 0, p.bold);
+    if (t.light->type != LightType::Directional) {
+        ImVec2 m = at(t.distance, t.att);
+        dl->AddLine(at(t.distance, 0), m, kSpecular, p.thin);
+        dl->AddCircleFilled(m, 5.0f * p.s, kSpecular);
+    }
+    // The axis's name at its end, above the line.
+    ImVec2 end = at(maxD, 0);
+    ImVec2 size = textSize("d");
+    dl->AddText(ImVec2(end.x - size.x, end.y - size.y - p.pad * 0.5f), kLabel, "d");
+}
+
+void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Attenuation& t,
+                     const Preset& a, PlotSettings& s) {
+    const Block block = placeBlock(box, origin, p, t.readout, "plot.attenuation.readout", cramped, lightChooser(a),
+                                   [&](float w) { return t.light ? w * 0.42f : 0.0f; });
+    if (t.light) {
+        const Canvas canvas = beginCanvas("attenuation", "plot.attenuation", block.canvasW, block.canvasH);
+        if (canvas.shown()) {
+            attenuationCanvas(canvas, p, t);
+        }
+    }
+    if (lightChooser(a) && block.controlsFit) {
+        ImGui::SetCursorScreenPos(block.controls);
+        ImGui::SetNextItemWidth(std::max(box.w - ImGui::CalcTextSize("light").x - p.inner, p.font));
+        int shown = s.attenuationLight + 1;
+        if (ImGui::SliderInt("light", &shown, 1, static_cast<int>(a.lights.size()), "Light %d")) {
+            s.attenuationLight = shown - 1;
+        }
+        mark("plot.attenuation.light");
+    }
+}
+
+//----------------------------------------------------------------------------------------
+// The options row
+//----------------------------------------------------------------------------------------
+
+// Keeps the next item on this line when it fits the window, else starts a new line.
+void sameLineIfFits(float nextWidth) {
+    float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + nextWidth <= right) {
+        ImGui::SameLine();
+    }
+}
+
+float checkWidth(const char* label) {
+    return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
+}
+
+void options(PlotSettings& s) {
+    // Full labels where they fit on one line, short ones (with the full meaning as a tooltip)
+    // where they do not, so that the row does not take two lines of a low band.
+    const char* full[4] = {"linear###linear", "log###log", "Cartesian###cartesian", "lock scale###lock"};
+    const char* brief[4] = {"lin###linear", "log###log", "x-y###cartesian", "lock###lock"};
+    float width = 3.0f * ImGui::GetStyle().ItemSpacing.x;
+    for (const char* label : full) {
+        width += checkWidth(label);
+    }
+    const char* const* labels = width <= ImGui::GetContentRegionAvail().x ? full : brief;
+    auto tip = [&](const char* text) {
+        if (labels == brief && ImGui::IsItemHovered()) {
+            ImGui::SetTooltip("%s", text);
+        }
+    };
+    int scale = s.scale == RadialScale::Linear ? 0 : 1;
+    ImGui::RadioButton(labels[0], &scale, 0);
+    mark("plot.linear");
+    tip("linear radius");
+    sameLineIfFits(checkWidth(labels[1]));
+    ImGui::RadioButton(labels[1], &scale, 1);
+    mark("plot.log");
+    tip("logarithmic radius");
+    s.scale = scale == 0 ? RadialScale::Linear : RadialScale::Log;
+    sameLineIfFits(checkWidth(labels[2]));
+    ImGui::Checkbox(labels[2], &s.cartesian);
+    mark("plot.cartesian");
+    tip("Cartesian: intensity against the outgoing angle");
+    sameLineIfFits(checkWidth(labels[3]));
+    ImGui::Checkbox(labels[3], &s.lockScale);
+    mark("plot.lock");
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("Off: the outer ring is the largest total in the plot, and follows every change.\n"
+                          "On: the outer ring keeps its value, so a change (another BRDF, a shininess)\n"
+                          "shows its real size; lobes beyond it are cut at the ring.");
+    }
 }
 
 } // namespace
 
 void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
-    int scale = s.scale == RadialScale::Linear ? 0 : 1;
-    ImGui::RadioButton("linear", &scale, 0);
-    mark("plot.linear");
-    ImGui::SameLine();
-    ImGui::RadioButton("log", &scale, 1);
-    mark("plot.log");
-    s.scale = scale == 0 ? RadialScale::Linear : RadialScale::Log;
-    ImGui::SameLine();
-    ImGui::Checkbox("Cartesian", &s.cartesian);
-    mark("plot.cartesian");
-    if (ImGui::CollapsingHeader("Reflection lobe", ImGuiTreeNodeFlags_DefaultOpen)) {
-        lobePlot(a, b, s, probe);
+    options(s);
+    const Pens p = pens();
+    const Lobes lobes = lobeData(a, b, s, p);
+    const Overlay overlay = overlayData(a, s, p);
+    const Attenuation attenuation = attenuationData(a, s, p);
+
+    const ImVec2 room = ImGui::GetContentRegionAvail();
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const float tabBar = p.frame + p.gap;
+    auto needs = [&](int plot, float width) {
+        switch (plot) {
+        case 0: return lobeNeeds(lobes, s, p, width);
+        case 1: return overlayNeeds(overlay, p, width);
+        default: return attenuationNeeds(attenuation, a, p, width);
+        }
+    };
+    const PlotsLayout layout = arrangePlots(room.x, room.y, p.gap * 2.0f, tabBar, needs);
+    widgets().set("plots.area", {origin.x, origin.y, room.x, room.y});
+
+    ImGui::PushClipRect(origin, ImVec2(origin.x + room.x, origin.y + room.y), true);
+    auto draw = [&](int plot) {
+        const PlotBox& box = layout.plots[static_cast<std::size_t>(plot)];
+        bool cramped = layout.arrangement == PlotArrangement::Tabs && box.canvas < needs(plot, box.w).minCanvas;
+        switch (plot) {
+        case 0: lobePlot(box, origin, p, cramped, lobes, a, s, probe); break;
+        case 1: overlayPlot(box, origin, p, cramped, overlay, s); break;
+        default: attenuationPlot(box, origin, p, cramped, attenuation, a, s); break;
+        }
+    };
+    if (layout.arrangement != PlotArrangement::Tabs) {
+        for (int plot = 0; plot < kPlotCount; ++plot) {
+            draw(plot);
+        }
+    } else if (ImGui::BeginTabBar("plots.tabs")) {
+        // No room for all three: one at a time, each with the whole area below the tabs.
+        static const char* const names[kPlotCount] = {"Lobe", "Angles", "Att(d)"};
+        for (int plot = 0; plot < kPlotCount; ++plot) {
+            if (ImGui::BeginTabItem(names[plot])) {
+                draw(plot);
+                ImGui::EndTabItem();
+            }
+        }
+        ImGui::EndTabBar();
     }
-    if (ImGui::CollapsingHeader("Incident angles overlaid", ImGuiTreeNodeFlags_DefaultOpen)) {
-        overlayPlot(a, s);
-    }
-    if (ImGui::CollapsingHeader("Attenuation", ImGuiTreeNodeFlags_DefaultOpen)) {
-        attenuationPlot(a, s);
-    }
+    ImGui::PopClipRect();
 }
 
 } // namespace lab::ui

@@ -4,9 +4,17 @@
 //     specular and total, with N, L, R, V (and H for Blinn-Phong and Cook-Torrance) as arrows;
 //     drag L to change the incident angle, drag V to read the intensities in that direction;
 //   * the lobes for several incident angles overlaid (the classic 60°/25°/10° figure);
-//   * linear or logarithmic radial scale, polar or Cartesian;
+//   * linear or logarithmic radial scale, polar or Cartesian, with the ring values, angle ticks
+//     and decade marks written on the plot; the scale can be locked;
 //   * the attenuation curve Att(d) of a light, with a marker at its distance to the model.
-// The numbers come from core/plot.h (the same code as `lab plot`); this file only draws.
+// The numbers come from core/plot.h (the same code as `lab plot`), where each plot goes and what
+// its rings are from core/plot_layout.h; this file measures text and draws.
+//
+// What it promises the window it draws in: everything fits the content region that is left
+// when it is called, whatever its size and the UI scale — side by side in a wide band, stacked in
+// a tall column, or one plot at a time in tabs when there is no room for all three. It never
+// makes the window scroll. Readouts have strips of their own above the canvases. Lines, arrows
+// and text offsets scale with the font (ImGui::GetFontSize() / 13).
 #pragma once
 
 #include "core/plot.h"
@@ -19,14 +27,17 @@ namespace lab::ui {
 struct PlotSettings {
     RadialScale scale = RadialScale::Linear;
     bool cartesian = false;
-    float viewerDeg = 20.0f;                  // V in the lobe plot
+    bool lockScale = false;                    // the outer circle stays where it was when locked
+    float lobeScale = 0.0f, overlayScale = 0.0f; // the outer circles' intensities (held while locked)
+    float viewerDeg = 20.0f;                   // V in the lobe plot
     glm::vec3 overlayDeg{60.0f, 25.0f, 10.0f}; // the overlaid incident angles
     int attenuationLight = 0;
     int dragging = 0; // 0 none, 1 L, 2 V
 };
 
-// Draws the plots into the current ImGui window. Dragging L edits a.plotIncidentDeg (part of the
-// preset, so it is undoable and saved). `b` is the compare set, overlaid when given.
+// Draws the plots into the current ImGui window's remaining content region. Dragging L edits
+// a.plotIncidentDeg (part of the preset, so it is undoable and saved). `b` is the compare set,
+// overlaid when given. The probe's vectors are drawn only when `probe` is given.
 void plotsPanel(Preset& a, const Preset* b, PlotSettings& settings, const ProbeResult* probe);
 
 } // namespace lab::ui
