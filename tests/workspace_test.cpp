@@ -19,7 +19,7 @@ const fs::path kModel = kPresets / "models" / "trefoil.glb";
 // A workspace over a temporary folder with two presets in it.
 struct Fixture {
     TempFolder dir;
-    Workspace ws{WorkspaceOptions{{}, {}, false}};
+    Workspace ws{WorkspaceOptions{{}, {}, false, {}}};
     fs::path red, blue;
 
     Fixture() {
@@ -33,7 +33,7 @@ struct Fixture {
         p.name = "blue";
         p.material.diffuse = {0, 0, 1};
         EXPECT_TRUE(savePreset(p, blue, d));
-        ws = Workspace(WorkspaceOptions{{dir.path()}, dir.path() / "shots", false});
+        ws = Workspace(WorkspaceOptions{{}, dir.path() / "shots", false, dir.path() / "user"});
         ws.start(dir.path(), red);
         EXPECT_TRUE(ws.takeProblems().empty());
     }
@@ -170,8 +170,64 @@ TEST(Workspace, ALinkRoundTripsTheSceneAndABrokenLinkChangesNothing) {
     EXPECT_EQ(g.ws.a(), opened);
 }
 
+// A copy of presets/ as the shipped folder, so the test can see it stay byte for byte.
+struct ShippedFixture {
+    TempFolder dir;
+    fs::path shipped = dir.path() / "presets", user = dir.path() / "user";
+    Workspace ws{WorkspaceOptions{{shipped}, dir.path() / "shots", false, user}};
+
+    ShippedFixture() {
+        fs::copy(kPresets, shipped, fs::copy_options::recursive);
+        ws.start(dir.path(), shipped / "05-full-phong.json");
+    }
+};
+
+TEST(Workspace, SavingAShippedPresetWritesACopyInTheUserFolder) {
+    ShippedFixture f;
+    std::string before = readText(f.shipped / "05-full-phong.json");
+    f.ws.a().material.shininess = 3.0f;
+    f.ws.run({Command::Save});
+    EXPECT_TRUE(f.ws.takeProblems().empty());
+    EXPECT_EQ(readText(f.shipped / "05-full-phong.json"), before);
+    EXPECT_EQ(f.ws.document().file(), f.user / "05-full-phong.json");
+    Diagnostics d;
+    EXPECT_EQ(loadPreset(f.user / "05-full-phong.json", d)->preset.material.shininess, 3.0f);
+    ASSERT_FALSE(f.ws.takeNotes().empty());
+
+    f.ws.saveTo(f.shipped / "05-full-phong.json"); // Save as over a shipped file
+    EXPECT_EQ(f.ws.takeProblems().size(), 1u);
+    EXPECT_EQ(readText(f.shipped / "05-full-phong.json"), before);
+}
+
+TEST(Workspace, SaveFirstOnAShippedPresetKeepsItToo) {
+    ShippedFixture f;
+    std::string before = readText(f.shipped / "05-full-phong.json");
+    f.ws.a().material.diffuse = {0, 1, 0};
+    f.ws.run({Command::NextPreset});
+    ASSERT_TRUE(f.ws.question());
+    f.ws.answer(UnsavedAnswer::SaveFirst);
+    EXPECT_EQ(readText(f.shipped / "05-full-phong.json"), before);
+    EXPECT_TRUE(fs::exists(f.user / "05-full-phong.json"));
+    EXPECT_EQ(f.ws.document().file().filename(), "06-shininess-10.json");
+}
+
+TEST(Workspace, LookingAroundIsNotAnUnsavedChangeButIsUndoable) {
+    Fixture f;
+    f.ws.a().camera.eye = {3, 1, 2}; // an orbit
+    f.ws.endFrame(false);
+    EXPECT_FALSE(f.ws.document().dirty());
+    f.ws.run({Command::NextPreset});
+    EXPECT_FALSE(f.ws.question()); // no prompt: the next preset opens
+    EXPECT_EQ(f.ws.document().file(), f.blue);
+    f.ws.open(f.red);
+    f.ws.a().camera.eye = {3, 1, 2};
+    f.ws.endFrame(false);
+    f.ws.run({Command::Undo});
+    EXPECT_EQ(f.ws.a().camera, Camera{});
+}
+
 TEST(Workspace, ABundledPresetIsLinkedByName) {
-    Workspace ws(WorkspaceOptions{{kPresets}, {}, false});
+    Workspace ws(WorkspaceOptions{{kPresets}, {}, false, {}});
     ws.start(kPresets, kPresets / "05-full-phong.json");
     EXPECT_EQ(ws.link(), "preset=05-full-phong");
     ws.a().material.shininess += 1.0f;
@@ -236,7 +292,7 @@ TEST(Workspace, ScreenshotsAreNumberedFilesOrDownloads) {
     EXPECT_TRUE(fs::exists(f.dir.path() / "shots" / "red-001.png"));
     EXPECT_TRUE(fs::exists(f.dir.path() / "shots" / "red-002.png"));
 
-    Workspace browser(WorkspaceOptions{{f.dir.path()}, "/nonexistent-screenshots", true});
+    Workspace browser(WorkspaceOptions{{}, "/nonexistent-screenshots", true, {}});
     browser.start(f.dir.path(), f.red);
     browser.saveScreenshot(image);
     browser.run({Command::Save});

@@ -9,6 +9,7 @@
 #include "ui/widget_map.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace lab {
@@ -25,6 +26,25 @@ unsigned modifiersOf(const KeyPress& k) { return (k.ctrl ? kCtrl : 0u) | (k.shif
 
 } // namespace
 
+std::vector<std::pair<float, float>> clicksOf(const std::vector<MouseButtonEvent>& events,
+                                              std::optional<MouseButtonEvent>& pending) {
+    std::vector<std::pair<float, float>> clicks;
+    for (const MouseButtonEvent& e : events) {
+        if (e.button != 0) {
+            continue;
+        }
+        if (e.pressed) {
+            pending = e;
+        } else if (pending) {
+            if (std::hypot(e.x - pending->x, e.y - pending->y) < 4.0f) {
+                clicks.emplace_back(pending->x, pending->y);
+            }
+            pending.reset();
+        }
+    }
+    return clicks;
+}
+
 struct App::Impl {
     AppOptions options;
     Workspace workspace;
@@ -35,8 +55,10 @@ struct App::Impl {
     ui::PlotSettings plots;
     ui::ShaderEditorState shaderEditor;
     ui::ViewControls viewControls;
-    bool showPanels = true, showHelp = false, presenter = false;
+    enum class Panels { All, PlotsOnly, None } panels = Panels::All; // Tab cycles
+    bool showHelp = false, presenter = false, caption = false, lightShapes = true;
     float presenterScale = 1.75f;
+    std::optional<MouseButtonEvent> pressed; // a left press whose release has not come yet
     std::optional<ProbeResult> probe;
     bool probeOpen = false;
     unsigned probeScene = 0; // the scene the probe belongs to
@@ -49,8 +71,24 @@ struct App::Impl {
 
     explicit Impl(AppOptions o)
         : options(std::move(o)),
-          workspace({options.presetFolders, options.screenshotFolder, options.saveByDownload}),
-          presenter(options.presenter) {}
+          workspace({options.presetFolders, options.screenshotFolder, options.saveByDownload,
+                     options.userFolder.empty() ? defaultUserFolder() : options.userFolder}),
+          presenter(options.presenter), caption(options.presenter) {}
+
+    float windowWidth = 0; // the last frame's, in window units
+
+    // Presenter mode shows the caption, and on a screen narrower than 1600 units it starts with
+    // the control panel hidden (Tab brings it back): at a projector's 1024 the large panel
+    // would squeeze the model.
+    void setPresenter(bool on) {
+        presenter = on;
+        caption = on;
+        if (on && windowWidth < 1600.0f && panels == Panels::All) {
+            panels = Panels::PlotsOnly;
+        } else if (!on && panels == Panels::PlotsOnly) {
+            panels = Panels::All;
+        }
+    }
 
     ui::ScreenModel screenModel();
     void carryOut(const Request& request);
@@ -83,11 +121,12 @@ ui::ScreenModel App::Impl::screenModel() {
     m.probe = probe ? &*probe : nullptr;
     m.probeOpen = &probeOpen;
     m.showHelp = &showHelp;
-    m.showPanels = showPanels;
     m.problem = problem ? &*problem : nullptr;
     m.unsavedQuestion = workspace.question() ? &*workspace.question() : nullptr;
     m.overlay = {doc.displayName(), doc.dirty(), m.a, m.b, workspace.view.mode, frameMs,
-                 toastLeft > 0.0f ? toast.c_str() : nullptr};
+                 toastLeft > 0.0f ? toast.c_str() : nullptr, caption,
+                 probe && probeOpen ? std::optional<glm::vec3>(probe->positionWorld) : std::nullopt};
+    m.lightShapes = lightShapes;
     return m;
 }
 
@@ -96,10 +135,16 @@ void App::Impl::carryOut(const Request& r) {
     switch (r.command) {
     case Command::ToggleHelp: showHelp = !showHelp; break;
     case Command::CloseHelp: showHelp = false; break;
-    case Command::TogglePanels: showPanels = !showPanels; break;
-    case Command::TogglePresenter: presenter = !presenter; break;
+    case Command::TogglePanels:
+        panels = panels == Panels::All ? Panels::PlotsOnly : panels == Panels::PlotsOnly ? Panels::None : Panels::All;
+        break;
+    case Command::TogglePresenter: setPresenter(!presenter); break;
+    case Command::ToggleCaption: caption = !caption; break;
+    case Command::ToggleLightShapes: lightShapes = !lightShapes; break;
     case Command::PresenterLarger:
-        presenter = true;
+        if (!presenter) {
+            setPresenter(true);
+        }
         presenterScale = std::min(kMaxPresenterScale, presenterScale + kPresenterStep);
         break;
     case Command::PresenterSmaller: presenterScale = std::max(kMinPresenterScale, presenterScale - kPresenterStep); break;
@@ -150,10 +195,10 @@ void App::Impl::probeAt(const ui::ViewEvents& view) {
     }
     glm::vec2 ndc(2.0f * (view.probeX - r.x) / r.w - 1.0f, 1.0f - 2.0f * (view.probeY - r.y) / r.h);
     probe = probePixel(viewed(workspace.a(), workspace.view.mode), *mesh, ndc, r.w / r.h);
-    probeOpen = probe.has_value();
+    probeOpen = probe.has_value(); // a click beside the model closes the probe
     probeScene = workspace.scenesOpened();
     if (!probe) {
-        toast = "No surface under the mouse";
+        toast = "No surface under the mouse: the probe is closed";
         toastLeft = kToastSeconds;
     }
 }
@@ -250,17 +295,25 @@ bool App::init(Diagnostics& diagnostics) {
 FrameOutput App::frame(const FrameInput& in) {
     Impl& m = *impl_;
     ui::widgets().clear();
+    if (m.windowWidth == 0.0f && m.presenter) {
+        m.windowWidth = in.windowWidth;
+        m.setPresenter(true); // --presenter: as if P had been pressed in this window
+    }
+    m.windowWidth = in.windowWidth;
     m.frameMs = m.frameMs == 0.0f ? in.deltaTime * 1000.0f : m.frameMs * 0.95f + in.deltaTime * 50.0f;
     Workspace& ws = m.workspace;
 
     //--- layout -> UI -> requests ---------------------------------------------------------
-    ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.showPanels});
+    ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.panels == Impl::Panels::All,
+                                           m.panels != Impl::Panels::None});
     ui::ScreenModel model = m.screenModel();
+    model.clicks = clicksOf(in.mouseButtons, m.pressed);
     model.panelInfo.compareStacked = layout.compareStacked;
     ui::ScreenEvents events = ui::drawScreen(layout, model);
     m.panel.focusOpenPath = false;
     for (const KeyPress& k : in.keys) {
-        if (std::optional<Command> c = commandForKey(k.key, modifiersOf(k), events.typing)) {
+        std::optional<Command> c = k.repeat ? std::nullopt : commandForKey(k.key, modifiersOf(k), events.typing);
+        if (c) {
             events.requests.push_back({*c, *c == Command::SaveAs || *c == Command::Save ? m.panel.saveAsPath : ""});
         }
     }

@@ -31,7 +31,21 @@ namespace lab {
 struct KeyPress {
     int key = 0;
     bool ctrl = false, shift = false, alt = false;
+    bool repeat = false; // the key held down: commands ignore repeats, so slow frames cannot pile them up
 };
+
+// A mouse button going down or up, where it happened (window units). Queued by the platform, so
+// a click is seen at its own place however slow the frame.
+struct MouseButtonEvent {
+    float x = 0, y = 0;
+    int button = 0; // 0 left, 1 right
+    bool pressed = false;
+};
+
+// The left-button clicks in `events`: a press and its release less than 4 units apart, at the
+// press's place. A press whose release has not come yet is carried over in `pending`.
+std::vector<std::pair<float, float>> clicksOf(const std::vector<MouseButtonEvent>& events,
+                                              std::optional<MouseButtonEvent>& pending);
 
 struct FrameInput {
     float windowWidth = 0, windowHeight = 0; // ImGui's units (screen coordinates)
@@ -39,6 +53,7 @@ struct FrameInput {
     float deltaTime = 1.0f / 60.0f;
     std::vector<std::string> droppedFiles;
     std::vector<KeyPress> keys;  // pressed since the last frame, in order
+    std::vector<MouseButtonEvent> mouseButtons; // since the last frame, in order
     bool closeRequested = false; // the user closed the window
     std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/link.h)
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
@@ -63,6 +78,8 @@ struct AppOptions {
     // The browser: files are saved by downloading them and opened through the page's picker,
     // so the panel offers Download and Open instead of path fields.
     bool saveByDownload = false;
+    // Where Save puts the edits of a shipped preset (defaultUserFolder() when empty).
+    std::filesystem::path userFolder;
 };
 
 // Owns the workspace, the renderer and the UI state (not copyable: impl_ is unique).

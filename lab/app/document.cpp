@@ -25,6 +25,12 @@ fs::path Document::folder() const {
     return folder_.empty() ? fs::path(".") : folder_;
 }
 
+bool Document::dirty() const {
+    Preset a = preset;
+    a.camera = saved_.camera;
+    return a != saved_;
+}
+
 std::string Document::displayName() const { return file_.empty() ? preset.name : file_.filename().string(); }
 
 bool Document::commit(bool gestureInProgress) {

@@ -5,7 +5,8 @@
 // snapshots of both: commit() at the end of a frame records the change since the last step,
 // unless the user is still in the middle of a gesture (a slider drag, a camera orbit), so one
 // drag is one step, and undo walks back through A's and B's edits in the order they were made.
-// Only A is saved: dirty() looks at A alone. No GL and no ImGui here.
+// Only A is saved: dirty() looks at A alone, and not at its camera: looking around is not an
+// unsaved change (it is still undoable, and saved with the next save). No GL and no ImGui here.
 #pragma once
 
 #include "core/preset.h"
@@ -30,7 +31,7 @@ public:
     const std::filesystem::path& file() const { return file_; }
     std::filesystem::path folder() const;
     std::string displayName() const; // file name, or the preset's name when untitled
-    bool dirty() const { return preset != saved_; }
+    bool dirty() const;
     const Preset& saved() const { return saved_; }
 
     // Records the edits since the last step as one undo step, unless `gestureInProgress`.

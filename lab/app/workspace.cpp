@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 namespace lab {
 
@@ -42,6 +43,18 @@ std::string safeStem(const std::string& stem) {
 }
 
 } // namespace
+
+fs::path defaultUserFolder() {
+    const char* data = std::getenv("XDG_DATA_HOME");
+    if (data && *data == '/') {
+        return fs::path(data) / "lighting-lab" / "presets";
+    }
+    const char* home = std::getenv("HOME");
+    if (home && *home == '/') {
+        return fs::path(home) / ".local" / "share" / "lighting-lab" / "presets";
+    }
+    return fs::path("lighting-lab-presets");
+}
 
 Workspace::Workspace(WorkspaceOptions options) : options_(std::move(options)) {}
 
@@ -81,7 +94,7 @@ void Workspace::whenChangesAreSafe(std::string what, std::function<void()> actio
 void Workspace::answer(UnsavedAnswer answer) {
     std::function<void()> action = std::exchange(pending_, nullptr);
     question_.reset();
-    bool saved = answer == UnsavedAnswer::SaveFirst && !doc_.file().empty() && saveTo(doc_.file());
+    bool saved = answer == UnsavedAnswer::SaveFirst && save({});
     if (action && (answer == UnsavedAnswer::Discard || saved)) {
         action();
     }
@@ -210,6 +223,10 @@ void Workspace::stepPreset(int delta) {
 }
 
 bool Workspace::saveTo(const fs::path& file) {
+    if (isShipped(file)) {
+        problem("Cannot save " + file.string(), "this folder holds the shipped presets, which stay as they are; save elsewhere (Save writes a copy to " + options_.userFolder.string() + ")");
+        return false;
+    }
     doc_.commit(false);
     Preset toSave = doc_.preset;
     if (!toSave.model.gltf.empty()) {
@@ -237,16 +254,35 @@ bool Workspace::saveTo(const fs::path& file) {
     return true;
 }
 
-void Workspace::save(const std::string& saveAsField) {
+bool Workspace::isShipped(const fs::path& file) const {
+    return std::any_of(options_.presetFolders.begin(), options_.presetFolders.end(),
+                       [&](const fs::path& folder) { return isInside(folder, file); });
+}
+
+// To the document's file; a shipped preset's edits go to a copy in the user's folder instead.
+bool Workspace::save(const std::string& saveAsField) {
     if (options_.saveByDownload) {
         download();
-    } else if (!doc_.file().empty()) {
-        saveTo(doc_.file());
-    } else if (!saveAsField.empty()) {
-        saveTo(saveAsField);
-    } else {
-        problem("Nothing to save to", "this preset has no file yet: type a path in the \"Save as\" field");
+        return true;
     }
+    if (!doc_.file().empty() && isShipped(doc_.file()) && !options_.userFolder.empty()) {
+        std::error_code ec;
+        fs::create_directories(options_.userFolder, ec);
+        fs::path copy = options_.userFolder / doc_.file().filename();
+        bool saved = saveTo(copy);
+        if (saved) {
+            notes_.back() = "Shipped presets stay as they are: saved a copy as " + copy.string();
+        }
+        return saved;
+    }
+    if (!doc_.file().empty()) {
+        return saveTo(doc_.file());
+    }
+    if (!saveAsField.empty()) {
+        return saveTo(saveAsField);
+    }
+    problem("Nothing to save to", "this preset has no file yet: type a path in the \"Save as\" field");
+    return false;
 }
 
 void Workspace::download() {

@@ -36,10 +36,16 @@ struct Download {
 };
 
 struct WorkspaceOptions {
-    std::vector<std::filesystem::path> presetFolders; // the first that has presets fills the list
+    std::vector<std::filesystem::path> presetFolders; // shipped presets: the first that has any fills the list
     std::filesystem::path screenshotFolder = ".";
     bool saveByDownload = false; // the browser: save and screenshots become downloads
+    // Where Save puts a shipped preset's edits: the shipped files are never overwritten.
+    std::filesystem::path userFolder;
 };
+
+// The user's preset folder: $XDG_DATA_HOME/lighting-lab/presets, else
+// ~/.local/share/lighting-lab/presets, else ./lighting-lab-presets.
+std::filesystem::path defaultUserFolder();
 
 class Workspace {
 public:
@@ -106,7 +112,8 @@ private:
     std::shared_ptr<const Mesh> resolve(Model& model, Resolved& resolved, const char* which);
     bool runEdit(Command command);
     void stepPreset(int delta);
-    void save(const std::string& saveAsField);
+    bool save(const std::string& saveAsField);
+    bool isShipped(const std::filesystem::path& file) const;
     void download();
     void refreshPresetList();
     void whenChangesAreSafe(std::string what, std::function<void()> action);

@@ -33,10 +33,12 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     app.set_version_flag("--version", "lab " LAB_VERSION);
     app.require_subcommand(0, 1);
     CommandLine line;
-    std::string preset, layoutFile, screenshotFolder = ".";
+    std::string preset, layoutFile, screenshotFolder = ".", windowSize;
     app.add_option("--preset", preset, "Open the lab with this preset");
     app.add_flag("--presenter", line.presenter, "Start in presenter mode (large UI for a projector)");
     app.add_flag("--fullscreen", line.fullscreen, "Start fullscreen");
+    app.add_option("--size", windowSize, "Window size (default: 1600x900, or the screen's work area if smaller)")
+        ->check(SizeValidator());
     app.add_option("--screenshot-dir", screenshotFolder, "Folder for screenshots (F12)")->capture_default_str();
     // For GUI tests: the screen rectangles of the main widgets, rewritten every frame.
     app.add_option("--layout-file", layoutFile, "")->group("");
@@ -86,6 +88,9 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
         line.layoutFile = layoutFile;
     }
     line.screenshotFolder = screenshotFolder;
+    if (!windowSize.empty()) {
+        line.windowSize = *parseSize(windowSize, error); // validated by SizeValidator
+    }
     if (*render) {
         line.command = CommandLine::Command::Render;
         line.presets = toPaths(renderPresets);

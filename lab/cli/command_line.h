@@ -19,6 +19,7 @@ struct CommandLine {
     // lab (the interactive lab)
     std::optional<std::filesystem::path> preset;
     bool presenter = false, fullscreen = false;
+    std::optional<Size> windowSize; // --size: else fitted to the screen
     std::filesystem::path screenshotFolder = ".";
     std::optional<std::filesystem::path> layoutFile;
     // render, plot, check

@@ -31,6 +31,11 @@ int runInteractive(const lab::CommandLine& line) {
     options.presetFolders.push_back(LAB_SOURCE_PRESETS);
     lab::WindowOptions window;
     window.fullscreen = line.fullscreen;
+    if (line.windowSize) {
+        window.width = line.windowSize->width;
+        window.height = line.windowSize->height;
+        window.sizeGiven = true;
+    }
     std::string error;
     switch (lab::runLab(options, window, error)) {
     case lab::WindowResult::Closed: return lab::kExitOk;

@@ -32,7 +32,8 @@ enum class Command {
     DownloadPreset, LoadModel, ShadingFlat, ShadingGouraud, ShadingPhong, NextBrdf,
     ToggleNormalMatrix, NextViewMode, ToggleCompare, ResetCamera,
     // The window and its tools (the app carries these out)
-    ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller,
+    ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
+    ToggleLightShapes,
     ToggleFullscreen, Screenshot, FocusOpenPath, PickFile, ToggleShaderEditor, CompileShaders,
     RevertShaders,
 };

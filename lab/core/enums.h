@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <iterator>
 
 namespace lab {
 
@@ -18,6 +19,14 @@ inline constexpr std::array kBrdfModels{BrdfModel::Phong, BrdfModel::BlinnPhong,
 inline constexpr std::array kDistributions{Distribution::Beckmann, Distribution::Gaussian, Distribution::Ggx};
 inline constexpr std::array kFresnelModes{FresnelMode::Schlick, FresnelMode::Full};
 inline constexpr std::array kLightTypes{LightType::Point, LightType::Directional, LightType::Spot};
+
+// Names as the GUI shows them (preset files use preset.h's toString: "gouraud", "blinn-phong").
+inline constexpr const char* kShadingLabels[] = {"flat", "Gouraud", "Phong"};
+inline constexpr const char* kBrdfLabels[] = {"Phong", "Blinn-Phong", "Cook-Torrance"};
+static_assert(std::size(kShadingLabels) == kShadings.size() && std::size(kBrdfLabels) == kBrdfModels.size());
+static_assert(kShadings[2] == Shading::Phong && kBrdfModels[2] == BrdfModel::CookTorrance); // label() indexes by value
+inline const char* label(Shading v) { return kShadingLabels[static_cast<int>(v)]; }
+inline const char* label(BrdfModel v) { return kBrdfLabels[static_cast<int>(v)]; }
 
 // The value after `value` in `all`, wrapping around.
 template <typename E, std::size_t N>

@@ -112,6 +112,7 @@ std::optional<ProbeResult> probePixel(const Preset& preset, const Mesh& mesh, gl
     }
 
     ProbeResult r;
+    r.positionWorld = glm::vec3(t.model * glm::vec4(hit->position, 1.0f));
     r.positionEye = glm::vec3(t.modelView * glm::vec4(hit->position, 1.0f));
     r.N = glm::normalize(t.normalMatrix * hit->normal);
     r.V = glm::normalize(-r.positionEye);

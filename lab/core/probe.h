@@ -27,6 +27,7 @@ struct ProbeLight {
 };
 
 struct ProbeResult {
+    glm::vec3 positionWorld; // the shading point, where the GUI marks it
     glm::vec3 positionEye;
     glm::vec3 N, V;
     glm::vec3 emissive, globalAmbient; // contributions that belong to no light

@@ -6,6 +6,8 @@
 //   * dropped files and the close button go to the app (which may ask about unsaved edits);
 //   * presenter scale: fonts are re-rasterized at the new size (DejaVu Sans when installed,
 //     ImGui's built-in font otherwise) and the style scaled, instead of blurry stretching;
+//   * the window fits the screen it opens on: 1600x900 or --size, shrunk to the monitor's work
+//     area and centred in it;
 //   * fullscreen on the primary monitor and back.
 // Not here: anything about presets, rendering or the UI's content (lab/app, lab/render, lab/ui).
 // Debian's ImGui 1.86 OpenGL3 backend loads desktop GL entry points; on an ES context it raises
@@ -21,6 +23,7 @@
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <vector>
 
@@ -49,6 +52,27 @@ void toggleFullscreen(GLFWwindow* window, WindowState& state) {
     glfwSetWindowMonitor(window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
+// The primary monitor's work area (the screen less task bars), or nothing without a monitor.
+bool workArea(int& x, int& y, int& w, int& h) {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    if (!monitor) {
+        return false;
+    }
+    glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
+    return w > 0 && h > 0;
+}
+
+// The window's size: the asked one (1600x900 by default), never larger than the work area; a
+// projector's 1024x768 or 1280x800 gets the whole of it.
+WindowOptions fitted(WindowOptions options) {
+    int x = 0, y = 0, w = 0, h = 0;
+    if (workArea(x, y, w, h)) {
+        options.width = std::min(options.width, w);
+        options.height = std::min(options.height, h);
+    }
+    return options;
+}
+
 // A GLFW window with an OpenGL ES 3.0 context (EGL), MSAA when there is any; nullptr with `error`.
 GLFWwindow* openWindow(const WindowOptions& options, std::string& error) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
@@ -65,6 +89,11 @@ GLFWwindow* openWindow(const WindowOptions& options, std::string& error) {
         const char* description = nullptr;
         glfwGetError(&description);
         error = std::string("cannot open an OpenGL ES 3.0 window: ") + (description ? description : "unknown error");
+        return nullptr;
+    }
+    int x = 0, y = 0, w = 0, h = 0;
+    if (workArea(x, y, w, h)) { // centred in the work area, so no edge is off screen
+        glfwSetWindowPos(window, x + (w - options.width) / 2, y + (h - options.height) / 2);
     }
     return window;
 }
@@ -105,7 +134,7 @@ void loop(GLFWwindow* window, WindowState& state, ImGuiHost& host) {
 }
 
 WindowResult runWindow(const AppOptions& appOptions, const WindowOptions& options, std::string& error) {
-    GLFWwindow* window = openWindow(options, error);
+    GLFWwindow* window = openWindow(fitted(options), error);
     if (!window) {
         return WindowResult::Failed;
     }

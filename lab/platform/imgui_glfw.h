@@ -15,6 +15,7 @@ namespace lab {
 // Key presses and dropped files collected by GLFW callbacks between frames.
 struct InputQueue {
     std::vector<KeyPress> keys;
+    std::vector<MouseButtonEvent> mouseButtons; // in GLFW's cursor units (the browser: canvas pixels)
     std::vector<std::string> dropped;
 };
 

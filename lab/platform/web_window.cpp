@@ -124,6 +124,10 @@ FrameInput nextInput(WebState& s, double dpr) {
     in.deltaTime = static_cast<float>(std::max(now - s.last, 1e-4));
     s.last = now;
     takeQueuedInput(s, in);
+    for (MouseButtonEvent& e : in.mouseButtons) { // canvas pixels to CSS pixels, as ImGui's
+        e.x /= static_cast<float>(dpr);
+        e.y /= static_cast<float>(dpr);
+    }
     for (std::string& f : in.droppedFiles) {
         f = adopt(f);
     }

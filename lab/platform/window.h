@@ -16,8 +16,9 @@
 namespace lab {
 
 struct WindowOptions {
-    int width = 1600;
+    int width = 1600; // never larger than the screen's work area: shrunk to fit
     int height = 900;
+    bool sizeGiven = false; // --size: this size (within the work area), else 1600x900 or the work area
     bool fullscreen = false;
 };
 

@@ -5,24 +5,27 @@
 
 namespace lab::ui {
 
+// The panels' widths grow with the UI scale up to a third of the window each; the plots stay
+// beside the model while the model keeps at least 240 units and 0.4 of the window's height.
 Layout computeLayout(const LayoutInput& in) {
     const float s = in.uiScale, W = in.width, H = in.height;
     Layout l;
-    if (!in.showPanels) {
-        l.view = {0, 0, W, H};
-    } else {
-        float panelW = std::min(360.0f * s, W * 0.4f);
-        float plotsW = std::min(380.0f * s, W * 0.35f);
+    float panelW = in.showPanel ? std::min(360.0f * s, W * 0.34f) : 0.0f;
+    float plotsW = in.showPlots ? std::min(380.0f * s, W * 0.34f) : 0.0f;
+    float besideW = W - panelW - plotsW;
+    l.plotsBelow = in.showPlots && besideW < std::max(240.0f, H * 0.4f);
+    if (in.showPanel) {
         l.panel = {0, 0, panelW, H};
-        l.plotsBelow = W - panelW - plotsW < 420.0f * s;
-        if (l.plotsBelow) {
-            float plotsH = std::max(H * 0.42f, 200.0f);
-            l.view = {panelW, 0, W - panelW, H - plotsH};
-            l.plots = {panelW, H - plotsH, W - panelW, plotsH};
-        } else {
-            l.view = {panelW, 0, W - panelW - plotsW, H};
-            l.plots = {W - plotsW, 0, plotsW, H};
-        }
+    }
+    if (!in.showPlots) {
+        l.view = {panelW, 0, W - panelW, H};
+    } else if (l.plotsBelow) {
+        float plotsH = std::max(H * 0.42f, 200.0f);
+        l.view = {panelW, 0, W - panelW, H - plotsH};
+        l.plots = {panelW, H - plotsH, W - panelW, plotsH};
+    } else {
+        l.view = {panelW, 0, besideW, H};
+        l.plots = {W - plotsW, 0, plotsW, H};
     }
     l.view.w = std::max(l.view.w, 1.0f);
     l.view.h = std::max(l.view.h, 1.0f);

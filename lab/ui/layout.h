@@ -1,7 +1,8 @@
 // layout.h — where the panel, the plots and the 3D view go in the window: a pure function.
 //
-// Window units (ImGui's). The panel is on the left; the plots on the right, or below the view
-// when the window is too narrow for three columns; the view takes the rest. In compare mode the
+// Window units (ImGui's). The panel is on the left; the plots on the right whenever the model still
+// has room beside them (presenter mode included), below the view only on narrow or portrait
+// windows; the view takes the rest and grows with the window. Either panel may be hidden. In compare mode the
 // view is split in two: side by side, or A above B where halves side by side would be narrow
 // (the field of view is vertical, so a narrow half would crop the model). No ImGui here.
 #pragma once
@@ -16,11 +17,12 @@ struct Rect {
 struct LayoutInput {
     float width = 0, height = 0; // the window
     float uiScale = 1.0f;        // font size / 13: the panels grow with the UI
-    bool showPanels = true;
+    bool showPanel = true;       // the control panel
+    bool showPlots = true;       // the plots
 };
 
 struct Layout {
-    Rect panel, plots;  // empty when the panels are hidden
+    Rect panel, plots;  // empty when hidden
     Rect view;          // the 3D view (never empty)
     Rect viewA, viewB;  // its halves in compare mode
     bool plotsBelow = false;

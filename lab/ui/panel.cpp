@@ -100,7 +100,7 @@ void filesSection(const PanelInfo& info, PanelState& state, std::vector<Request>
     mark("file.save-as-path");
 }
 
-void presetsSection(const PanelInfo& info, std::vector<Request>& requests) {
+void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
     const std::vector<std::filesystem::path>& files = *info.presetFiles;
     float height = std::min(8.0f, static_cast<float>(files.size()) + 0.5f) * ImGui::GetTextLineHeightWithSpacing();
     if (ImGui::BeginListBox("##presets", ImVec2(-1, height))) {
@@ -109,8 +109,9 @@ void presetsSection(const PanelInfo& info, std::vector<Request>& requests) {
             if (ImGui::Selectable(files[i].stem().string().c_str(), selected)) {
                 requests.push_back({Command::OpenPresetAt, {}, static_cast<int>(i)});
             }
-            if (selected && ImGui::IsWindowAppearing()) {
-                ImGui::SetScrollHereY();
+            if (selected && (ImGui::IsWindowAppearing() || state.listScrolledTo != info.currentPreset)) {
+                ImGui::SetScrollHereY(); // the list follows Left/Right through the presets
+                state.listScrolledTo = info.currentPreset;
             }
         }
         ImGui::EndListBox();
@@ -142,8 +143,7 @@ void materialSection(Preset& p) {
 }
 
 void brdfSection(Preset& p) {
-    static const char* const modelNames[] = {"Phong", "Blinn-Phong", "Cook-Torrance"};
-    enumRadios("brdf", p.brdf, kBrdfModels, modelNames);
+    enumRadios("brdf", p.brdf, kBrdfModels, kBrdfLabels);
     if (p.brdf == BrdfModel::Phong) {
         ImGui::TextDisabled("S = max(0, R.V)^n");
     } else if (p.brdf == BrdfModel::BlinnPhong) {
@@ -168,8 +168,7 @@ void brdfSection(Preset& p) {
 }
 
 void shadingSection(Preset& p, ViewSettings& view) {
-    static const char* const shadingNames[] = {"flat", "Gouraud", "Phong"};
-    enumRadios("shading", p.shading, kShadings, shadingNames);
+    enumRadios("shading", p.shading, kShadings, kShadingLabels);
     static const char* const modeNames[] = {"inverse-transpose (correct)", "model-view (wrong)"};
     enumCombo("normal matrix", p.normalMatrix, kNormalMatrixModes, modeNames);
     mark("normal_matrix");
@@ -407,7 +406,7 @@ void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, Pan
         filesSection(info, state, requests);
     }
     if (info.presetFiles && !info.presetFiles->empty() && ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) {
-        presetsSection(info, requests);
+        presetsSection(info, state, requests);
     }
     compareRow(view, info, requests);
     toolButtons(requests);

@@ -32,6 +32,7 @@ struct PanelState {
     std::string openPath, saveAsPath, modelPath; // text fields
     int selectedLight = 0;
     bool focusOpenPath = false; // Ctrl+O: the open field takes the keyboard this frame
+    int listScrolledTo = -1;    // the preset the list last scrolled to: it follows the current one
 };
 
 // Draws the panel's contents into the current ImGui window: edits `preset` (the set being

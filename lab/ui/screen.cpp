@@ -19,15 +19,20 @@ void beginFixed(const char* title, const Rect& r) {
     ImGui::Begin(title, nullptr, kFixed);
 }
 
+// The control panel and the plots, each where the layout puts it (nowhere when hidden).
 void panels(const Layout& layout, ScreenModel& m, ScreenEvents& events) {
-    beginFixed("Lighting Lab###panel", layout.panel);
-    controlPanel(*m.edited, *m.view, m.panelInfo, *m.panel, events.requests);
-    ImGui::End();
-    beginFixed("Reflected intensity###plots", layout.plots);
-    plotsPanel(*m.a, m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr);
-    ImGui::End();
-    widgets().set("plots", layout.plots);
-    widgets().set("panel", layout.panel);
+    if (layout.panel.w > 0.0f) {
+        beginFixed("Lighting Lab###panel", layout.panel);
+        controlPanel(*m.edited, *m.view, m.panelInfo, *m.panel, events.requests);
+        ImGui::End();
+        widgets().set("panel", layout.panel);
+    }
+    if (layout.plots.w > 0.0f) {
+        beginFixed("Reflected intensity###plots", layout.plots);
+        plotsPanel(*m.a, m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr);
+        ImGui::End();
+        widgets().set("plots", layout.plots);
+    }
 }
 
 void dialogs(ScreenModel& m, ScreenEvents& events) {
@@ -45,9 +50,7 @@ float uiScale() { return ImGui::GetFontSize() / 13.0f; }
 ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     ScreenEvents events;
     events.typing = ImGui::GetIO().WantTextInput;
-    if (m.showPanels) {
-        panels(layout, m, events);
-    }
+    panels(layout, m, events);
     widgets().set("view", layout.view);
     helpWindow(*m.showHelp);
     if (m.probe) {
@@ -56,8 +59,8 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     shaderEditorWindow(*m.shaderEditor, events.requests, m.lightingSource);
     dialogs(m, events);
     const Rect& active = m.b ? layout.viewA : layout.view;
-    events.view = viewControls(*m.a, active, layout.view, *m.viewControls);
-    lightMarkers(*m.a, active, m.viewControls->light);
+    events.view = viewControls(*m.a, active, layout.view, *m.viewControls, m.clicks);
+    lightMarkers(*m.a, active, m.viewControls->light, m.lightShapes);
     viewOverlay(m.overlay, layout);
     events.gesture = ImGui::IsAnyItemActive() || events.view.gesture;
     return events;

@@ -37,7 +37,8 @@ struct ScreenModel {
     const ProbeResult* probe = nullptr; // the last probe, shown while probeOpen
     bool* probeOpen = nullptr;
     bool* showHelp = nullptr;
-    bool showPanels = true;
+    bool lightShapes = true; // spot cones and directional rays in the view
+    std::vector<std::pair<float, float>> clicks; // the frame's left clicks (window units), queued by the platform
     const Problem* problem = nullptr;           // shown until closed
     const std::string* unsavedQuestion = nullptr; // "open x.json": discard unsaved changes to do it?
     OverlayModel overlay;

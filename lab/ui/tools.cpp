@@ -5,6 +5,8 @@
 
 #include <imgui_stdlib.h>
 
+#include <algorithm>
+
 namespace lab::ui {
 
 void helpWindow(bool& open) {
@@ -41,12 +43,25 @@ void probeWindow(const ProbeResult& probe, const Preset& preset, bool& open, flo
     if (!open) {
         return;
     }
+    // Inside the window whatever its size: at most the display, wide enough for the rows, and
+    // pushed back in when it would hang over an edge.
+    ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 26, 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    if (ImGui::Begin("Pixel probe", &open)) {
+    ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(ImGui::GetFontSize() * 22, display.x), 0), display);
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    if (ImGui::Begin("Pixel probe", &open, ImGuiWindowFlags_AlwaysAutoResize)) {
+        // Numbers for the instructor, not the room: at most 16 pixels, so that in presenter mode
+        // the probe covers a corner of the model, not all of it.
+        ImGui::SetWindowFontScale(std::min(1.0f, 16.0f / ImGui::GetFontSize()));
+        ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        ImVec2 inside(std::clamp(at.x, 0.0f, std::max(display.x - size.x, 0.0f)), std::clamp(at.y, 0.0f, std::max(display.y - size.y, 0.0f)));
+        if (inside.x != at.x || inside.y != at.y) {
+            ImGui::SetWindowPos(inside);
+        }
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 22);
         ImGui::TextDisabled("Eye space. Shading: %s%s", std::string(toString(preset.shading)).c_str(),
                             preset.shading == Shading::Gouraud ? " (the pixel interpolates vertex colours; this is the per-pixel value)" : "");
+        ImGui::PopTextWrapPos();
         vec("p", probe.positionEye);
         vec("N", probe.N);
         vec("V", probe.V);
@@ -57,7 +72,8 @@ void probeWindow(const ProbeResult& probe, const Preset& preset, bool& open, flo
             ImGui::Text("Light %d", l.index + 1);
             vec("L", l.L);
             vec(preset.brdf == BrdfModel::Phong ? "R" : "H", preset.brdf == BrdfModel::Phong ? l.R : l.H);
-            ImGui::Text("N.L %+.4f  R.V %+.4f  N.H %+.4f  V.H %+.4f  N.V %+.4f", l.NoL, l.RoV, l.NoH, l.VoH, l.NoV);
+            ImGui::Text("N.L %+.4f  R.V %+.4f  N.V %+.4f", l.NoL, l.RoV, l.NoV);
+            ImGui::Text("N.H %+.4f  V.H %+.4f", l.NoH, l.VoH);
             if (l.distance > 0.0f) {
                 ImGui::Text("d %.3f  Att %.4f", l.distance, l.attenuation);
             } else {

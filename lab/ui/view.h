@@ -3,8 +3,11 @@
 // viewControls() edits the camera and the light positions of the preset it is given, in place,
 // like the panel edits the rest (left drag orbits, right drag pans, the wheel zooms, a drag on a
 // light marker moves that light in the plane parallel to the image), and reports a click that
-// did not move as a probe. viewOverlay() draws the header, the frame time, the view mode, the
-// compare labels and the toast. ImGui only: the 3D view itself is drawn by the renderer.
+// did not move as a probe. lightMarkers() draws the lights: numbered markers (at the view's edge
+// for lights outside it), spot cones and directional lights' rays. viewOverlay() draws the
+// header, the caption, the frame time, the view mode, the compare labels, the probe's marker
+// and the toast. All of it goes under ImGui's windows and dialogs (the background draw list),
+// over the 3D view. ImGui only: the 3D view itself is drawn by the renderer.
 #pragma once
 
 #include "core/preset.h"
@@ -13,6 +16,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace lab::ui {
 
@@ -31,10 +36,14 @@ struct ViewEvents {
 };
 
 // `active` is where A is drawn (the whole view, or its half in compare mode); `whole` the view.
-ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, ViewControls& state);
+// `clicks` are the frame's left clicks as the platform queued them (window units): the first in
+// `active`, away from ImGui's windows, is the probe.
+ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, ViewControls& state,
+                        const std::vector<std::pair<float, float>>& clicks);
 
-// Numbered markers at the point and spot lights (window units), for the GUI tests as well.
-void lightMarkers(const Preset& scene, const Rect& r, int draggedLight);
+// Numbered markers at the point and spot lights (window units, named for the GUI tests), and
+// with `shapes` the spot cones and the directional lights' rays.
+void lightMarkers(const Preset& scene, const Rect& r, int draggedLight, bool shapes);
 
 struct OverlayModel {
     std::string documentName;
@@ -43,7 +52,9 @@ struct OverlayModel {
     const Preset* b = nullptr; // compare mode's B, else nullptr
     ViewMode viewMode = ViewMode::Lit;
     float frameMs = 0;
-    const char* toast = nullptr; // a short message at the bottom of the view, else nullptr
+    const char* toast = nullptr;               // a short message at the bottom of the view, else nullptr
+    bool caption = false;                      // the preset's name and description over the view
+    std::optional<glm::vec3> probePoint;       // the probed point (world), marked while the probe is open
 };
 
 void viewOverlay(const OverlayModel& model, const Layout& layout);

@@ -214,6 +214,11 @@ bool X11Driver::dropFile(unsigned long target, const std::string& path, int x, i
     return done;
 }
 
+void X11Driver::screenSize(int& width, int& height) {
+    width = DisplayWidth(display_, DefaultScreen(display_));
+    height = DisplayHeight(display_, DefaultScreen(display_));
+}
+
 Image X11Driver::capture(int x, int y, int width, int height) {
     XImage* image = XGetImage(display_, DefaultRootWindow(display_), x, y, static_cast<unsigned>(width),
                               static_cast<unsigned>(height), AllPlanes, ZPixmap);

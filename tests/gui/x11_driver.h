@@ -36,6 +36,9 @@ public:
     // False if the window does not take part in XDND or does not answer.
     bool dropFile(unsigned long window, const std::string& path, int x, int y, std::string& error);
 
+    // The size of the default screen, in pixels.
+    void screenSize(int& width, int& height);
+
     // The screen's pixels in a rectangle (screen coordinates).
     Image capture(int x, int y, int width, int height);
 

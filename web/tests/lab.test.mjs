@@ -78,6 +78,12 @@ async function press(page, key) {
   await frames(page, 2);
 }
 
+// Tab cycles the panels (all, plots and model, model only): twice leaves the view alone on the canvas.
+async function hidePanels(page) {
+  await press(page, 'Tab');
+  await press(page, 'Tab');
+}
+
 // The lab's screenshot of its 3D view (F12), which the page hands over as a download.
 async function viewShot(page) {
   const [download] = await Promise.all([page.waitForEvent('download'), press(page, 'F12')]);
@@ -129,7 +135,7 @@ test('the page loads with no console errors and no failed requests', async () =>
 
 test('the default preset renders and matches its browser golden', async () => {
   const { page, context } = await openLab('', { width: 1024, height: 640 });
-  await press(page, 'Tab'); // hide the panels: the view fills the canvas
+  await hidePanels(page);
   const shot = await viewShot(page);
   assert.equal(shot.width, 1024);
   assert.equal(shot.height, 640);
@@ -152,7 +158,7 @@ test('every shipped preset renders in the browser as the native goldens show it'
   // The same program on another GL: WebGL2 on SwiftShader against llvmpipe's goldens (tests/golden),
   // with the screenshot tests' tolerances. Links (#preset=) open each preset in one page.
   const { page, context } = await openLab('', { width: 512, height: 512 });
-  await press(page, 'Tab');
+  await hidePanels(page);
   const presets = fs.readdirSync(path.join(repo, 'presets')).filter((f) => f.endsWith('.json')).sort();
   assert.ok(presets.length >= 15);
   const failures = [];
