@@ -11,7 +11,8 @@ Layout computeLayout(const LayoutInput& in) {
     const float s = in.uiScale, W = in.width, H = in.height;
     Layout l;
     float panelW = in.showPanel ? std::min(360.0f * s, W * 0.34f) : 0.0f;
-    float plotsW = in.showPlots ? std::min(380.0f * s, W * 0.34f) : 0.0f;
+    // Without the control panel the plots may take more of the width (presenter mode on a projector).
+    float plotsW = in.showPlots ? std::min(380.0f * s, W * (in.showPanel ? 0.34f : 0.45f)) : 0.0f;
     float besideW = W - panelW - plotsW;
     l.plotsBelow = in.showPlots && besideW < std::max(240.0f, H * 0.4f);
     if (in.showPanel) {

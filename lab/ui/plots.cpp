@@ -877,7 +877,9 @@ void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* 
     ImGui::PushClipRect(origin, ImVec2(origin.x + room.x, origin.y + room.y), true);
     auto draw = [&](int plot) {
         const PlotBox& box = layout.plots[static_cast<std::size_t>(plot)];
-        bool cramped = layout.arrangement == PlotArrangement::Tabs && box.canvas < needs(plot, box.w).minCanvas;
+        // A low band only (wider than tall): in a narrow column the readout wraps above the canvas.
+        bool cramped = layout.arrangement == PlotArrangement::Tabs && box.canvas < needs(plot, box.w).minCanvas &&
+                       box.w > 1.2f * box.h;
         switch (plot) {
         case 0: lobePlot(box, origin, p, cramped, lobes, a, s, probe); break;
         case 1: overlayPlot(box, origin, p, cramped, overlay, s); break;

@@ -267,6 +267,7 @@ void toast(const char* text, const Rect& v, ImDrawList* dl) {
 float caption(const Preset& p, ImVec2 at, float width, ImDrawList* dl) {
     ImFont* font = ImGui::GetFont();
     float size = ImGui::GetFontSize(), big = size * 1.35f, pad = 0.5f * size;
+    width -= 2 * pad; // the text's own width inside the band
     ImVec2 title = font->CalcTextSizeA(big, width, width, p.name.c_str());
     ImVec2 text = p.description.empty() ? ImVec2(0, 0) : font->CalcTextSizeA(size, width, width, p.description.c_str());
     float height = title.y + (p.description.empty() ? 0.0f : text.y + 0.3f * size) + 2 * pad;
