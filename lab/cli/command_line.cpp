@@ -26,6 +26,29 @@ struct SizeValidator : CLI::Validator {
 
 std::vector<std::filesystem::path> toPaths(const std::vector<std::string>& v) { return {v.begin(), v.end()}; }
 
+// `check`'s arguments as text, until they are parsed into the CommandLine.
+struct CheckArguments {
+    std::vector<std::string> presets;
+    std::string golden, report = "lab-check", size = "512x512";
+};
+
+CLI::App* addCheckCommand(CLI::App& app, CommandLine& line, CheckArguments& a) {
+    CLI::App* check = app.add_subcommand("check", "Render presets and compare them with golden images");
+    check->add_option("presets", a.presets, "Preset files")->required();
+    check->add_option("--golden", a.golden, "Folder of golden PNGs, <preset name>.png")->required();
+    check->add_flag("--update", line.check.update, "Write goldens from the renders instead of comparing");
+    check->add_option("--report", a.report, "Folder for report.txt and the actual and diff images of failures")
+        ->capture_default_str();
+    check->add_option("--size", a.size, "Render size")->check(SizeValidator())->capture_default_str();
+    check->add_option("--pixel-tolerance", line.check.tolerance.pixelTolerance, "A pixel fails above this channel difference")
+        ->check(CLI::Range(0, 255))->capture_default_str();
+    check->add_option("--max-failing", line.check.tolerance.maxFailingShare, "Largest share of failing pixels (0.001 = 0.1%)")
+        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+    check->add_option("--max-mean", line.check.tolerance.maxMeanDifference, "Largest mean channel difference, in levels")
+        ->check(CLI::Range(0.0, 255.0))->capture_default_str();
+    return check;
+}
+
 } // namespace
 
 std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* argv) {
@@ -57,21 +80,8 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     plot->add_option("--incident-deg", line.incidentDeg, "Incident angle in degrees (default: the preset's plot.incident_deg)")
         ->check(CLI::Range(limits::kPlotIncidentDeg.min, limits::kPlotIncidentDeg.max));
 
-    std::vector<std::string> checkPresets;
-    std::string checkGolden, checkReport = "lab-check", checkSize = "512x512";
-    CLI::App* check = app.add_subcommand("check", "Render presets and compare them with golden images");
-    check->add_option("presets", checkPresets, "Preset files")->required();
-    check->add_option("--golden", checkGolden, "Folder of golden PNGs, <preset name>.png")->required();
-    check->add_flag("--update", line.check.update, "Write goldens from the renders instead of comparing");
-    check->add_option("--report", checkReport, "Folder for report.txt and the actual and diff images of failures")
-        ->capture_default_str();
-    check->add_option("--size", checkSize, "Render size")->check(SizeValidator())->capture_default_str();
-    check->add_option("--pixel-tolerance", line.check.tolerance.pixelTolerance, "A pixel fails above this channel difference")
-        ->check(CLI::Range(0, 255))->capture_default_str();
-    check->add_option("--max-failing", line.check.tolerance.maxFailingShare, "Largest share of failing pixels (0.001 = 0.1%)")
-        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
-    check->add_option("--max-mean", line.check.tolerance.maxMeanDifference, "Largest mean channel difference, in levels")
-        ->check(CLI::Range(0.0, 255.0))->capture_default_str();
+    CheckArguments checkArguments;
+    CLI::App* check = addCheckCommand(app, line, checkArguments);
 
     try {
         app.parse(argc, argv);
@@ -102,10 +112,10 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
         line.out = plotOut;
     } else if (*check) {
         line.command = CommandLine::Command::Check;
-        line.presets = toPaths(checkPresets);
-        line.check.golden = checkGolden;
-        line.check.report = checkReport;
-        line.check.size = *parseSize(checkSize, error);
+        line.presets = toPaths(checkArguments.presets);
+        line.check.golden = checkArguments.golden;
+        line.check.report = checkArguments.report;
+        line.check.size = *parseSize(checkArguments.size, error);
     }
     return line;
 }
