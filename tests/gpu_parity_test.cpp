@@ -5,6 +5,7 @@
 // evaluation of the same point and normal (lab::shade). Each probe's object-space position is
 // chosen so that it projects onto the centre of its own pixel. Per-vertex shading (flat,
 // Gouraud) evaluates in lit.vert, Phong shading in lit.frag: both paths are covered for every BRDF.
+#include "gl_suite.h"
 #include "core/lighting.h"
 #include "platform/headless_gl.h"
 #include "render/renderer.h"
@@ -70,26 +71,8 @@ Preset probePreset(const Variant& v) {
     return p;
 }
 
-class GpuParity : public testing::TestWithParam<Variant> {
-protected:
-    static void SetUpTestSuite() {
-        gl_ = new HeadlessGl;
-        std::string error;
-        ASSERT_TRUE(gl_->create(error)) << error;
-        renderer_ = new Renderer;
-        Diagnostics d;
-        ASSERT_TRUE(renderer_->init(d)) << toString(d);
-    }
-    static void TearDownTestSuite() {
-        delete renderer_;
-        delete gl_;
-    }
-    static HeadlessGl* gl_;
-    static Renderer* renderer_;
-};
+class GpuParity : public GlSuite<testing::TestWithParam<Variant>> {};
 
-HeadlessGl* GpuParity::gl_ = nullptr;
-Renderer* GpuParity::renderer_ = nullptr;
 
 TEST_P(GpuParity, ShadersMatchTheCpuWithinOneLevel) {
     ASSERT_NE(renderer_, nullptr);

@@ -1,6 +1,7 @@
 // shader_test.cpp — the shader editor's half in the renderer: edited lighting.glsl and stage
 // bodies compiled on the headless GL context, compile errors and non-ASCII text named by file and
 // line, the previous programs kept on failure, and the built-in ones restored by a revert.
+#include "gl_suite.h"
 #include "core/mesh_cache.h"
 #include "core/preset.h"
 #include "platform/headless_gl.h"
@@ -38,20 +39,8 @@ bool anyNames(const Diagnostics& d, const std::string& place, std::string_view a
     });
 }
 
-class ShaderEditing : public testing::Test {
+class ShaderEditing : public GlSuite<> {
 protected:
-    static void SetUpTestSuite() {
-        gl_ = new HeadlessGl;
-        std::string error;
-        ASSERT_TRUE(gl_->create(error)) << error;
-        renderer_ = new Renderer;
-        Diagnostics d;
-        ASSERT_TRUE(renderer_->init(d)) << toString(d);
-    }
-    static void TearDownTestSuite() {
-        delete renderer_;
-        delete gl_;
-    }
     void SetUp() override {
         ASSERT_NE(renderer_, nullptr);
         Diagnostics d;
@@ -89,13 +78,9 @@ protected:
         return lighting;
     }
 
-    static HeadlessGl* gl_;
-    static Renderer* renderer_;
     static MeshCache meshes_;
 };
 
-HeadlessGl* ShaderEditing::gl_ = nullptr;
-Renderer* ShaderEditing::renderer_ = nullptr;
 MeshCache ShaderEditing::meshes_;
 
 // How many channel values differ, and whether any of `b` is brighter than `a`.
