@@ -54,6 +54,8 @@ function(lab_configure_web_target target)
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS "${font}")
   file(GLOB_RECURSE bundled CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/presets/*")
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${bundled})
+  # The page is copied after each link: a changed page relinks, so the site never keeps an old one.
+  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS "${CMAKE_SOURCE_DIR}/web/index.html")
   add_custom_command(TARGET ${target} POST_BUILD
     COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${CMAKE_SOURCE_DIR}/web/index.html" "${site}/index.html")
 endfunction()

@@ -312,8 +312,7 @@ FrameOutput App::frame(const FrameInput& in) {
     ui::ScreenEvents events = ui::drawScreen(layout, model);
     m.panel.focusOpenPath = false;
     for (const KeyPress& k : in.keys) {
-        std::optional<Command> c = k.repeat ? std::nullopt : commandForKey(k.key, modifiersOf(k), events.typing);
-        if (c) {
+        if (std::optional<Command> c = commandForKey(k.key, modifiersOf(k), events.typing)) {
             events.requests.push_back({*c, *c == Command::SaveAs || *c == Command::Save ? m.panel.saveAsPath : ""});
         }
     }

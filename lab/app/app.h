@@ -31,7 +31,6 @@ namespace lab {
 struct KeyPress {
     int key = 0;
     bool ctrl = false, shift = false, alt = false;
-    bool repeat = false; // the key held down: commands ignore repeats, so slow frames cannot pile them up
 };
 
 // A mouse button going down or up, where it happened (window units). Queued by the platform, so

@@ -14,8 +14,8 @@ InputQueue* queueOf(GLFWwindow* window) { return static_cast<InputQueue*>(glfwGe
 // for the app's shortcuts, so they are queued here (ImGui calls this after its own callback).
 void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     if (action == GLFW_PRESS || action == GLFW_REPEAT) {
-        queueOf(window)->keys.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0,
-                                         (mods & GLFW_MOD_ALT) != 0, action == GLFW_REPEAT});
+        queueOf(window)->keys.push_back(
+            {key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0});
     }
 }
 

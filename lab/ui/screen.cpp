@@ -10,8 +10,11 @@ namespace lab::ui {
 
 namespace {
 
+// NoNavInputs: Tab is the lab's (it cycles the panels); without it ImGui 1.86 would take a Tab in a
+// focused window to activate its next field, and the next Tab would go to that field.
 constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                                    ImGuiWindowFlags_NoNavInputs;
 
 void beginFixed(const char* title, const Rect& r) {
     ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
