@@ -269,11 +269,11 @@ bool Workspace::save(const std::string& saveAsField) {
         std::error_code ec;
         fs::create_directories(options_.userFolder, ec);
         fs::path copy = options_.userFolder / doc_.file().filename();
-        bool saved = saveTo(copy);
-        if (saved) {
-            notes_.back() = "Shipped presets stay as they are: saved a copy as " + copy.string();
+        if (!saveTo(copy)) {
+            return false;
         }
-        return saved;
+        notes_.push_back("Shipped presets stay as they are: saved a copy as " + copy.string()); // the toast shows the last note
+        return true;
     }
     if (!doc_.file().empty()) {
         return saveTo(doc_.file());
