@@ -1,6 +1,7 @@
 // app.cpp — one frame: layout, UI, requests carried out, one undo step, the 3D view.
 #include "app/app.h"
 
+#include "app/view_cache.h"
 #include "core/file_io.h"
 #include "core/probe.h"
 #include "render/renderer.h"
@@ -22,18 +23,15 @@ constexpr float kMinPresenterScale = 1.5f, kMaxPresenterScale = 2.5f, kPresenter
 constexpr float kToastSeconds = 4.0f;
 const glm::vec3 kWindowBackground(0.09f, 0.09f, 0.11f);
 
-unsigned modifiersOf(const KeyPress& k) { return (k.ctrl ? kCtrl : 0u) | (k.shift ? kShift : 0u) | (k.alt ? kAlt : 0u); }
-
 } // namespace
 
-std::vector<std::pair<float, float>> clicksOf(const std::vector<MouseButtonEvent>& events,
-                                              std::optional<MouseButtonEvent>& pending) {
+std::vector<std::pair<float, float>> clicksOf(const std::vector<InputEvent>& events, std::optional<InputEvent>& pending) {
     std::vector<std::pair<float, float>> clicks;
-    for (const MouseButtonEvent& e : events) {
-        if (e.button != 0) {
+    for (const InputEvent& e : events) {
+        if (e.kind != InputEvent::Kind::Button || e.code != 0) {
             continue;
         }
-        if (e.pressed) {
+        if (e.down) {
             pending = e;
         } else if (pending) {
             if (std::hypot(e.x - pending->x, e.y - pending->y) < 4.0f) {
@@ -58,7 +56,7 @@ struct App::Impl {
     enum class Panels { All, PlotsOnly, None } panels = Panels::All; // Tab cycles
     bool showHelp = false, presenter = false, caption = false, lightShapes = true;
     float presenterScale = 1.75f;
-    std::optional<MouseButtonEvent> pressed; // a left press whose release has not come yet
+    std::optional<InputEvent> pressed; // a left press whose release has not come yet
     std::optional<ProbeResult> probe;
     bool probeOpen = false;
     unsigned probeScene = 0; // the scene the probe belongs to
@@ -66,6 +64,9 @@ struct App::Impl {
     std::string toast;
     float toastLeft = 0.0f;
     float frameMs = 0.0f;
+    CachedView viewA, viewB; // the 3D views kept between frames
+    ViewResolution resolution;
+    int viewSamples = 0;     // what the GL offers of AppOptions::viewSamples
     unsigned long long frames = 0;
     bool screenshotRequested = false, toggleFullscreen = false, pickFile = false;
 
@@ -96,8 +97,9 @@ struct App::Impl {
     void probeAt(const ui::ViewEvents& view);
     void collectMessages(float deltaTime);
     void drawViews(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy);
+    bool presentViews(const ui::Layout& layout, const FrameInput& in, float scale);
     void screenshot(const ui::Layout& layout, const FrameInput& in);
-    void writeLayoutFile(const FrameInput& in);
+    void writeLayoutFile(const FrameInput& in, bool settled);
 };
 
 //----------------------------------------------------------------------------------------
@@ -244,6 +246,31 @@ void App::Impl::drawViews(const ui::Layout& layout, float toPixels, float window
     }
 }
 
+// The live frame's views: each drawn into its offscreen copy when what it shows changed (at
+// `scale` of its size while dragging), then copied into the window. True when any was drawn.
+bool App::Impl::presentViews(const ui::Layout& layout, const FrameInput& in, float scale) {
+    float toPixels = static_cast<float>(in.framebufferWidth) / in.windowWidth;
+    const ViewSettings& view = workspace.view;
+    auto show = [&](CachedView& cache, const Preset& preset, std::shared_ptr<const Mesh> mesh, const ui::Rect& r) {
+        Viewport dest{static_cast<int>(r.x * toPixels), static_cast<int>((in.windowHeight - (r.y + r.h)) * toPixels),
+                      std::max(1, static_cast<int>(r.w * toPixels)), std::max(1, static_cast<int>(r.h * toPixels))};
+        ViewKey key{viewed(preset, view.mode), std::move(mesh),
+                    std::max(1, static_cast<int>(std::lround(dest.width * scale))),
+                    std::max(1, static_cast<int>(std::lround(dest.height * scale))), view.mode == ViewMode::Normals,
+                    renderer.generation()};
+        bool drawn = cache.update(renderer, key, viewSamples);
+        cache.present(in.targetFramebuffer, dest);
+        return drawn;
+    };
+    bool drawn = show(viewA, workspace.a(), workspace.meshA(), view.compare ? layout.viewA : layout.view);
+    if (view.compare) {
+        drawn = show(viewB, workspace.b(), workspace.meshB(), layout.viewB) || drawn;
+    } else {
+        viewB.reset(); // its memory back; compare mode draws it again
+    }
+    return drawn;
+}
+
 // The 3D view alone, at the window's pixel density, to a PNG (a download in the browser).
 void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
     const ui::Rect& v = layout.view;
@@ -261,11 +288,13 @@ void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
     workspace.saveScreenshot(image);
 }
 
-// GUI tests: every widget's rectangle, the window, and a frame counter to wait on.
-void App::Impl::writeLayoutFile(const FrameInput& in) {
+// GUI tests: every widget's rectangle, the window, a frame counter, and whether more frames
+// are due without input (a test waits until the lab has settled).
+void App::Impl::writeLayoutFile(const FrameInput& in, bool settled) {
     std::string layout = ui::widgets().text();
-    char window[96];
-    std::snprintf(window, sizeof window, "window 0 0 %.0f %.0f\nframe %llu\n", in.windowWidth, in.windowHeight, ++frames);
+    char window[128];
+    std::snprintf(window, sizeof window, "window 0 0 %.0f %.0f\nframe %llu\nsettled %d\n", in.windowWidth, in.windowHeight,
+                  ++frames, settled ? 1 : 0);
     layout += window;
     std::string error;
     writeFileAtomic(*options.layoutFile, layout, error);
@@ -289,6 +318,7 @@ bool App::init(Diagnostics& diagnostics) {
     m.shaderEditor.fragment = builtin.fragment;
     m.shaderEditor.lighting = builtin.lighting;
     m.workspace.start(fs::current_path(), m.options.preset);
+    m.viewSamples = supportedSamples(m.options.viewSamples);
     return true;
 }
 
@@ -300,19 +330,22 @@ FrameOutput App::frame(const FrameInput& in) {
         m.setPresenter(true); // --presenter: as if P had been pressed in this window
     }
     m.windowWidth = in.windowWidth;
-    m.frameMs = m.frameMs == 0.0f ? in.deltaTime * 1000.0f : m.frameMs * 0.95f + in.deltaTime * 50.0f;
+    m.frameMs = in.lastFrameSeconds * 1000.0f; // what the last frame cost (idle time between frames is not a frame's)
     Workspace& ws = m.workspace;
 
     //--- layout -> UI -> requests ---------------------------------------------------------
     ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.panels == Impl::Panels::All,
                                            m.panels != Impl::Panels::None});
     ui::ScreenModel model = m.screenModel();
-    model.clicks = clicksOf(in.mouseButtons, m.pressed);
+    model.clicks = clicksOf(in.events, m.pressed);
     model.panelInfo.compareStacked = layout.compareStacked;
     ui::ScreenEvents events = ui::drawScreen(layout, model);
     m.panel.focusOpenPath = false;
-    for (const KeyPress& k : in.keys) {
-        if (std::optional<Command> c = commandForKey(k.key, modifiersOf(k), events.typing)) {
+    for (const InputEvent& k : in.events) {
+        if (k.kind != InputEvent::Kind::Key || !k.down) {
+            continue;
+        }
+        if (std::optional<Command> c = commandForKey(k.code, k.modifiers, events.typing)) {
             events.requests.push_back({*c, *c == Command::SaveAs || *c == Command::Save ? m.panel.saveAsPath : ""});
         }
     }
@@ -348,9 +381,13 @@ FrameOutput App::frame(const FrameInput& in) {
     }
     bindFramebuffer(in.targetFramebuffer);
     clearFramebuffer(kWindowBackground, in.framebufferWidth, in.framebufferHeight);
-    m.drawViews(layout, static_cast<float>(in.framebufferWidth) / in.windowWidth, in.windowHeight, 0.0f, 0.0f);
+    float scale = m.resolution.update(events.dragging, in.lastFrameSeconds, m.options.frameBudgetSeconds);
+    bool viewDrawn = m.presentViews(layout, in, scale);
+    // A toast is removed when its time is up; nothing else on screen changes by itself (a
+    // reduced view is drawn at full size by the frame that ends the drag).
+    float redrawIn = m.toastLeft > 0.0f ? m.toastLeft : -1.0f;
     if (m.options.layoutFile) {
-        m.writeLayoutFile(in);
+        m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }
 
     FrameOutput out;
@@ -361,6 +398,9 @@ FrameOutput App::frame(const FrameInput& in) {
     out.title = "Lighting Lab - " + ws.document().displayName() + (ws.document().dirty() ? " *" : "");
     out.toggleFullscreen = std::exchange(m.toggleFullscreen, false);
     out.pickFile = std::exchange(m.pickFile, false);
+    out.viewDrawn = viewDrawn;
+    out.viewScale = scale;
+    out.redrawIn = redrawIn;
     return out;
 }
 

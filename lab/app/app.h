@@ -8,12 +8,16 @@
 // top and presents. The loop belongs to the platform (platform/window.h); the app never sees
 // GLFW or the browser, and draws no ImGui itself.
 //
+// Frames are drawn only when something changes (app/frame_pacer.h), and the 3D view only when
+// what it shows changes (app/view_cache.h).
+//
 // Implemented: live panel, plots, presets list, open/save/revert with unsaved-changes prompt,
 // drag-and-drop of presets and models, undo/redo, orbit/pan/zoom, light markers and dragging,
 // compare mode, per-term views, pixel probe, shader editor, screenshots, presenter mode,
 // help overlay, frame time. Errors are shown in the window and never change the scene.
 #pragma once
 
+#include "app/input.h"
 #include "app/workspace.h"
 #include "core/diagnostics.h"
 
@@ -25,34 +29,18 @@
 
 namespace lab {
 
-// A key press as the platform saw it: a GLFW key code (letters and digits are their ASCII
-// codes) with the modifiers held. Queued by the platform, because ImGui 1.86 polls key state
-// once a frame and misses a press and release that fall within one frame.
-struct KeyPress {
-    int key = 0;
-    bool ctrl = false, shift = false, alt = false;
-};
-
-// A mouse button going down or up, where it happened (window units). Queued by the platform, so
-// a click is seen at its own place however slow the frame.
-struct MouseButtonEvent {
-    float x = 0, y = 0;
-    int button = 0; // 0 left, 1 right
-    bool pressed = false;
-};
-
-// The left-button clicks in `events`: a press and its release less than 4 units apart, at the
+// The left-button clicks among `events`: a press and its release less than 4 units apart, at the
 // press's place. A press whose release has not come yet is carried over in `pending`.
-std::vector<std::pair<float, float>> clicksOf(const std::vector<MouseButtonEvent>& events,
-                                              std::optional<MouseButtonEvent>& pending);
+std::vector<std::pair<float, float>> clicksOf(const std::vector<InputEvent>& events, std::optional<InputEvent>& pending);
 
 struct FrameInput {
     float windowWidth = 0, windowHeight = 0; // ImGui's units (screen coordinates)
     int framebufferWidth = 0, framebufferHeight = 0;
-    float deltaTime = 1.0f / 60.0f;
+    float deltaTime = 1.0f / 60.0f;     // since the last frame (long after an idle wait)
+    float lastFrameSeconds = 0.0f;      // what the last frame cost, from its start to its swap
     std::vector<std::string> droppedFiles;
-    std::vector<KeyPress> keys;  // pressed since the last frame, in order
-    std::vector<MouseButtonEvent> mouseButtons; // since the last frame, in order
+    std::vector<InputEvent> events;     // this frame's share of the queued input (app/input.h)
+    int framesDue = 0;                  // frames the platform will draw after this one anyway (FramePacer::dueAfterThis)
     bool closeRequested = false; // the user closed the window
     std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/link.h)
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
@@ -66,6 +54,11 @@ struct FrameOutput {
     std::string link;               // the current scene as a preset link (shareable, restorable)
     std::vector<Download> downloads; // only when AppOptions::saveByDownload
     bool pickFile = false;           // the user asked to open a file (the browser shows its picker)
+    // When the next frame is needed without input (app/frame_pacer.h): 0 at once, > 0 in that
+    // many seconds (a toast going away), < 0 only on input.
+    float redrawIn = -1.0f;
+    bool viewDrawn = false;  // the 3D view was drawn this frame (otherwise its cached copy was shown)
+    float viewScale = 1.0f;  // the fraction of the view's width and height drawn (< 1 while dragging on a slow machine)
 };
 
 struct AppOptions {
@@ -79,6 +72,10 @@ struct AppOptions {
     bool saveByDownload = false;
     // Where Save puts the edits of a shipped preset (defaultUserFolder() when empty).
     std::filesystem::path userFolder;
+    int viewSamples = 0; // multisampling of the 3D view (the desktop asks for 4 where the GL has them)
+    // While dragging, the 3D view is drawn at a lower resolution when frames take longer than
+    // this (app/view_cache.h); 0 turns that off.
+    float frameBudgetSeconds = 0.05f;
 };
 
 // Owns the workspace, the renderer and the UI state (not copyable: impl_ is unique).

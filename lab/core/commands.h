@@ -21,6 +21,8 @@ namespace keys {
 constexpr int Space = 32, Escape = 256, Enter = 257, Tab = 258, Right = 262, Left = 263, Down = 264, Up = 265;
 constexpr int F1 = 290, F11 = 300, F12 = 301, Equal = 61, Minus = 45, KeypadAdd = 334, KeypadSubtract = 333;
 constexpr int KeypadEnter = 335;
+constexpr int LeftShift = 340, LeftControl = 341, LeftAlt = 342, LeftSuper = 343;
+constexpr int RightShift = 344, RightControl = 345, RightAlt = 346, RightSuper = 347;
 } // namespace keys
 
 // Modifier bits of a key press. No row uses Alt, so a press with Alt held runs no command.

@@ -1,8 +1,10 @@
 // glfw_window.cpp — the desktop platform: GLFW window, OpenGL ES 3.0 context (EGL), Dear ImGui.
 //
 // Implemented features:
-//   * the loop: poll events, one frame (imgui_host.h: ImGui's frame, App::frame, ImGui's draw
-//     data on top), swap; it sleeps on events while the window is minimized;
+//   * the loop: events, one frame (imgui_host.h: ImGui's frame, App::frame, ImGui's draw data on
+//     top), swap — only when a frame is due (app/frame_pacer.h); otherwise it sleeps in GLFW
+//     until an event or the app's timer, so an idle lab costs no CPU;
+//   * every input event is queued (imgui_glfw.h) and handed out a frame's share at a time;
 //   * dropped files and the close button go to the app (which may ask about unsaved edits);
 //   * presenter scale: fonts are re-rasterized at the new size (DejaVu Sans when installed,
 //     ImGui's built-in font otherwise) and the style scaled, instead of blurry stretching;
@@ -15,6 +17,7 @@
 // glGetError in the window.
 #include "platform/window.h"
 
+#include "app/frame_pacer.h"
 #include "platform/imgui_glfw.h"
 #include "platform/imgui_host.h"
 
@@ -25,13 +28,14 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <utility>
 #include <vector>
 
 namespace lab {
 
 namespace {
 
-struct WindowState : InputQueue {
+struct WindowState : PlatformInput {
     int windowedX = 100, windowedY = 100, windowedW = 1600, windowedH = 900;
 };
 
@@ -73,18 +77,16 @@ WindowOptions fitted(WindowOptions options) {
     return options;
 }
 
-// A GLFW window with an OpenGL ES 3.0 context (EGL), MSAA when there is any; nullptr with `error`.
+// A GLFW window with an OpenGL ES 3.0 context (EGL); nullptr with `error`. No multisampling:
+// the 3D view has its own (AppOptions::viewSamples), and the view is copied into the window with
+// a blit, which a multisampled window would refuse.
 GLFWwindow* openWindow(const WindowOptions& options, std::string& error) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
     glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
-    glfwWindowHint(GLFW_SAMPLES, 4);
+    glfwWindowHint(GLFW_SAMPLES, 0);
     GLFWwindow* window = glfwCreateWindow(options.width, options.height, "Lighting Lab", nullptr, nullptr);
-    if (!window) {
-        glfwWindowHint(GLFW_SAMPLES, 0);
-        window = glfwCreateWindow(options.width, options.height, "Lighting Lab", nullptr, nullptr);
-    }
     if (!window) {
         const char* description = nullptr;
         glfwGetError(&description);
@@ -98,13 +100,14 @@ GLFWwindow* openWindow(const WindowOptions& options, std::string& error) {
     return window;
 }
 
-FrameInput nextInput(GLFWwindow* window, WindowState& state, double& last) {
+FrameInput nextInput(GLFWwindow* window, WindowState& state, double& last, float lastCost) {
     FrameInput in;
     in.closeRequested = glfwWindowShouldClose(window);
     glfwSetWindowShouldClose(window, GLFW_FALSE);
     takeQueuedInput(state, in);
     double now = glfwGetTime();
     in.deltaTime = static_cast<float>(std::max(now - last, 1e-4));
+    in.lastFrameSeconds = lastCost;
     last = now;
     int w, h;
     glfwGetWindowSize(window, &w, &h);
@@ -114,17 +117,41 @@ FrameInput nextInput(GLFWwindow* window, WindowState& state, double& last) {
     return in;
 }
 
-// The loop: events, one frame, swap; it sleeps on events while the window is minimized.
+// Sleeps in GLFW as long as the pacer allows (until an event, or the app's timer), then takes
+// the events that came.
+void waitForEvents(GLFWwindow* window, WindowState& state, const FramePacer& pacer) {
+    double sleep = pacer.sleepFor(glfwGetTime(), !state.queue.empty());
+    if (glfwGetWindowAttrib(window, GLFW_ICONIFIED) || sleep < 0.0) {
+        glfwWaitEvents();
+    } else if (sleep > 0.0) {
+        glfwWaitEventsTimeout(sleep);
+    } else {
+        glfwPollEvents();
+    }
+}
+
+// The loop: a frame when one is due (app/frame_pacer.h), asleep otherwise.
 void loop(GLFWwindow* window, WindowState& state, ImGuiHost& host) {
+    FramePacer pacer;
     double last = glfwGetTime();
+    float lastCost = 0.0f;
     for (bool quit = false; !quit;) {
-        if (glfwGetWindowAttrib(window, GLFW_ICONIFIED)) {
-            glfwWaitEvents();
+        waitForEvents(window, state, pacer);
+        if (std::exchange(state.changed, false)) {
+            pacer.input();
+        }
+        bool queued = !state.queue.empty();
+        if (glfwGetWindowAttrib(window, GLFW_ICONIFIED) ||
+            (!pacer.due(glfwGetTime(), queued) && !glfwWindowShouldClose(window))) {
             continue;
         }
-        glfwPollEvents();
-        FrameOutput out = host.frame(nextInput(window, state, last), [] { ImGui_ImplGlfw_NewFrame(); });
+        double start = glfwGetTime();
+        FrameInput in = nextInput(window, state, last, lastCost);
+        in.framesDue = pacer.dueAfterThis(!state.queue.empty());
+        FrameOutput out = host.frame(in, [] { ImGui_ImplGlfw_NewFrame(); });
         glfwSwapBuffers(window);
+        lastCost = static_cast<float>(glfwGetTime() - start);
+        pacer.drawn(glfwGetTime(), out.redrawIn);
         glfwSetWindowTitle(window, out.title.c_str());
         if (out.toggleFullscreen) {
             toggleFullscreen(window, state);
@@ -142,10 +169,13 @@ WindowResult runWindow(const AppOptions& appOptions, const WindowOptions& option
     glfwSwapInterval(1);
     WindowResult result = WindowResult::Closed;
     {
-        App app(appOptions); // its GL objects go before the context does
+        AppOptions withSamples = appOptions;
+        withSamples.viewSamples = 4;
+        App app(withSamples); // its GL objects go before the context does
         WindowState state;
         ImGuiHost host(kFonts);
         GlfwBackend backend(window, &state);
+        glfwSetWindowCloseCallback(window, [](GLFWwindow* w) { static_cast<PlatformInput*>(glfwGetWindowUserPointer(w))->changed = true; });
         if (!host.start(app, error)) {
             result = WindowResult::Failed;
         } else {

@@ -1,5 +1,7 @@
-// imgui_glfw.cpp — the GLFW backend of ImGui with queued keys and drops.
+// imgui_glfw.cpp — GLFW's events into the lab's input queue; ImGui's GLFW backend for the rest.
 #include "platform/imgui_glfw.h"
+
+#include "core/commands.h"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -8,52 +10,89 @@ namespace lab {
 
 namespace {
 
-InputQueue* queueOf(GLFWwindow* window) { return static_cast<InputQueue*>(glfwGetWindowUserPointer(window)); }
+PlatformInput& inputOf(GLFWwindow* window) { return *static_cast<PlatformInput*>(glfwGetWindowUserPointer(window)); }
 
-// ImGui 1.86 polls key state once a frame; a press and release within one frame would be lost
-// for the app's shortcuts, so they are queued here (ImGui calls this after its own callback).
+void push(GLFWwindow* window, const InputEvent& e) {
+    PlatformInput& input = inputOf(window);
+    input.queue.push(e);
+    input.changed = true;
+}
+
+unsigned modifiersOf(int mods) {
+    return ((mods & GLFW_MOD_CONTROL) ? kCtrl : 0u) | ((mods & GLFW_MOD_SHIFT) ? kShift : 0u) |
+           ((mods & GLFW_MOD_ALT) ? kAlt : 0u);
+}
+
 void onKey(GLFWwindow* window, int key, int, int action, int mods) {
-    if (action == GLFW_PRESS || action == GLFW_REPEAT) {
-        queueOf(window)->keys.push_back(
-            {key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0});
+    if (key >= 0) {
+        push(window, InputEvent::key(key, action != GLFW_RELEASE, modifiersOf(mods), action == GLFW_REPEAT));
     }
 }
 
-// ImGui 1.86 polls the cursor once a frame: a click's own position is queued here.
+void onChar(GLFWwindow* window, unsigned int c) { push(window, InputEvent::character(c)); }
+
+void onCursor(GLFWwindow* window, double x, double y) {
+    float s = inputOf(window).cursorScale;
+    push(window, InputEvent::move(static_cast<float>(x) * s, static_cast<float>(y) * s));
+}
+
+// The press's own place, as GLFW knows it now (the cursor events before it are queued already).
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
-    if (button > 1 || (action != GLFW_PRESS && action != GLFW_RELEASE)) {
-        return;
-    }
     double x = 0, y = 0;
     glfwGetCursorPos(window, &x, &y);
-    queueOf(window)->mouseButtons.push_back({static_cast<float>(x), static_cast<float>(y), button, action == GLFW_PRESS});
+    float s = inputOf(window).cursorScale;
+    push(window, InputEvent::button(button, action == GLFW_PRESS, static_cast<float>(x) * s, static_cast<float>(y) * s));
 }
+
+void onScroll(GLFWwindow* window, double dx, double dy) {
+    push(window, InputEvent::scroll(static_cast<float>(dx), static_cast<float>(dy)));
+}
+
+void onEnter(GLFWwindow* window, int entered) {
+    ImGui_ImplGlfw_CursorEnterCallback(window, entered);
+    if (!entered) {
+        push(window, InputEvent::leave());
+    }
+}
+
+void onFocus(GLFWwindow* window, int focused) {
+    ImGui_ImplGlfw_WindowFocusCallback(window, focused);
+    inputOf(window).changed = true;
+}
+
+void onChange(GLFWwindow* window) { inputOf(window).changed = true; }
 
 void onDrop(GLFWwindow* window, int count, const char** paths) {
     for (int i = 0; i < count; ++i) {
-        queueOf(window)->dropped.emplace_back(paths[i]);
+        inputOf(window).queue.drop(paths[i]);
     }
+    inputOf(window).changed = true;
 }
 
 } // namespace
 
-GlfwBackend::GlfwBackend(GLFWwindow* window, InputQueue* queue) {
-    glfwSetWindowUserPointer(window, queue);
+GlfwBackend::GlfwBackend(GLFWwindow* window, PlatformInput* input) {
+    glfwSetWindowUserPointer(window, input);
+    ImGui_ImplGlfw_InitForOpenGL(window, false);
     glfwSetKeyCallback(window, onKey);
-    glfwSetDropCallback(window, onDrop);
+    glfwSetCharCallback(window, onChar);
+    glfwSetCursorPosCallback(window, onCursor);
     glfwSetMouseButtonCallback(window, onMouseButton);
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    glfwSetScrollCallback(window, onScroll);
+    glfwSetCursorEnterCallback(window, onEnter);
+    glfwSetWindowFocusCallback(window, onFocus);
+    glfwSetDropCallback(window, onDrop);
+    glfwSetWindowSizeCallback(window, [](GLFWwindow* w, int, int) { onChange(w); });
+    glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { onChange(w); });
+    glfwSetWindowRefreshCallback(window, onChange);
+    glfwSetWindowIconifyCallback(window, [](GLFWwindow* w, int) { onChange(w); });
 }
 
 GlfwBackend::~GlfwBackend() { ImGui_ImplGlfw_Shutdown(); }
 
-void takeQueuedInput(InputQueue& queue, FrameInput& in) {
-    in.keys.swap(queue.keys);
-    queue.keys.clear();
-    in.mouseButtons.swap(queue.mouseButtons);
-    queue.mouseButtons.clear();
-    in.droppedFiles.swap(queue.dropped);
-    queue.dropped.clear();
+void takeQueuedInput(PlatformInput& input, FrameInput& in) {
+    in.events = input.queue.takeFrame();
+    in.droppedFiles = input.queue.takeDropped();
 }
 
 } // namespace lab

@@ -1,36 +1,35 @@
 // imgui_glfw.h — what the desktop and browser platforms share beyond imgui_host.h: both run
-// Dear ImGui's GLFW backend (Emscripten implements GLFW over the canvas), with the key presses and
-// drops queued between frames. Not the loop.
+// Dear ImGui's GLFW backend (Emscripten implements GLFW over the canvas) for the display size,
+// the time and the cursor's shape, while every input event goes through the lab's own queue
+// (app/input.h), so none is lost however long a frame takes. Not the loop.
 #pragma once
 
 #include "app/app.h"
-
-#include <string>
-#include <vector>
+#include "app/input.h"
 
 struct GLFWwindow;
 
 namespace lab {
 
-// Key presses and dropped files collected by GLFW callbacks between frames.
-struct InputQueue {
-    std::vector<KeyPress> keys;
-    std::vector<MouseButtonEvent> mouseButtons; // in GLFW's cursor units (the browser: canvas pixels)
-    std::vector<std::string> dropped;
+// What GLFW's callbacks collected since the loop last looked.
+struct PlatformInput {
+    InputQueue queue;
+    float cursorScale = 1.0f; // GLFW's cursor units to window units (the browser: 1 / device pixel ratio)
+    bool changed = false;     // anything happened, input or not (a resize, an uncovered window, focus)
 };
 
-// ImGui's GLFW backend on `window` for as long as it lives, with key and drop callbacks feeding
-// `queue` (installed first: the backend chains the callbacks installed before it). Needs the
-// ImGui context (ImGuiHost).
+// ImGui's GLFW backend on `window` for as long as it lives, without its input callbacks: the
+// lab's callbacks queue every event into `input` instead (focus and the cursor entering go to
+// the backend too). Needs the ImGui context (ImGuiHost).
 class GlfwBackend {
 public:
-    GlfwBackend(GLFWwindow* window, InputQueue* queue);
+    GlfwBackend(GLFWwindow* window, PlatformInput* input);
     ~GlfwBackend();
     GlfwBackend(const GlfwBackend&) = delete;
     GlfwBackend& operator=(const GlfwBackend&) = delete;
 };
 
-// Moves what the callbacks queued into the frame's input.
-void takeQueuedInput(InputQueue& queue, FrameInput& in);
+// Moves one frame's share of the queued input (and every dropped file) into the frame's input.
+void takeQueuedInput(PlatformInput& input, FrameInput& in);
 
 } // namespace lab

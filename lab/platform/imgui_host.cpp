@@ -1,15 +1,67 @@
 // imgui_host.cpp — ImGui context, OpenGL3 backend, fonts and the frame order.
 #include "platform/imgui_host.h"
 
+#include "core/commands.h"
 #include "render/gl.h"
 #include "render/renderer.h"
 
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <cfloat>
 #include <filesystem>
 
 namespace lab {
+
+namespace {
+
+// The mouse as this frame's events leave it. Platform backends set io.MousePos and MouseDown
+// from polled state in their NewFrame; these are written over them.
+struct Pointer {
+    ImVec2 pos{-FLT_MAX, -FLT_MAX};
+    bool down[3] = {};
+};
+
+// A frame's share of the queued input (app/input.h) into ImGui's state, in order.
+void feed(const std::vector<InputEvent>& events, Pointer& p) {
+    ImGuiIO& io = ImGui::GetIO();
+    for (const InputEvent& e : events) {
+        switch (e.kind) {
+        case InputEvent::Kind::Move: p.pos = ImVec2(e.x, e.y); break;
+        case InputEvent::Kind::Leave:
+            if (!p.down[0] && !p.down[1] && !p.down[2]) { // a drag goes on outside the window
+                p.pos = ImVec2(-FLT_MAX, -FLT_MAX);
+            }
+            break;
+        case InputEvent::Kind::Button:
+            p.pos = ImVec2(e.x, e.y);
+            if (e.code >= 0 && e.code < 3) {
+                p.down[e.code] = e.down;
+            }
+            break;
+        case InputEvent::Kind::Scroll:
+            io.MouseWheelH += e.x;
+            io.MouseWheel += e.y;
+            break;
+        case InputEvent::Kind::Key:
+            if (e.code >= 0 && e.code < IM_ARRAYSIZE(io.KeysDown) && !e.repeat) {
+                io.KeysDown[e.code] = e.down;
+            }
+            break;
+        case InputEvent::Kind::Char: io.AddInputCharacter(static_cast<unsigned>(e.code)); break;
+        }
+    }
+    io.MousePos = p.pos;
+    for (int i = 0; i < 3; ++i) {
+        io.MouseDown[i] = p.down[i];
+    }
+    io.KeyCtrl = io.KeysDown[keys::LeftControl] || io.KeysDown[keys::RightControl];
+    io.KeyShift = io.KeysDown[keys::LeftShift] || io.KeysDown[keys::RightShift];
+    io.KeyAlt = io.KeysDown[keys::LeftAlt] || io.KeysDown[keys::RightAlt];
+    io.KeySuper = io.KeysDown[keys::LeftSuper] || io.KeysDown[keys::RightSuper];
+}
+
+} // namespace
 
 struct ImGuiHost::Impl {
     std::vector<std::string> fontFiles;
@@ -17,6 +69,7 @@ struct ImGuiHost::Impl {
     ImGuiStyle baseStyle;
     float scale = 0.0f;
     bool backend = false;
+    Pointer pointer;
 
     // Rebuilds the font atlas at `s` and scales a copy of the base style, instead of stretching.
     void applyScale(float s) {
@@ -47,6 +100,8 @@ ImGuiHost::ImGuiHost(std::vector<std::string> fontFiles) : impl_(std::make_uniqu
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr; // the layout is the app's, not a file's
+    // A steady caret: a blinking one would need a frame twice a second in an idle lab.
+    ImGui::GetIO().ConfigInputTextCursorBlink = false;
     ImGui::StyleColorsDark();
     impl_->baseStyle = ImGui::GetStyle();
 }
@@ -79,6 +134,7 @@ FrameOutput ImGuiHost::frame(const FrameInput& in, const std::function<void()>& 
     Impl& m = *impl_;
     ImGui_ImplOpenGL3_NewFrame();
     platformNewFrame();
+    feed(in.events, m.pointer);
     ImGui::NewFrame();
     FrameOutput out = m.app->frame(in);
     ImGui::Render();

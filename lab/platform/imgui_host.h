@@ -27,8 +27,8 @@ public:
     // GL ES 3.0 context. Then App::init. False with `error` when either fails.
     bool start(App& app, std::string& error);
 
-    // One frame: the renderer backend's NewFrame, `platformNewFrame` (mouse, keys, display
-    // size), ImGui::NewFrame, App::frame, ImGui::Render, and ImGui's draw data over the app's
+    // One frame: the renderer backend's NewFrame, `platformNewFrame` (display size, time, the
+    // cursor's shape), the frame's input events (in.events: mouse, keys, text), ImGui::NewFrame, App::frame, ImGui::Render, and ImGui's draw data over the app's
     // frame in in.targetFramebuffer. Fonts are rebuilt when the app asks for another UI scale.
     FrameOutput frame(const FrameInput& in, const std::function<void()>& platformNewFrame);
 

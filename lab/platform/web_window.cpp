@@ -2,8 +2,9 @@
 // and the page's glue (web/index.html).
 //
 // Implemented features:
-//   * the loop is the browser's (emscripten_set_main_loop): one frame (imgui_host.h) per
-//     animation frame, never blocking;
+//   * the loop is the browser's (emscripten_set_main_loop): an animation frame draws a frame
+//     (imgui_host.h) only when one is due (app/frame_pacer.h: input, a resize, the app's timer)
+//     and returns at once otherwise, so an idle page costs (close to) nothing;
 //   * the canvas fills the page, follows resizes and renders at the device pixel ratio, while
 //     ImGui works in CSS pixels (so the UI is sharp and the usual size on high-DPI screens);
 //   * files dropped on the canvas or chosen in the page's file picker land in /presets (next to
@@ -14,6 +15,7 @@
 // Not here: anything about presets, rendering or the UI's content.
 #include "platform/window.h"
 
+#include "app/frame_pacer.h"
 #include "platform/imgui_glfw.h"
 #include "platform/imgui_host.h"
 #include "ui/widget_map.h"
@@ -76,13 +78,16 @@ EM_JS(void, labJsReady, (), {
 
 const std::vector<std::string> kFonts = {"/fonts/DejaVuSans.ttf"};
 
-struct WebState : InputQueue {
+struct WebState : PlatformInput {
     explicit WebState(const AppOptions& options) : app(options) {}
     App app;
     ImGuiHost host{kFonts};
     GLFWwindow* window = nullptr;
     std::unique_ptr<GlfwBackend> backend;
     double last = 0.0;
+    float lastCost = 0.0f;
+    FramePacer pacer;
+    int canvasWidth = 0, canvasHeight = 0;
     std::string lastLink, lastTitle;
     std::optional<std::string> pendingLink;
     int frames = 0;
@@ -102,8 +107,8 @@ std::string adopt(const std::string& path) {
     return ec ? path : to.string();
 }
 
-// The canvas follows its CSS size at the device pixel ratio; the frame's input in CSS pixels.
-FrameInput nextInput(WebState& s, double dpr) {
+// The canvas follows its CSS size at the device pixel ratio; true when it changed.
+bool fitCanvas(WebState& s, double dpr) {
     double cssWidth = 0, cssHeight = 0;
     emscripten_get_element_css_size("#canvas", &cssWidth, &cssHeight);
     int pixelWidth = std::max(1, static_cast<int>(cssWidth * dpr + 0.5));
@@ -115,19 +120,24 @@ FrameInput nextInput(WebState& s, double dpr) {
         // screen's. ImGui's display size and scale are set below, so GLFW's idea does not matter.
         emscripten_set_canvas_element_size("#canvas", pixelWidth, pixelHeight);
     }
+    bool changed = pixelWidth != s.canvasWidth || pixelHeight != s.canvasHeight;
+    s.canvasWidth = pixelWidth;
+    s.canvasHeight = pixelHeight;
+    return changed;
+}
+
+// The frame's input in CSS pixels (the queued events are converted as they arrive: cursorScale).
+FrameInput nextInput(WebState& s, double dpr) {
     FrameInput in;
-    in.windowWidth = static_cast<float>(std::max(cssWidth, 1.0));
-    in.windowHeight = static_cast<float>(std::max(cssHeight, 1.0));
-    in.framebufferWidth = pixelWidth;
-    in.framebufferHeight = pixelHeight;
+    in.framebufferWidth = s.canvasWidth;
+    in.framebufferHeight = s.canvasHeight;
+    in.windowWidth = static_cast<float>(std::max(1.0, s.canvasWidth / dpr));
+    in.windowHeight = static_cast<float>(std::max(1.0, s.canvasHeight / dpr));
     double now = glfwGetTime();
     in.deltaTime = static_cast<float>(std::max(now - s.last, 1e-4));
+    in.lastFrameSeconds = s.lastCost;
     s.last = now;
     takeQueuedInput(s, in);
-    for (MouseButtonEvent& e : in.mouseButtons) { // canvas pixels to CSS pixels, as ImGui's
-        e.x /= static_cast<float>(dpr);
-        e.y /= static_cast<float>(dpr);
-    }
     for (std::string& f : in.droppedFiles) {
         f = adopt(f);
     }
@@ -153,22 +163,31 @@ void deliver(WebState& s, const FrameOutput& out) {
     }
 }
 
+// One animation frame: returns at once unless a frame is due.
 void frame(void* arg) {
     WebState& s = *static_cast<WebState*>(arg);
     double dpr = emscripten_get_device_pixel_ratio();
+    s.cursorScale = static_cast<float>(1.0 / dpr); // Emscripten's GLFW speaks canvas pixels, ImGui CSS pixels
+    bool resized = fitCanvas(s, dpr); // always: it keeps the canvas at the page's size
+    if (resized || std::exchange(s.changed, false) || s.pendingLink) {
+        s.pacer.input();
+    }
+    if (!s.pacer.due(glfwGetTime(), !s.queue.empty())) {
+        return;
+    }
+    double start = glfwGetTime();
     FrameInput in = nextInput(s, dpr);
+    in.framesDue = s.pacer.dueAfterThis(!s.queue.empty());
     FrameOutput out = s.host.frame(in, [&] {
         ImGui_ImplGlfw_NewFrame();
-        // Emscripten's GLFW speaks canvas pixels; ImGui works in CSS pixels.
         ImGuiIO& io = ImGui::GetIO();
         io.DisplaySize = ImVec2(in.windowWidth, in.windowHeight);
         io.DisplayFramebufferScale = ImVec2(static_cast<float>(dpr), static_cast<float>(dpr));
-        if (io.MousePos.x > -FLT_MAX) {
-            io.MousePos = ImVec2(io.MousePos.x / static_cast<float>(dpr), io.MousePos.y / static_cast<float>(dpr));
-        }
         io.DeltaTime = in.deltaTime;
     });
     deliver(s, out);
+    s.lastCost = static_cast<float>(glfwGetTime() - start);
+    s.pacer.drawn(glfwGetTime(), out.redrawIn);
     if (++s.frames == 2) {
         labJsReady(); // the page (and its tests) know the first frames are drawn
     }
@@ -180,7 +199,8 @@ void frame(void* arg) {
 extern "C" {
 EMSCRIPTEN_KEEPALIVE void lab_open_file(const char* path) {
     if (gState) {
-        gState->dropped.emplace_back(path);
+        gState->queue.drop(path);
+        gState->changed = true;
     }
 }
 EMSCRIPTEN_KEEPALIVE void lab_open_link(const char* link) {
@@ -188,6 +208,8 @@ EMSCRIPTEN_KEEPALIVE void lab_open_link(const char* link) {
         gState->pendingLink = std::string(link);
     }
 }
+// For browser tests: the frames drawn so far (an idle page draws none).
+EMSCRIPTEN_KEEPALIVE int lab_frames() { return gState ? gState->frames : 0; }
 // For browser tests: the screen rectangles of the main widgets, in CSS pixels ("name x y w h").
 EMSCRIPTEN_KEEPALIVE const char* lab_widgets() {
     static std::string text;

@@ -3,6 +3,7 @@
 
 #include "core/image.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <string>
@@ -137,6 +138,7 @@ GLsizei uploadFlat(GLuint& vao, GLuint& vbo, const std::vector<FlatVertex>& vert
 
 struct Renderer::Impl {
     StageSources sources;
+    unsigned generation = 0;
     Program perVertex, perPixel;
 
     bool build(const StageSources& s, Diagnostics& diagnostics) {
@@ -152,6 +154,7 @@ struct Renderer::Impl {
         perVertex.reset(*v);
         perPixel.reset(*p);
         sources = s;
+        ++generation;
         return true;
     }
 
@@ -190,6 +193,8 @@ bool Renderer::setStageSources(const StageSources& sources, Diagnostics& diagnos
 }
 
 const StageSources& Renderer::stageSources() const { return impl_->sources; }
+
+unsigned Renderer::generation() const { return impl_->generation; }
 
 void Renderer::draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewport, const DrawOptions& options) {
     Impl& m = *impl_;
@@ -348,6 +353,80 @@ Image Framebuffer::readRgb() const {
         }
     }
     return image;
+}
+
+//----------------------------------------------------------------------------------------
+// ViewTarget
+//----------------------------------------------------------------------------------------
+
+namespace {
+
+GLuint renderbuffer(GLenum format, int width, int height, int samples) {
+    GLuint id = 0;
+    glGenRenderbuffers(1, &id);
+    glBindRenderbuffer(GL_RENDERBUFFER, id);
+    if (samples > 0) {
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+    } else {
+        glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+    }
+    return id;
+}
+
+} // namespace
+
+int supportedSamples(int wanted) {
+    GLint most = 0;
+    glGetInternalformativ(GL_RENDERBUFFER, GL_RGBA8, GL_SAMPLES, 1, &most); // the largest comes first
+    return std::max(0, std::min(wanted, static_cast<int>(most)));
+}
+
+ViewTarget::ViewTarget(int width, int height, int samples) : width_(width), height_(height), samples_(samples) {
+    glGenFramebuffers(1, &drawFbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, drawFbo_);
+    drawColor_ = renderbuffer(GL_RGBA8, width, height, samples);
+    depth_ = renderbuffer(GL_DEPTH_COMPONENT24, width, height, samples);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, drawColor_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    complete_ = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    if (samples > 0) {
+        glGenFramebuffers(1, &readFbo_);
+        glBindFramebuffer(GL_FRAMEBUFFER, readFbo_);
+        readColor_ = renderbuffer(GL_RGBA8, width, height, 0);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, readColor_);
+        complete_ = complete_ && glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    }
+}
+
+ViewTarget::~ViewTarget() {
+    glDeleteFramebuffers(1, &drawFbo_);
+    glDeleteRenderbuffers(1, &drawColor_);
+    glDeleteRenderbuffers(1, &depth_);
+    if (readFbo_) {
+        glDeleteFramebuffers(1, &readFbo_);
+        glDeleteRenderbuffers(1, &readColor_);
+    }
+}
+
+void ViewTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, drawFbo_); }
+
+void ViewTarget::resolve() const {
+    if (readFbo_) {
+        glDisable(GL_SCISSOR_TEST); // a blit obeys the scissor
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, drawFbo_);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, readFbo_);
+        glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+}
+
+void ViewTarget::present(unsigned target, const Viewport& dest) const {
+    glDisable(GL_SCISSOR_TEST); // a blit obeys the scissor
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, readFbo_ ? readFbo_ : drawFbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+    bool same = dest.width == width_ && dest.height == height_;
+    glBlitFramebuffer(0, 0, width_, height_, dest.x, dest.y, dest.x + dest.width, dest.y + dest.height, GL_COLOR_BUFFER_BIT,
+                      same ? GL_NEAREST : GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
 }
 
 } // namespace lab

@@ -60,6 +60,9 @@ public:
     // failure keeps the previous programs running and stageSources() unchanged.
     bool setStageSources(const StageSources& sources, Diagnostics& diagnostics);
     const StageSources& stageSources() const;
+    // Counts the programs built: changes whenever setStageSources succeeds (a cached view drawn
+    // with the old programs is stale).
+    unsigned generation() const;
 
     // Clears the viewport to the background and draws the mesh with the preset's shading,
     // transforms and lights into the bound framebuffer. Aspect = viewport width / height.
@@ -103,5 +106,35 @@ private:
     GLuint fbo_ = 0, color_ = 0, depth_ = 0;
     bool complete_ = false;
 };
+
+// A 3D view kept offscreen between frames (the interactive lab draws the model only when what it
+// shows changes): colour and depth at width × height with `samples` (0: none) for drawing into,
+// resolved into a single-sample copy that present() scales onto the bound draw framebuffer.
+class ViewTarget {
+public:
+    ViewTarget(int width, int height, int samples);
+    ~ViewTarget();
+    ViewTarget(const ViewTarget&) = delete;
+    ViewTarget& operator=(const ViewTarget&) = delete;
+
+    bool complete() const { return complete_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int samples() const { return samples_; }
+    void bind() const;    // for drawing: Viewport{0, 0, width(), height()}
+    void resolve() const; // after drawing: the samples into the single-sample copy
+    // Copies the view into `dest` of framebuffer `target` (left bound), filtered linearly when
+    // the sizes differ, pixel for pixel when they match.
+    void present(unsigned target, const Viewport& dest) const;
+
+private:
+    int width_, height_, samples_;
+    GLuint drawFbo_ = 0, drawColor_ = 0, depth_ = 0; // multisampled when samples_ > 0
+    GLuint readFbo_ = 0, readColor_ = 0;             // the resolved copy (drawFbo_ itself without samples)
+    bool complete_ = false;
+};
+
+// The largest sample count the GL offers for an RGBA8 view, at most `wanted`.
+int supportedSamples(int wanted);
 
 } // namespace lab

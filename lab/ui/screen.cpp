@@ -66,6 +66,7 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     lightMarkers(*m.a, active, m.viewControls->light, m.lightShapes);
     viewOverlay(m.overlay, layout);
     events.gesture = ImGui::IsAnyItemActive() || events.view.gesture;
+    events.dragging = events.gesture && ImGui::IsAnyMouseDown();
     return events;
 }
 

@@ -50,6 +50,7 @@ struct ScreenEvents {
     bool problemClosed = false;
     std::optional<UnsavedAnswer> answer;
     bool gesture = false; // a widget or a view gesture is still active (one undo step when it ends)
+    bool dragging = false; // ... with a mouse button held: a slider, a colour, the camera, a light
     bool typing = false;  // a text field has the keyboard: plain-key shortcuts are off
 };
 

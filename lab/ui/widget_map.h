@@ -19,6 +19,10 @@ public:
     void mark(const std::string& name); // the last ImGui item
     void set(const std::string& name, const Rect& r) { rects_[name] = r; }
     std::string text() const;           // "name x y w h" per line, sorted by name
+    const Rect* find(const std::string& name) const {
+        auto it = rects_.find(name);
+        return it == rects_.end() ? nullptr : &it->second;
+    }
 private:
     std::map<std::string, Rect> rects_;
 };

@@ -41,22 +41,22 @@ TEST(GuiFit, TheWindowAndEveryPlotFitTheScreenNormalAndInPresenterMode) {
     START_LAB(lab, "--preset", preset("12-blinn-phong"));
     int screenW = 0, screenH = 0;
     lab.x().screenSize(screenW, screenH);
-    lab.waitFrames(3);
+    lab.settle();
     expectEverythingFits(lab, screenW, screenH, "normal");
     Rect view = lab.widget("view");
     lab.moveTo(view.cx(), view.cy());
     lab.press("p");
-    lab.waitFrames(3);
+    lab.settle();
     expectEverythingFits(lab, screenW, screenH, "presenter 1.75x");
     for (int i = 0; i < 4; ++i) {
         lab.press("equal", "Control_L");
     }
-    lab.waitFrames(3);
+    lab.settle();
     expectEverythingFits(lab, screenW, screenH, "presenter 2.5x");
     // Tab cycles all / plots and model / model only; presenter mode may have hidden the panel.
     for (int i = 0; i < 3 && !(lab.has("panel") && lab.has("plots")); ++i) {
         lab.press("Tab");
-        lab.waitFrames(2);
+        lab.settle();
     }
     ASSERT_TRUE(lab.has("panel") && lab.has("plots")) << "Tab should bring every panel back";
     expectEverythingFits(lab, screenW, screenH, "presenter 2.5x, all panels");
@@ -70,11 +70,11 @@ TEST(GuiClassroom, TheCaptionTellsThePresetsStoryAndFollowsTheSteps) {
     Rect view = lab.widget("view");
     lab.moveTo(view.cx(), view.cy());
     lab.press("Right"); // 10-coarse-gouraud: another name and description
-    lab.waitFrames(3);
+    lab.settle();
     Rect second = lab.widget("view.caption");
     EXPECT_TRUE(first.w != second.w || first.h != second.h) << "the caption should follow the preset";
     lab.press("i");
-    lab.waitFrames(2);
+    lab.settle();
     EXPECT_FALSE(lab.has("view.caption"));
 }
 
@@ -89,7 +89,7 @@ TEST(GuiClassroom, SavingAShippedPresetLeavesPresetsAsTheyAre) {
         lab.moveTo(view.cx(), view.cy());
         lab.press("1");
         lab.press("s", "Control_L");
-        lab.waitFrames(3);
+        lab.settle();
     }
     ::unsetenv("XDG_DATA_HOME");
     EXPECT_EQ(readText(preset("05-full-phong")), before) << "a shipped preset was overwritten";
@@ -107,10 +107,10 @@ TEST(GuiClassroom, AnOrbitAloneDoesNotAskAboutUnsavedChanges) {
     Rect view = lab.widget("view");
     lab.drag(view.cx() - 60, view.cy(), view.cx() + 60, view.cy() + 20);
     lab.press("Right");
-    lab.waitFrames(3);
+    lab.settle();
     EXPECT_FALSE(lab.has("confirm.discard")) << "an orbit is not an unsaved change";
     lab.press("Left");
-    lab.waitFrames(3);
+    lab.settle();
     EXPECT_FALSE(lab.has("confirm.discard"));
 }
 
@@ -119,13 +119,13 @@ TEST(GuiClassroom, TheProbeMarkerAppearsAndGoesWithTheProbe) {
     Rect view = lab.widget("view");
     EXPECT_FALSE(lab.has("view.probe-marker"));
     lab.click(view.cx(), view.cy()); // the sphere is in the middle
-    lab.waitFrames(2);
+    lab.settle();
     ASSERT_TRUE(lab.has("view.probe-marker")) << "a probe marks its pixel";
     Rect marker = lab.widget("view.probe-marker");
     EXPECT_NEAR(marker.cx(), view.cx(), 6);
     EXPECT_NEAR(marker.cy(), view.cy(), 6);
     lab.click(view.x + 12, view.y + view.h - 12); // beside the model: the probe closes
-    lab.waitFrames(2);
+    lab.settle();
     EXPECT_FALSE(lab.has("view.probe-marker"));
 }
 

@@ -3,8 +3,10 @@
 // Each test starts the real `lab` in a real window (CTest runs this under Xvfb), finds widgets
 // through the rectangles the lab writes with --layout-file, sends real X input (XTEST), drops
 // real files (XDND), and checks the pictures: screenshots of the 3D view the lab writes on F12,
-// and captures of the screen. The layout file's frame counter is how a test waits for the lab to
-// have seen its input; no test depends on a fixed sleep.
+// and captures of the screen. The lab draws only when something changes (app/frame_pacer.h), so
+// a test waits for it to settle: the layout file's frame counter has moved past the frame before
+// the input, and its last frame says no more are due ("settled 1"). No test depends on a fixed
+// sleep.
 #pragma once
 
 #include "x11_driver.h"
@@ -71,7 +73,7 @@ public:
             return false;
         }
         window_ = x_.findWindow("Lighting Lab", 20.0);
-        return window_ != 0 && waitFrames(3);
+        return window_ != 0 && settle(0);
     }
 
     X11Driver& x() { return x_; }
@@ -84,6 +86,10 @@ public:
         while (in >> name) {
             if (name == "frame") {
                 in >> frame_;
+                continue;
+            }
+            if (name == "settled") {
+                in >> settled_;
                 continue;
             }
             Rect r;
@@ -102,66 +108,78 @@ public:
         return it == rects.end() ? Rect{} : it->second;
     }
 
-    bool waitFrames(unsigned long long n) {
+    // The frames drawn so far (the layout file's counter).
+    unsigned long long frame() {
         layout();
-        unsigned long long target = frame_ + n;
-        auto end = Clock::now() + std::chrono::seconds(30);
+        return frame_;
+    }
+
+    // Waits until the lab has drawn past frame `since` and owes no more frames: whatever input
+    // came after `since` has been seen and shown. Input that makes no event at all (a move to
+    // where the cursor already is) draws nothing: after 1.5 s without a frame that is settled too.
+    bool settle(unsigned long long since) {
+        auto start = Clock::now(), end = start + std::chrono::seconds(30);
         while (Clock::now() < end) {
             layout();
-            if (frame_ >= target) {
+            if (settled_ && (frame_ > since || Clock::now() > start + std::chrono::milliseconds(1500))) {
                 return true;
             }
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
         }
+        ADD_FAILURE() << "the lab did not settle within 30 s (frame " << frame_ << ")";
         return false;
     }
+    // ... since the harness's last input.
+    bool settle() { return settle(sent_); }
 
     void moveTo(int wx, int wy) {
         int sx = wx, sy = wy;
         x_.toScreen(window_, sx, sy);
-        x_.moveMouse(sx, sy);
-        waitFrames(1);
+        send([&] { x_.moveMouse(sx, sy); });
     }
 
     void click(int wx, int wy, int times = 1) {
         moveTo(wx, wy);
         for (int i = 0; i < times; ++i) {
-            x_.button(1, true);
-            waitFrames(1);
-            x_.button(1, false);
-            waitFrames(1);
+            send([&] { x_.button(1, true); });
+            send([&] { x_.button(1, false); });
         }
     }
 
     // Drags with the left button from (x0, y0) to (x1, y1) in window coordinates, in steps.
     void drag(int x0, int y0, int x1, int y1) {
         moveTo(x0, y0);
-        x_.button(1, true);
-        waitFrames(1);
+        send([&] { x_.button(1, true); });
         for (int i = 1; i <= 5; ++i) {
             moveTo(x0 + (x1 - x0) * i / 5, y0 + (y1 - y0) * i / 5);
         }
-        x_.button(1, false);
-        waitFrames(2);
+        send([&] { x_.button(1, false); });
     }
 
-    // Presses and releases a key, held across frames so ImGui 1.86's polling sees it.
+    // Drops a real file (XDND) at (wx, wy) in window coordinates.
+    bool drop(const std::string& path, int wx, int wy, std::string& error) {
+        bool ok = false;
+        send([&] { ok = x_.dropFile(window_, path, wx, wy, error); });
+        return ok;
+    }
+
+    // Presses and releases a key at once: the lab queues both (app/input.h), so a press
+    // shorter than a frame still counts.
     void press(const std::string& key, const std::string& modifier = "") {
-        if (!modifier.empty()) {
-            x_.key(modifier, true);
-        }
-        x_.key(key, true);
-        waitFrames(2);
-        x_.key(key, false);
-        if (!modifier.empty()) {
-            x_.key(modifier, false);
-        }
-        waitFrames(2);
+        send([&] {
+            if (!modifier.empty()) {
+                x_.key(modifier, true);
+            }
+            x_.key(key, true);
+            x_.key(key, false);
+            if (!modifier.empty()) {
+                x_.key(modifier, false);
+            }
+        });
     }
 
     void type(const std::string& text) {
-        x_.type(text);
-        waitFrames(2);
+        send([&] { x_.type(text); });
     }
 
     // F12, then the PNG of the 3D view the lab writes.
@@ -184,15 +202,23 @@ public:
         return image.value_or(Image{});
     }
 
-    // The screen inside a widget's rectangle, after the lab has drawn two more frames.
+    // The screen inside a widget's rectangle, once the lab has settled.
     Image capture(const Rect& r) {
-        waitFrames(2);
+        settle();
         int sx = r.x, sy = r.y;
         x_.toScreen(window_, sx, sy);
         return x_.capture(sx, sy, r.w, r.h);
     }
 
 private:
+    // Sends input, and waits for the lab to have shown its effect.
+    template <class F>
+    void send(F&& input) {
+        sent_ = frame();
+        input();
+        settle();
+    }
+
     std::set<fs::path> files() const {
         std::set<fs::path> all;
         for (const fs::directory_entry& e : fs::directory_iterator(shots_)) {
@@ -206,7 +232,8 @@ private:
     pid_t pid_ = -1;
     X11Driver x_;
     unsigned long window_ = 0;
-    unsigned long long frame_ = 0;
+    unsigned long long frame_ = 0, sent_ = 0;
+    int settled_ = 0;
 };
 
 //----------------------------------------------------------------------------------------

@@ -67,10 +67,10 @@ TEST(Gui, DroppedBrokenPresetShowsTheErrorAndKeepsTheScene) {
     Image before = lab.viewShot();
     Rect view = lab.widget("view");
     std::string error;
-    ASSERT_TRUE(lab.x().dropFile(lab.window(), std::string(LAB_SOURCE_DIR) + "/tests/data/broken.json", view.cx(),
+    ASSERT_TRUE(lab.drop(std::string(LAB_SOURCE_DIR) + "/tests/data/broken.json", view.cx(),
                                  view.cy(), error))
         << error;
-    lab.waitFrames(3);
+    lab.settle();
     ASSERT_TRUE(lab.has("error")) << "no error window after dropping a broken preset";
     EXPECT_GT(reddishPixels(lab.capture(lab.widget("error"))), 50) << "the validator's messages should be shown";
     lab.moveTo(view.cx(), view.cy());
@@ -80,8 +80,8 @@ TEST(Gui, DroppedBrokenPresetShowsTheErrorAndKeepsTheScene) {
     EXPECT_EQ(compareImages(after, before, Tolerance{}).maxDifference, 0) << "the scene must be exactly as it was";
 
     // A good preset dropped the same way does open: the drop path is real.
-    ASSERT_TRUE(lab.x().dropFile(lab.window(), preset("01-ambient-only"), view.cx(), view.cy(), error)) << error;
-    lab.waitFrames(3);
+    ASSERT_TRUE(lab.drop(preset("01-ambient-only"), view.cx(), view.cy(), error)) << error;
+    lab.settle();
     EXPECT_GT(changedShare(lab.viewShot(), before), 0.05);
 }
 
@@ -133,12 +133,27 @@ TEST(Gui, DroppedGltfModelIsLoaded) {
     Image sphere = lab.viewShot();
     Rect view = lab.widget("view");
     std::string error;
-    ASSERT_TRUE(lab.x().dropFile(lab.window(), std::string(LAB_SOURCE_DIR) + "/presets/models/trefoil.glb", view.cx(),
+    ASSERT_TRUE(lab.drop(std::string(LAB_SOURCE_DIR) + "/presets/models/trefoil.glb", view.cx(),
                                  view.cy(), error))
         << error;
-    lab.waitFrames(3);
+    lab.settle();
     EXPECT_FALSE(lab.has("error"));
     EXPECT_GT(changedShare(lab.viewShot(), sphere), 0.05) << "the knot should replace the sphere";
+}
+
+// An idle lab draws nothing (issue 12: it used to redraw continuously, 150% CPU under llvmpipe),
+// and the frame after a key press shows the press on the screen.
+TEST(Gui, AnIdleLabDrawsNothingAndAKeyPressIsShownAtOnce) {
+    START_LAB(lab, "--preset", preset("05-full-phong"));
+    Rect view = lab.widget("view");
+    lab.moveTo(view.cx(), view.cy());
+    Image before = lab.capture(view);
+    unsigned long long idleFrom = lab.frame();
+    std::this_thread::sleep_for(std::chrono::seconds(2));
+    EXPECT_LE(lab.frame() - idleFrom, 2u) << "frames drawn in 2 s without input";
+    lab.press("1"); // flat shading
+    EXPECT_GT(lab.frame(), idleFrom) << "the key press should draw";
+    EXPECT_GT(changedShare(lab.capture(view), before), 0.02) << "the settled frame after the press shows flat shading";
 }
 
 TEST(Gui, CtrlSSavesTheEditsToThePresetFile) {
@@ -150,7 +165,7 @@ TEST(Gui, CtrlSSavesTheEditsToThePresetFile) {
     lab.moveTo(view.cx(), view.cy());
     lab.press("1");
     lab.press("s", "Control_L");
-    lab.waitFrames(2);
+    lab.settle();
     Diagnostics d;
     std::optional<LoadedPreset> saved = loadPreset(file, d);
     ASSERT_TRUE(saved) << toString(d);

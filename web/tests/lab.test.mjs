@@ -174,6 +174,24 @@ test('every shipped preset renders in the browser as the native goldens show it'
   await context.close();
 });
 
+// Issue 12: the page used to redraw every animation frame with nothing changing (1.3–1.85 cores
+// busy in Chromium). Now an animation frame with nothing to show returns at once.
+test('an idle page draws nothing, and a key press draws at once', async () => {
+  const { page, context } = await openLab();
+  const drawn = () => page.evaluate(() => Module.ccall('lab_frames', 'number', [], []));
+  await frames(page, 10); // the first frames and anything they owe
+  const idleFrom = await drawn();
+  await page.waitForTimeout(2000);
+  await frames(page, 2);
+  assert.ok(await drawn() - idleFrom <= 2, `frames drawn in 2 s without input: ${await drawn() - idleFrom}`);
+  const before = await page.screenshot();
+  await page.keyboard.press('1'); // flat shading
+  await frames(page, 3);
+  assert.ok(await drawn() > idleFrom, 'the key press should draw');
+  assert.notDeepEqual(await page.screenshot(), before, 'the frames after the press show flat shading');
+  await context.close();
+});
+
 test('dragging a slider with the mouse changes the render', async () => {
   const { page, context } = await openLab();
   const before = await viewShot(page);
