@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace lab {
@@ -184,6 +189,59 @@ TEST(PlotAxes, DecadeRingsBelowTheOuterCircle) {
     ASSERT_EQ(exact.size(), 4u); // 1 down to 0.001, both ends included
     EXPECT_FLOAT_EQ(exact[0], 1.0f);
     EXPECT_TRUE(decadeTicks(0.0f, 3.0f).empty());
+}
+
+// The distance from p to the polyline `line`.
+float distanceToPolyline(glm::vec2 p, const std::vector<glm::vec2>& line) {
+    float best = 1e30f;
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+        glm::vec2 a = line[i], ab = line[i + 1] - a;
+        float t = glm::dot(ab, ab) > 0 ? std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0f, 1.0f) : 0.0f;
+        best = std::min(best, glm::length(p - (a + t * ab)));
+    }
+    return best;
+}
+
+TEST(PlotCurves, ThinningKeepsTheLineWithinTheTolerance) {
+    // A lobe like the plots draw: at the origin for half the angles, then out to a sharp tip and back.
+    std::vector<glm::vec2> lobe;
+    for (int deg = -90; deg <= 90; ++deg) {
+        float t = glm::radians(float(deg)), r = deg < 0 ? 0.0f : 150.0f * std::pow(std::cos(t - 0.5f), 40.0f);
+        lobe.emplace_back(200.0f + r * std::sin(t), 300.0f - r * std::cos(t));
+    }
+    std::vector<glm::vec2> thin = thinPolyline(lobe, 0.2f);
+    EXPECT_LT(thin.size(), lobe.size() / 3);
+    EXPECT_EQ(thin.front(), lobe.front());
+    EXPECT_EQ(thin.back(), lobe.back());
+    for (const glm::vec2& p : lobe) {
+        EXPECT_LE(distanceToPolyline(p, thin), 0.2f + 1e-4f);
+    }
+    // The tip (the farthest point from the origin) is one of the points kept.
+    auto far = [](glm::vec2 a, glm::vec2 b) { return glm::length(a - glm::vec2(200, 300)) < glm::length(b - glm::vec2(200, 300)); };
+    EXPECT_EQ(*std::max_element(thin.begin(), thin.end(), far), *std::max_element(lobe.begin(), lobe.end(), far));
+    // The points kept are points of the line, in order.
+    std::size_t at = 0;
+    for (const glm::vec2& p : thin) {
+        while (at < lobe.size() && lobe[at] != p) {
+            ++at;
+        }
+        EXPECT_LT(at, lobe.size());
+    }
+}
+
+TEST(PlotCurves, ThinningEdgeCases) {
+    EXPECT_TRUE(thinPolyline({}, 0.2f).empty());
+    EXPECT_EQ(thinPolyline({{1, 2}}, 0.2f).size(), 1u);
+    EXPECT_EQ(thinPolyline({{1, 2}, {3, 4}}, 0.2f).size(), 2u);
+    // Collinear and repeated points go; a corner stays.
+    std::vector<glm::vec2> corner{{0, 0}, {0, 0}, {1, 0}, {2, 0}, {2, 0}, {2, 1}, {2, 2}};
+    std::vector<glm::vec2> thin = thinPolyline(corner, 0.01f);
+    ASSERT_EQ(thin.size(), 3u);
+    EXPECT_EQ(thin[1], glm::vec2(2, 0));
+    // A line that goes out and comes back keeps its far end.
+    std::vector<glm::vec2> back = thinPolyline({{0, 0}, {1, 0}, {2, 0}, {1, 0}, {0, 0}}, 0.01f);
+    ASSERT_EQ(back.size(), 3u);
+    EXPECT_EQ(back[1], glm::vec2(2, 0));
 }
 
 } // namespace

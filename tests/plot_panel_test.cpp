@@ -8,10 +8,13 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace lab {
 namespace {
@@ -52,8 +55,15 @@ private:
 
 struct Outcome {
     float scrollX = 0, scrollY = 0;
-    std::string widgets; // the widget map's text
+    std::string widgets;            // the widget map's text
+    std::vector<ImDrawVert> vertices; // everything the last frame drew, in order
+    std::vector<ImDrawIdx> indices;
 };
+
+bool sameDrawing(const Outcome& x, const Outcome& y) {
+    return x.vertices.size() == y.vertices.size() && x.indices == y.indices &&
+           std::memcmp(x.vertices.data(), y.vertices.data(), x.vertices.size() * sizeof(ImDrawVert)) == 0;
+}
 
 // A few frames of the plots window at r, as screen.cpp opens it; what the last one left.
 Outcome drawPlots(ui::Rect r, float displayW, float displayH, Preset& a, const Preset* b, ui::PlotSettings& settings) {
@@ -74,6 +84,12 @@ Outcome drawPlots(ui::Rect r, float displayW, float displayH, Preset& a, const P
         ImGui::Render();
     }
     out.widgets = ui::widgets().text();
+    const ImDrawData* drawn = ImGui::GetDrawData();
+    for (int i = 0; i < drawn->CmdListsCount; ++i) {
+        const ImDrawList* list = drawn->CmdLists[i];
+        out.vertices.insert(out.vertices.end(), list->VtxBuffer.begin(), list->VtxBuffer.end());
+        out.indices.insert(out.indices.end(), list->IdxBuffer.begin(), list->IdxBuffer.end());
+    }
     return out;
 }
 
@@ -133,6 +149,101 @@ TEST(PlotPanel, FitsItsWindowAtEverySizeAndScale) {
             }
         }
     }
+}
+
+// The plots keep their samples and curves from frame to frame (PlotSettings::cache). A cached
+// plot never shows stale data: after every kind of edit, what is drawn is exactly what a fresh
+// cache draws; and a frame in which nothing changed computes nothing.
+TEST(PlotPanel, TheCacheNeverShowsStaleData) {
+    CpuImGui imgui(1.0f);
+    ui::Rect r{900, 0, 380, 800};
+    Preset a, b;
+    b.brdf = BrdfModel::CookTorrance;
+    a.lights.push_back(a.lights.front());
+    const Preset* compare = &b;
+    ui::PlotSettings warm;
+    drawPlots(r, 1280, 800, a, compare, warm);
+    const std::size_t computed = warm.cache.computed();
+    EXPECT_GT(computed, 0u);
+    drawPlots(r, 1280, 800, a, compare, warm);
+    EXPECT_EQ(warm.cache.computed(), computed) << "nothing changed, yet something was computed again";
+
+    // Each edit, whether it leads to something not drawn before (the others go back to what the
+    // cache holds, or draw nothing it keeps), and the edit.
+    struct Edit {
+        std::string what;
+        bool isNew;
+        std::function<void()> apply;
+    };
+    const std::vector<Edit> edits{
+        {"diffuse colour", true, [&] { a.material.diffuse = {0.2f, 0.6f, 0.3f}; }},
+        {"specular colour", true, [&] { a.material.specular = {0.5f, 0.5f, 0.1f}; }},
+        {"shininess", true, [&] { a.material.shininess = 7.0f; }},
+        {"BRDF", true, [&] { a.brdf = BrdfModel::BlinnPhong; }},
+        {"Cook-Torrance", true, [&] { a.brdf = BrdfModel::CookTorrance; }},
+        {"roughness", true, [&] { a.cookTorrance.roughness = 0.6f; }},
+        {"distribution", true, [&] { a.cookTorrance.distribution = Distribution::Ggx; }},
+        {"Fresnel", true, [&] { a.cookTorrance.fresnel = FresnelMode::Full; }},
+        {"ior", true, [&] { a.cookTorrance.ior = 2.5f; }},
+        {"geometry term", true, [&] { a.cookTorrance.geometry = false; }},
+        {"specular switched off", true, [&] { a.terms.specular = false; }},
+        {"diffuse switched off", true, [&] { a.terms.diffuse = false; }},
+        {"both back on", false, [&] { a.terms = {}; }},
+        {"incident angle", true, [&] { a.plotIncidentDeg = 20.0f; }},
+        {"B's shininess", true, [&] { b.material.shininess = 3.0f; }},
+        {"no compare set", false, [&] { compare = nullptr; }},
+        {"compare set again", false, [&] { compare = &b; }},
+        {"an overlaid angle", true, [&] { warm.overlayDeg.y = 40.0f; }},
+        {"log scale", true, [&] { warm.scale = RadialScale::Log; }},
+        {"Cartesian", true, [&] { warm.cartesian = true; }},
+        {"polar again", false, [&] { warm.cartesian = false; }},
+        {"lock scale, then a change", true, [&] { warm.lockScale = true; }},
+        {"shininess while locked", true, [&] { a.material.shininess = 90.0f; }},
+        {"attenuation", true, [&] { a.lights[0].attenuation = {1.0f, 0.7f, 0.2f}; }},
+        {"light distance", true, [&] { a.lights[0].position = {4.0f, 5.0f, 1.0f}; }},
+        {"other light", false, [&] { warm.attenuationLight = 1; }},
+        {"directional light", false, [&] { a.lights[1].type = LightType::Directional; }},
+        {"window size", true, [&] { r = {700, 0, 580, 700}; }},
+        {"a band below the model", true, [&] { r = {300, 500, 980, 300}; }},
+    };
+    for (const auto& [what, isNew, edit] : edits) {
+        edit();
+        const std::size_t before = warm.cache.computed();
+        Outcome cached = drawPlots(r, 1280, 800, a, compare, warm);
+        ui::PlotSettings cold = warm;
+        cold.cache = ui::PlotCache{};
+        Outcome fresh = drawPlots(r, 1280, 800, a, compare, cold);
+        EXPECT_TRUE(sameDrawing(cached, fresh)) << "after an edit of the " << what;
+        EXPECT_FALSE(cached.vertices.empty()) << what;
+        if (isNew) {
+            EXPECT_GT(warm.cache.computed(), before) << "the " << what << " changed nothing the cache keys on";
+        } else {
+            EXPECT_EQ(warm.cache.computed(), before) << "the " << what << " should have found what it drew before";
+        }
+    }
+}
+
+TEST(PlotPanel, RecentlyUsedReplacesTheOldestAndKeepsWhatWasHandedOut) {
+    ui::RecentlyUsed<int, std::string> cache(2);
+    int made = 0;
+    auto make = [&](const char* text) {
+        return [&made, text] {
+            ++made;
+            return std::string(text);
+        };
+    };
+    std::shared_ptr<const std::string> one = cache.get(1, make("one"));
+    cache.get(2, make("two"));
+    EXPECT_EQ(*cache.get(1, make("not made")), "one"); // found: 1 is now the most recent
+    EXPECT_EQ(made, 2);
+    cache.get(3, make("three")); // replaces 2, the least recently used
+    EXPECT_EQ(*cache.get(1, make("not made")), "one");
+    EXPECT_EQ(*cache.get(2, make("two again")), "two again");
+    EXPECT_EQ(made, 4);
+    EXPECT_EQ(cache.made(), 4u);
+    cache.get(4, make("four"));
+    cache.get(5, make("five")); // 1 is long gone from the cache, but what was handed out stays valid
+    EXPECT_EQ(*one, "one");
 }
 
 } // namespace

@@ -96,6 +96,52 @@ TEST(Plot, AmbientOnlyPresetPlotsNothing) {
     }
 }
 
+// The plots keep samples keyed on LobeInputs: every preset setting the samples depend on must
+// change the inputs (or a cached lobe would stay as it was), and what they do not depend on
+// (camera, lights, shading, model) must not (or an orbit would recompute every lobe).
+TEST(Plot, LobeInputsChangeExactlyWithWhatTheSamplesDependOn) {
+    const Preset base;
+    const LobeInputs reference = lobeInputs(base, 30.0f);
+    EXPECT_TRUE(reference == lobeInputs(base, 30.0f));
+    EXPECT_FALSE(reference == lobeInputs(base, 31.0f));
+    const std::vector<std::pair<const char*, void (*)(Preset&)>> relevant{
+        {"diffuse", [](Preset& p) { p.material.diffuse.g = 0.5f; }},
+        {"specular", [](Preset& p) { p.material.specular.b = 0.5f; }},
+        {"shininess", [](Preset& p) { p.material.shininess = 31.0f; }},
+        {"brdf", [](Preset& p) { p.brdf = BrdfModel::BlinnPhong; }},
+        {"distribution", [](Preset& p) { p.cookTorrance.distribution = Distribution::Gaussian; }},
+        {"roughness", [](Preset& p) { p.cookTorrance.roughness = 0.31f; }},
+        {"fresnel", [](Preset& p) { p.cookTorrance.fresnel = FresnelMode::Full; }},
+        {"ior", [](Preset& p) { p.cookTorrance.ior = 1.6f; }},
+        {"geometry", [](Preset& p) { p.cookTorrance.geometry = false; }},
+        {"terms.diffuse", [](Preset& p) { p.terms.diffuse = false; }},
+        {"terms.specular", [](Preset& p) { p.terms.specular = false; }},
+    };
+    for (const auto& [what, edit] : relevant) {
+        Preset p = base;
+        edit(p);
+        EXPECT_FALSE(lobeInputs(p, 30.0f) == reference) << what;
+        // And the samples through the inputs are the samples of the preset.
+        std::vector<PlotSample> direct = reflectedIntensity(p, 30.0f), viaInputs = reflectedIntensity(lobeInputs(p, 30.0f));
+        for (std::size_t i = 0; i < direct.size(); ++i) {
+            EXPECT_EQ(direct[i].total, viaInputs[i].total) << what;
+        }
+    }
+    const std::vector<std::pair<const char*, void (*)(Preset&)>> irrelevant{
+        {"camera", [](Preset& p) { p.camera.eye = {1, 2, 3}; }},
+        {"lights", [](Preset& p) { p.lights[0].position = {0, 5, 0}; }},
+        {"shading", [](Preset& p) { p.shading = Shading::Gouraud; }},
+        {"model", [](Preset& p) { p.model.scale = {2, 1, 1}; }},
+        {"plot incident angle (the caller passes the angle)", [](Preset& p) { p.plotIncidentDeg = 10.0f; }},
+        {"background", [](Preset& p) { p.background = {1, 1, 1}; }},
+    };
+    for (const auto& [what, edit] : irrelevant) {
+        Preset p = base;
+        edit(p);
+        EXPECT_TRUE(lobeInputs(p, 30.0f) == reference) << what;
+    }
+}
+
 TEST(Plot, CsvHasTheDocumentedHeaderAndOneRowPerDegree) {
     std::string csv = plotCsv(reflectedIntensity(Preset{}, 45.0f));
     EXPECT_EQ(csv.rfind("theta_out_deg,diffuse,specular,total\n-90,", 0), 0u) << csv.substr(0, 80);

@@ -27,23 +27,45 @@ const std::array<glm::vec2, 181>& outgoingDirections() {
 
 } // namespace
 
-std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentDeg) {
+LobeInputs lobeInputs(const Preset& preset, float incidentDeg) {
+    LobeInputs in;
+    in.material.emissive = preset.material.emissive;
+    in.material.ambient = preset.material.ambient;
+    in.material.diffuse = preset.material.diffuse;
+    in.material.specular = preset.material.specular;
+    in.material.shininess = preset.material.shininess;
+    in.brdf = packBrdf(preset);
+    in.terms.emissive = preset.terms.emissive;
+    in.terms.ambient = preset.terms.ambient;
+    in.terms.diffuse = preset.terms.diffuse;
+    in.terms.specular = preset.terms.specular;
+    in.incidentDeg = incidentDeg;
+    return in;
+}
+
+bool operator==(const LobeInputs& x, const LobeInputs& y) {
+    // A field added to the shaders' structs must be compared here too: these sizes say so.
+    static_assert(sizeof(glsl::Material) == 13 * sizeof(float), "compare the new Material field");
+    static_assert(sizeof(glsl::Brdf) == 6 * sizeof(int), "compare the new Brdf field");
+    static_assert(sizeof(glsl::Terms) == 4 * sizeof(bool), "compare the new Terms field");
+    const glsl::Material &a = x.material, &b = y.material;
+    const glsl::Brdf &c = x.brdf, &d = y.brdf;
+    const glsl::Terms &s = x.terms, &t = y.terms;
+    return a.emissive == b.emissive && a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular &&
+           a.shininess == b.shininess && c.model == d.model && c.distribution == d.distribution &&
+           c.fresnel == d.fresnel && c.geometry == d.geometry && c.roughness == d.roughness && c.ior == d.ior &&
+           s.emissive == t.emissive && s.ambient == t.ambient && s.diffuse == t.diffuse && s.specular == t.specular &&
+           x.incidentDeg == y.incidentDeg;
+}
+
+std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs) {
     // The material, BRDF and term switches as the shaders get them, and a unit white directional
     // light from L: lightContribution() then gives each sample's diffuse and specular parts, 0
     // where the preset switches the term off, exactly as the renderer sums them.
-    glsl::Material material;
-    material.emissive = preset.material.emissive;
-    material.ambient = preset.material.ambient;
-    material.diffuse = preset.material.diffuse;
-    material.specular = preset.material.specular;
-    material.shininess = preset.material.shininess;
-    const glsl::Brdf brdf = packBrdf(preset);
-    glsl::Terms terms;
-    terms.emissive = preset.terms.emissive;
-    terms.ambient = preset.terms.ambient;
-    terms.diffuse = preset.terms.diffuse;
-    terms.specular = preset.terms.specular;
-    const float ti = glm::radians(incidentDeg);
+    const glsl::Material& material = inputs.material;
+    const glsl::Brdf& brdf = inputs.brdf;
+    const glsl::Terms& terms = inputs.terms;
+    const float ti = glm::radians(inputs.incidentDeg);
     const glm::vec3 N(0.0f, 1.0f, 0.0f);
     const glm::vec3 L(-std::sin(ti), std::cos(ti), 0.0f);
     glsl::Light light{};

@@ -8,6 +8,7 @@
 // light do not depend on L or V and are not part of the plot.
 #pragma once
 
+#include "core/lighting.h"
 #include "core/preset.h"
 
 #include <glm/vec2.hpp>
@@ -24,8 +25,24 @@ struct PlotSample {
     float total;
 };
 
+// Everything the samples depend on: the material, BRDF and term switches as the shaders get them
+// (packed from the preset), and the incident angle. Equal inputs give equal samples, so the plots
+// may keep samples from frame to frame keyed on them (ui/plot_cache.h).
+struct LobeInputs {
+    glsl::Material material{};
+    glsl::Brdf brdf{};
+    glsl::Terms terms{};
+    float incidentDeg = 0.0f;
+};
+LobeInputs lobeInputs(const Preset& preset, float incidentDeg);
+// Every field equal (floats compared exactly, so a NaN never equals and is never reused).
+bool operator==(const LobeInputs& x, const LobeInputs& y);
+
 // 181 samples, θo = -90 … 90.
-std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentDeg);
+std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs);
+inline std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentDeg) {
+    return reflectedIntensity(lobeInputs(preset, incidentDeg));
+}
 
 // "theta_out_deg,diffuse,specular,total" and one line per sample.
 std::string plotCsv(const std::vector<PlotSample>& samples);

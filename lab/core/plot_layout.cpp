@@ -1,8 +1,11 @@
 // plot_layout.cpp — the plots' arithmetic on screen.
 #include "core/plot_layout.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace lab {
 
@@ -136,6 +139,49 @@ LobeFrame lobeFrame(float x, float y, float w, float h, const PlotMargins& m) {
     f.originX = x + m.left + roomW * 0.5f;
     f.originY = y + m.top + f.radius + std::max(roomH - f.radius, 0.0f) * 0.5f;
     return f;
+}
+
+std::vector<glm::vec2> thinPolyline(const std::vector<glm::vec2>& points, float tolerance) {
+    if (points.size() < 3) {
+        return points;
+    }
+    std::vector<char> keep(points.size(), 0);
+    keep.front() = keep.back() = 1;
+    // Each span (first, last) keeps its farthest point when that lies beyond the tolerance, and
+    // is split there; an explicit stack, so no curve is deep enough to matter. Squared distances
+    // to the segment, so the loop has no square root.
+    std::vector<std::pair<std::size_t, std::size_t>> spans{{0, points.size() - 1}};
+    while (!spans.empty()) {
+        auto [first, last] = spans.back();
+        spans.pop_back();
+        const glm::vec2 a = points[first], ab = points[last] - a;
+        const float length2 = glm::dot(ab, ab);
+        const float inverse = length2 > 0.0f ? 1.0f / length2 : 0.0f;
+        float farthest = tolerance * tolerance;
+        std::size_t at = 0;
+        for (std::size_t i = first + 1; i < last; ++i) {
+            const glm::vec2 ap = points[i] - a;
+            const float t = std::clamp(glm::dot(ap, ab) * inverse, 0.0f, 1.0f);
+            const glm::vec2 off = ap - t * ab;
+            const float d2 = glm::dot(off, off);
+            if (d2 > farthest) {
+                farthest = d2;
+                at = i;
+            }
+        }
+        if (at != 0) {
+            keep[at] = 1;
+            spans.push_back({first, at});
+            spans.push_back({at, last});
+        }
+    }
+    std::vector<glm::vec2> out;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (keep[i]) {
+            out.push_back(points[i]);
+        }
+    }
+    return out;
 }
 
 float scaleMaximum(float current, bool locked, float& held) {

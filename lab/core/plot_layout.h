@@ -8,6 +8,8 @@
 // tab, never scrolled to.
 #pragma once
 
+#include <glm/vec2.hpp>
+
 #include <array>
 #include <functional>
 #include <vector>
@@ -94,6 +96,17 @@ struct LobeFrame {
     float originX = 0, originY = 0, radius = 0;
 };
 LobeFrame lobeFrame(float x, float y, float w, float h, const PlotMargins& margins);
+
+//----------------------------------------------------------------------------------------
+// Curves
+//----------------------------------------------------------------------------------------
+
+// The polyline with the points it does not need: every point left out lies within `tolerance`
+// of the segment between the kept points around it (Douglas–Peucker), so at a tolerance well
+// under a pixel the drawn line looks the same. The first and last points are always kept, and
+// so are the extremes (a lobe's tip); a run of equal points (a lobe lying at the origin) keeps
+// only its ends.
+std::vector<glm::vec2> thinPolyline(const std::vector<glm::vec2>& points, float tolerance);
 
 //----------------------------------------------------------------------------------------
 // Axis values

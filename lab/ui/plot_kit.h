@@ -4,6 +4,7 @@
 // ImGui's draw lists only; the numbers come from core/plot.h and core/plot_layout.h.
 #pragma once
 
+#include "ui/plot_cache.h"
 #include "ui/plots.h"
 #include "ui/widgets.h"
 
@@ -186,6 +187,7 @@ struct Frame {
         float r = std::max(radius, 1.0f);
         return {(s.x - origin.x) / r, (origin.y - s.y) / r};
     }
+    CurvePlacement placement() const { return {true, {origin.x, origin.y}, {radius, -radius}}; }
 };
 
 struct Canvas {
@@ -257,13 +259,8 @@ inline void arrow(ImDrawList* dl, const Pens& p, const Frame& f, glm::vec2 dir, 
     }
 }
 
-inline void polyline(ImDrawList* dl, const Frame& f, const std::vector<glm::vec2>& points, ImU32 color, float thickness) {
-    std::vector<ImVec2> screen;
-    screen.reserve(points.size());
-    for (const glm::vec2& p : points) {
-        screen.push_back(f.at(p));
-    }
-    dl->AddPolyline(screen.data(), static_cast<int>(screen.size()), color, 0, thickness);
+inline void polyline(ImDrawList* dl, const std::vector<ImVec2>& points, ImU32 color, float thickness) {
+    dl->AddPolyline(points.data(), static_cast<int>(points.size()), color, 0, thickness);
 }
 
 // The rings a radial scale draws, innermost first, with their radii in [0, 1].

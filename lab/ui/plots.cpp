@@ -1,6 +1,7 @@
 // plots.cpp — drawing the lobes, the arrows and the attenuation curve with ImDrawList.
 //
-// One frame: sample the lighting model (core/plot.h), write the readouts as tokens and measure
+// One frame: sample the lighting model (core/plot.h), or find the samples and curves of an
+// earlier frame with the same inputs (ui/plot_cache.h); write the readouts as tokens and measure
 // them, ask core/plot_layout.h where each plot goes in the room left in the window, then draw
 // each plot's block there — readout strip, canvas, controls — with the cursor set explicitly, so
 // nothing reaches past the region and the window never scrolls.
@@ -35,17 +36,20 @@ using namespace plotkit; // the drawing kit (ui/plot_kit.h)
 // The plots' data, computed once a frame before anything is measured or drawn
 //----------------------------------------------------------------------------------------
 
-// The lobes of one frame: A's samples (and B's), all scaled by the same outer circle.
+// The lobes of one frame: A's samples (and B's), all scaled by the same outer circle; the
+// samples from the cache, found by their inputs.
 struct Lobes {
     float incident = 0;
-    std::vector<PlotSample> a, b; // b empty without a compare set
-    float largest = 0;            // the largest total now
-    float outer = 0;              // the outer circle's intensity (largest, or held while locked)
+    LobeInputs inA, inB;
+    PlotCache::Samples a, b; // b null without a compare set
+    float largest = 0;       // the largest total now
+    float outer = 0;         // the outer circle's intensity (largest, or held while locked)
     Readout readout;
 };
 
 struct Overlay {
-    std::array<std::vector<PlotSample>, 3> sets;
+    std::array<LobeInputs, 3> inputs;
+    std::array<PlotCache::Samples, 3> sets;
     float largest = 0, outer = 0;
     Readout readout;
 };
@@ -60,22 +64,35 @@ const PlotSample& sampleAt(const std::vector<PlotSample>& s, float deg) {
     return s[static_cast<std::size_t>(std::lround(glm::clamp(deg, -90.0f, 90.0f)) + 90)];
 }
 
+// maxTotal() of the sets given.
+float largestTotal(std::initializer_list<const std::vector<PlotSample>*> sets) {
+    float m = 1e-6f;
+    for (const std::vector<PlotSample>* set : sets) {
+        for (const PlotSample& x : *set) {
+            m = std::max(m, x.total);
+        }
+    }
+    return m;
+}
+
 Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p) {
     Lobes l;
     l.incident = a.plotIncidentDeg;
-    l.a = reflectedIntensity(a, l.incident);
+    l.inA = lobeInputs(a, l.incident);
+    l.a = s.cache.samples(l.inA);
     if (b) {
-        l.b = reflectedIntensity(*b, l.incident);
+        l.inB = lobeInputs(*b, l.incident);
+        l.b = s.cache.samples(l.inB);
     }
-    l.largest = b ? maxTotal({l.a, l.b}) : maxTotal({l.a});
+    l.largest = b ? largestTotal({l.a.get(), l.b.get()}) : largestTotal({l.a.get()});
     l.outer = scaleMaximum(scaleFor(l.largest), s.lockScale, s.lobeScale);
-    const PlotSample& v = sampleAt(l.a, s.viewerDeg);
+    const PlotSample& v = sampleAt(*l.a, s.viewerDeg);
     l.readout.add(format("at V %+.0f%s:", double(s.viewerDeg), kDeg), kViewer);
     l.readout.add(format("diffuse %.3f", double(v.diffuse)), kDiffuse, true);
     l.readout.add(format("specular %.3f", double(v.specular)), kSpecular, true);
     l.readout.add(format("total %.3f", double(v.total)), kTotal, true);
     if (b) {
-        l.readout.add(format("total B %.3f", double(sampleAt(l.b, s.viewerDeg).total)), kCompare, true);
+        l.readout.add(format("total B %.3f", double(sampleAt(*l.b, s.viewerDeg).total)), kCompare, true);
     }
     l.readout.lineBreak();
     scaleTokens(l.readout, l.outer, l.largest, s.lockScale, b ? "max total of A and B" : "max total");
@@ -86,9 +103,10 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p)
 Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
     Overlay o;
     for (std::size_t i = 0; i < 3; ++i) {
-        o.sets[i] = reflectedIntensity(a, s.overlayDeg[static_cast<int>(i)]);
+        o.inputs[i] = lobeInputs(a, s.overlayDeg[static_cast<int>(i)]);
+        o.sets[i] = s.cache.samples(o.inputs[i]);
     }
-    o.largest = maxTotal({o.sets[0], o.sets[1], o.sets[2]});
+    o.largest = largestTotal({o.sets[0].get(), o.sets[1].get(), o.sets[2].get()});
     o.outer = scaleMaximum(scaleFor(o.largest), s.lockScale, s.overlayScale);
     o.readout.add("total for each incident angle;", kLabel);
     scaleTokens(o.readout, o.outer, o.largest, s.lockScale, "max of the three");
@@ -177,8 +195,21 @@ Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout
 // The lobe plot
 //----------------------------------------------------------------------------------------
 
+// The lobe's curves, where `at` puts them: A's diffuse, specular and total, and B's total.
+void lobeCurves(ImDrawList* dl, const Pens& p, const Lobes& lobes, PlotSettings& s, const CurvePlacement& at) {
+    auto curve = [&](const LobeInputs& in, PlotComponent component, ImU32 color, float thickness) {
+        polyline(dl, *s.cache.lobe(in, component, lobes.outer, s.scale, at), color, thickness);
+    };
+    curve(lobes.inA, PlotComponent::Diffuse, kDiffuse, p.stroke);
+    curve(lobes.inA, PlotComponent::Specular, kSpecular, p.stroke);
+    curve(lobes.inA, PlotComponent::Total, kTotal, p.bold);
+    if (lobes.b) {
+        curve(lobes.inB, PlotComponent::Total, kCompare, p.stroke);
+    }
+}
+
 // x: θo from -90 to 90; y: intensity (radius function), 0 at the bottom.
-void cartesianLobes(const Canvas& c, const Pens& p, const Lobes& lobes, const PlotSettings& s) {
+void cartesianLobes(const Canvas& c, const Pens& p, const Lobes& lobes, PlotSettings& s) {
     ImDrawList* dl = c.dl;
     std::vector<Ring> ticks = rings(lobes.outer, s.scale);
     float labelW = textSize("0.000").x;
@@ -210,20 +241,7 @@ void cartesianLobes(const Canvas& c, const Pens& p, const Lobes& lobes, const Pl
     dl->AddLine(b.lo, b.at(0, 1), kAxis, p.stroke);
     dl->AddLine(at(lobes.incident, 0), at(lobes.incident, 1), kMirror, p.thin); // the mirror angle
     dl->AddLine(at(s.viewerDeg, 0), at(s.viewerDeg, 1), kViewer, p.thin);
-    auto curve = [&](const std::vector<PlotSample>& set, PlotComponent component, ImU32 color, float thickness) {
-        std::vector<ImVec2> pts;
-        pts.reserve(set.size());
-        for (const PlotSample& x : set) {
-            pts.push_back(at(x.thetaOutDeg, plotRadius(componentOf(x, component), lobes.outer, s.scale)));
-        }
-        dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), color, 0, thickness);
-    };
-    curve(lobes.a, PlotComponent::Diffuse, kDiffuse, p.stroke);
-    curve(lobes.a, PlotComponent::Specular, kSpecular, p.stroke);
-    curve(lobes.a, PlotComponent::Total, kTotal, p.bold);
-    if (!lobes.b.empty()) {
-        curve(lobes.b, PlotComponent::Total, kCompare, p.stroke);
-    }
+    lobeCurves(dl, p, lobes, s, {false, {b.lo.x, b.lo.y}, {b.hi.x - b.lo.x, b.hi.y - b.lo.y}});
 }
 
 // The probe's vectors in its own plane of incidence: N up, L to the left.
@@ -261,12 +279,7 @@ void polarLobes(const Canvas& c, const Pens& p, const Lobes& lobes, Preset& a, P
     ImDrawList* dl = c.dl;
     Frame f = polarFrame(c, p);
     polarGrid(dl, p, f, lobes.outer, s.scale);
-    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Diffuse, lobes.outer, s.scale), kDiffuse, p.stroke);
-    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Specular, lobes.outer, s.scale), kSpecular, p.stroke);
-    polyline(dl, f, lobePoints(lobes.a, PlotComponent::Total, lobes.outer, s.scale), kTotal, p.bold);
-    if (!lobes.b.empty()) {
-        polyline(dl, f, lobePoints(lobes.b, PlotComponent::Total, lobes.outer, s.scale), kCompare, p.stroke);
-    }
+    lobeCurves(dl, p, lobes, s, f.placement());
     glm::vec2 L = dirFromDeg(lobes.incident, -1.0f), R = dirFromDeg(lobes.incident, 1.0f), V = dirFromDeg(s.viewerDeg, 1.0f);
     arrow(dl, p, f, {0, 1}, 0.8f, kAxis, "N", p.stroke);
     arrow(dl, p, f, L, 0.92f, kLight, "L", p.bold);
@@ -351,7 +364,8 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
         Frame f = polarFrame(canvas, p);
         polarGrid(canvas.dl, p, f, o.outer, s.scale);
         for (std::size_t i = 0; i < 3; ++i) {
-            polyline(canvas.dl, f, lobePoints(o.sets[i], PlotComponent::Total, o.outer, s.scale), kOverlay[i], p.stroke);
+            const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, f.placement());
+            polyline(canvas.dl, *curve, kOverlay[i], p.stroke);
         }
         for (std::size_t i = 0; i < 3; ++i) {
             float deg = s.overlayDeg[static_cast<int>(i)];
@@ -403,7 +417,7 @@ PlotNeeds attenuationNeeds(const Attenuation& t, const Preset& a, const Pens& p,
     return n;
 }
 
-void attenuationCanvas(const Canvas& c, const Pens& p, const Attenuation& t) {
+void attenuationCanvas(const Canvas& c, const Pens& p, const Attenuation& t, PlotCache& cache) {
     ImDrawList* dl = c.dl;
     Box b{ImVec2(c.corner.x + textSize("0.5").x + 2.0f * p.pad, c.corner.y + c.height - p.line - p.pad),
           ImVec2(c.corner.x + c.width - textSize("10").x * 0.5f - p.pad, c.corner.y + p.line * 0.6f)};
@@ -420,15 +434,13 @@ void attenuationCanvas(const Canvas& c, const Pens& p, const Attenuation& t) {
     }
     dl->AddLine(at(0, 0), at(maxD, 0), kAxis, p.stroke);
     dl->AddLine(at(0, 0), at(0, 1), kAxis, p.stroke);
-    std::vector<ImVec2> pts;
     if (t.light->type == LightType::Directional) {
-        pts = {at(0, 1), at(maxD, 1)};
+        const ImVec2 flat[2] = {at(0, 1), at(maxD, 1)};
+        dl->AddPolyline(flat, 2, kTotal, 0, p.bold);
     } else {
-        for (const glm::vec2& q : attenuationCurve(t.light->attenuation, maxD, 200)) {
-            pts.push_back(at(q.x, q.y));
-        }
+        const CurvePlacement place{false, {b.lo.x, b.lo.y}, {b.hi.x - b.lo.x, b.hi.y - b.lo.y}};
+        polyline(dl, *cache.attenuation(t.light->attenuation, maxD, place), kTotal, p.bold);
     }
-    dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), kTotal, 0, p.bold);
     if (t.light->type != LightType::Directional) {
         ImVec2 m = at(t.distance, t.att);
         dl->AddLine(at(t.distance, 0), m, kSpecular, p.thin);
@@ -447,7 +459,7 @@ void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cram
     if (t.light) {
         const Canvas canvas = beginCanvas("attenuation", "plot.attenuation", block.canvasW, block.canvasH);
         if (canvas.shown()) {
-            attenuationCanvas(canvas, p, t);
+            attenuationCanvas(canvas, p, t, s.cache);
         }
     }
     if (lightChooser(a) && block.controlsFit) {

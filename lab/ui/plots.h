@@ -1,4 +1,5 @@
-// plots.h — the live plots beside the model, redrawn every frame from the lighting functions.
+// plots.h — the live plots beside the model, drawn every frame from the lighting functions (the
+// samples and curves kept from frame to frame while their inputs stay the same: ui/plot_cache.h).
 //
 //   * the reflection lobe in the plane of incidence for the preset's incident angle: diffuse,
 //     specular and total, with N, L, R, V (and H for Blinn-Phong and Cook-Torrance) as arrows;
@@ -19,6 +20,7 @@
 
 #include "core/plot.h"
 #include "core/probe.h"
+#include "ui/plot_cache.h"
 
 #include <optional>
 
@@ -33,6 +35,7 @@ struct PlotSettings {
     glm::vec3 overlayDeg{60.0f, 25.0f, 10.0f}; // the overlaid incident angles
     int attenuationLight = 0;
     int dragging = 0; // 0 none, 1 L, 2 V
+    PlotCache cache;  // samples and curves of earlier frames, found again by their inputs
 };
 
 // Draws the plots into the current ImGui window's remaining content region. Dragging L edits

@@ -1,0 +1,73 @@
+// plot_cache.cpp — the plots' samples and curves, computed when their inputs are new.
+#include "ui/plot_cache.h"
+
+#include "core/plot_layout.h"
+
+namespace lab::ui {
+
+namespace {
+
+// Unit points to screen points, thinned.
+std::vector<ImVec2> placeAndThin(const std::vector<glm::vec2>& unit, const CurvePlacement& at) {
+    std::vector<glm::vec2> screen;
+    screen.reserve(unit.size());
+    for (const glm::vec2& u : unit) {
+        ImVec2 s = at.at(u);
+        screen.emplace_back(s.x, s.y);
+    }
+    std::vector<glm::vec2> thin = thinPolyline(screen, kCurveTolerance);
+    std::vector<ImVec2> out;
+    out.reserve(thin.size());
+    for (const glm::vec2& p : thin) {
+        out.emplace_back(p.x, p.y);
+    }
+    return out;
+}
+
+} // namespace
+
+bool operator==(const CurvePlacement& x, const CurvePlacement& y) {
+    return x.polar == y.polar && x.offset == y.offset && x.scale == y.scale;
+}
+
+bool operator==(const PlotCache::LobeKey& x, const PlotCache::LobeKey& y) {
+    return x.inputs == y.inputs && x.component == y.component && x.outer == y.outer && x.scale == y.scale &&
+           x.at == y.at;
+}
+
+bool operator==(const PlotCache::AttenuationKey& x, const PlotCache::AttenuationKey& y) {
+    return x.coefficients == y.coefficients && x.maxDistance == y.maxDistance && x.at == y.at;
+}
+
+PlotCache::Samples PlotCache::samples(const LobeInputs& inputs) {
+    return samples_.get(inputs, [&] { return reflectedIntensity(inputs); });
+}
+
+PlotCache::Points PlotCache::lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
+                                  const CurvePlacement& at) {
+    return lobes_.get(LobeKey{inputs, component, outer, scale, at}, [&] {
+        const std::vector<PlotSample>& set = *samples(inputs);
+        std::vector<glm::vec2> unit;
+        if (at.polar) {
+            unit = lobePoints(set, component, outer, scale);
+        } else {
+            unit.reserve(set.size());
+            for (const PlotSample& s : set) {
+                unit.emplace_back((s.thetaOutDeg + 90.0f) / 180.0f, plotRadius(componentOf(s, component), outer, scale));
+            }
+        }
+        return placeAndThin(unit, at);
+    });
+}
+
+PlotCache::Points PlotCache::attenuation(const glm::vec3& coefficients, float maxDistance, const CurvePlacement& at) {
+    return attenuation_.get(AttenuationKey{coefficients, maxDistance, at}, [&] {
+        std::vector<glm::vec2> unit;
+        for (const glm::vec2& q : attenuationCurve(coefficients, maxDistance, 200)) {
+            unit.emplace_back(q.x / maxDistance, q.y);
+        }
+        return placeAndThin(unit, at);
+    });
+}
+
+} // namespace lab::ui

@@ -1,0 +1,120 @@
+// plot_cache.h — what the plots computed in earlier frames, kept for the next ones.
+//
+// The plots are drawn every frame, but what they show changes only when the preset, the plot
+// settings or the window do. The cache keeps
+//   * each lobe's samples, keyed on everything they are computed from (core/plot.h's LobeInputs:
+//     material, BRDF, term switches, incident angle);
+//   * each curve as the screen points that are drawn, thinned to the points a line needs
+//     (thinPolyline, within kCurveTolerance pixels), keyed on its samples' inputs, the component,
+//     the outer ring's intensity, the radial scale and where it lies on screen; likewise Att(d).
+// Entries are found by value, never by "which plot": an edit changes the key, so a stale entry
+// is never found again, and the least recently used entries make room for new ones. Values are
+// shared and immutable, so what a frame holds stays valid while the cache changes.
+#pragma once
+
+#include "core/plot.h"
+
+#include <imgui.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace lab::ui {
+
+// How far, in pixels, a thinned curve may pass from a point it leaves out.
+inline constexpr float kCurveTolerance = 0.2f;
+
+// Where a curve's unit coordinates go on screen: screen = offset + scale × unit, where a polar
+// plot's unit point is r·(sin θo, cos θo) and a Cartesian plot's ((θo + 90) / 180, r). For
+// Att(d), unit is (d / maxDistance, Att).
+struct CurvePlacement {
+    bool polar = true;
+    glm::vec2 offset{0.0f}, scale{1.0f};
+    ImVec2 at(glm::vec2 unit) const { return ImVec2(offset.x + scale.x * unit.x, offset.y + scale.y * unit.y); }
+};
+bool operator==(const CurvePlacement& x, const CurvePlacement& y);
+
+// A few values by key, the least recently used one replaced when full. Key needs ==.
+template <class Key, class Value> class RecentlyUsed {
+public:
+    explicit RecentlyUsed(std::size_t capacity) : capacity_(capacity) {}
+
+    // The value for `key`, made by make() (and kept) when there is none.
+    template <class Make> std::shared_ptr<const Value> get(const Key& key, Make&& make) {
+        ++clock_;
+        for (Entry& e : entries_) {
+            if (e.key == key) {
+                e.used = clock_;
+                return e.value;
+            }
+        }
+        ++made_;
+        std::shared_ptr<const Value> value = std::make_shared<const Value>(make());
+        Entry fresh{key, value, clock_};
+        if (entries_.size() < capacity_) {
+            entries_.push_back(std::move(fresh));
+        } else {
+            Entry* oldest = &entries_.front();
+            for (Entry& e : entries_) {
+                oldest = e.used < oldest->used ? &e : oldest;
+            }
+            *oldest = std::move(fresh);
+        }
+        return value;
+    }
+    // How many values make() made: the look-ups that found nothing.
+    std::size_t made() const { return made_; }
+
+private:
+    struct Entry {
+        Key key;
+        std::shared_ptr<const Value> value;
+        std::uint64_t used = 0;
+    };
+    std::vector<Entry> entries_;
+    std::size_t capacity_;
+    std::uint64_t clock_ = 0;
+    std::size_t made_ = 0;
+};
+
+class PlotCache {
+public:
+    using Samples = std::shared_ptr<const std::vector<PlotSample>>;
+    using Points = std::shared_ptr<const std::vector<ImVec2>>;
+
+    // reflectedIntensity(inputs).
+    Samples samples(const LobeInputs& inputs);
+    // The screen points of one component of the lobe `inputs`, the outer ring at `outer`, thinned.
+    Points lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
+                const CurvePlacement& at);
+    // Att(d) for d in [0, maxDistance] (attenuationCurve, 200 samples), thinned.
+    Points attenuation(const glm::vec3& coefficients, float maxDistance, const CurvePlacement& at);
+
+    // How many sample sets and curves were computed rather than found (for the tests).
+    std::size_t computed() const { return samples_.made() + lobes_.made() + attenuation_.made(); }
+
+private:
+    struct LobeKey {
+        LobeInputs inputs;
+        PlotComponent component;
+        float outer;
+        RadialScale scale;
+        CurvePlacement at;
+    };
+    struct AttenuationKey {
+        glm::vec3 coefficients;
+        float maxDistance;
+        CurvePlacement at;
+    };
+    friend bool operator==(const LobeKey& x, const LobeKey& y);
+    friend bool operator==(const AttenuationKey& x, const AttenuationKey& y);
+
+    // A frame uses at most 5 sample sets (A, B, three incident angles) and 7 curves; room for
+    // more, so that switching back and forth (A and B, polar and Cartesian) finds them again.
+    RecentlyUsed<LobeInputs, std::vector<PlotSample>> samples_{16};
+    RecentlyUsed<LobeKey, std::vector<ImVec2>> lobes_{32};
+    RecentlyUsed<AttenuationKey, std::vector<ImVec2>> attenuation_{4};
+};
+
+} // namespace lab::ui
