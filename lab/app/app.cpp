@@ -63,7 +63,8 @@ struct App::Impl {
     std::optional<Problem> problem;
     std::string toast;
     float toastLeft = 0.0f;
-    float frameMs = 0.0f;
+    float frameMs = 0.0f;   // what the last frame that drew the 3D view cost
+    bool viewDrawn = false; // by the last frame
     CachedView viewA, viewB; // the 3D views kept between frames
     ViewResolution resolution;
     int viewSamples = 0;     // what the GL offers of AppOptions::viewSamples
@@ -97,7 +98,8 @@ struct App::Impl {
     void probeAt(const ui::ViewEvents& view);
     void collectMessages(float deltaTime);
     void drawViews(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy);
-    bool presentViews(const ui::Layout& layout, const FrameInput& in, float scale);
+    bool updateViews(const ui::Layout& layout, const FrameInput& in, float scale);
+    std::vector<std::pair<const CachedView*, Viewport>> shown; // this frame's views and where they go
     void screenshot(const ui::Layout& layout, const FrameInput& in);
     void writeLayoutFile(const FrameInput& in, bool settled);
 };
@@ -247,24 +249,25 @@ void App::Impl::drawViews(const ui::Layout& layout, float toPixels, float window
 }
 
 // The live frame's views: each drawn into its offscreen copy when what it shows changed (at
-// `scale` of its size while dragging), then copied into the window. True when any was drawn.
-bool App::Impl::presentViews(const ui::Layout& layout, const FrameInput& in, float scale) {
+// `scale` of its size while dragging); where they go in the window is kept for compose(). True
+// when any was drawn.
+bool App::Impl::updateViews(const ui::Layout& layout, const FrameInput& in, float scale) {
     float toPixels = static_cast<float>(in.framebufferWidth) / in.windowWidth;
     const ViewSettings& view = workspace.view;
-    auto show = [&](CachedView& cache, const Preset& preset, std::shared_ptr<const Mesh> mesh, const ui::Rect& r) {
+    shown.clear();
+    auto update = [&](CachedView& cache, const Preset& preset, std::shared_ptr<const Mesh> mesh, const ui::Rect& r) {
         Viewport dest{static_cast<int>(r.x * toPixels), static_cast<int>((in.windowHeight - (r.y + r.h)) * toPixels),
                       std::max(1, static_cast<int>(r.w * toPixels)), std::max(1, static_cast<int>(r.h * toPixels))};
         ViewKey key{viewed(preset, view.mode), std::move(mesh),
                     std::max(1, static_cast<int>(std::lround(dest.width * scale))),
                     std::max(1, static_cast<int>(std::lround(dest.height * scale))), view.mode == ViewMode::Normals,
                     renderer.generation()};
-        bool drawn = cache.update(renderer, key, viewSamples);
-        cache.present(in.targetFramebuffer, dest);
-        return drawn;
+        shown.emplace_back(&cache, dest);
+        return cache.update(renderer, key, viewSamples);
     };
-    bool drawn = show(viewA, workspace.a(), workspace.meshA(), view.compare ? layout.viewA : layout.view);
+    bool drawn = update(viewA, workspace.a(), workspace.meshA(), view.compare ? layout.viewA : layout.view);
     if (view.compare) {
-        drawn = show(viewB, workspace.b(), workspace.meshB(), layout.viewB) || drawn;
+        drawn = update(viewB, workspace.b(), workspace.meshB(), layout.viewB) || drawn;
     } else {
         viewB.reset(); // its memory back; compare mode draws it again
     }
@@ -288,13 +291,13 @@ void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
     workspace.saveScreenshot(image);
 }
 
-// GUI tests: every widget's rectangle, the window, a frame counter, and whether more frames
-// are due without input (a test waits until the lab has settled).
+// GUI tests: every widget's rectangle, the window, a frame counter, whether more frames are due
+// without input (a test waits until the lab has settled), and what the last frame cost.
 void App::Impl::writeLayoutFile(const FrameInput& in, bool settled) {
     std::string layout = ui::widgets().text();
     char window[128];
-    std::snprintf(window, sizeof window, "window 0 0 %.0f %.0f\nframe %llu\nsettled %d\n", in.windowWidth, in.windowHeight,
-                  ++frames, settled ? 1 : 0);
+    std::snprintf(window, sizeof window, "window 0 0 %.0f %.0f\nframe %llu\nsettled %d\nlast-frame-ms %.1f\n", in.windowWidth,
+                  in.windowHeight, ++frames, settled ? 1 : 0, in.lastFrameSeconds * 1000.0f);
     layout += window;
     std::string error;
     writeFileAtomic(*options.layoutFile, layout, error);
@@ -330,7 +333,11 @@ FrameOutput App::frame(const FrameInput& in) {
         m.setPresenter(true); // --presenter: as if P had been pressed in this window
     }
     m.windowWidth = in.windowWidth;
-    m.frameMs = in.lastFrameSeconds * 1000.0f; // what the last frame cost (idle time between frames is not a frame's)
+    if (m.viewDrawn) {
+        // The cost of drawing the model (a frame that only redrew the UI would show the UI's,
+        // and would change the overlay, and so the screen, on every frame).
+        m.frameMs = in.lastFrameSeconds * 1000.0f;
+    }
     Workspace& ws = m.workspace;
 
     //--- layout -> UI -> requests ---------------------------------------------------------
@@ -379,10 +386,9 @@ FrameOutput App::frame(const FrameInput& in) {
     if (std::exchange(m.screenshotRequested, false)) {
         m.screenshot(layout, in);
     }
-    bindFramebuffer(in.targetFramebuffer);
-    clearFramebuffer(kWindowBackground, in.framebufferWidth, in.framebufferHeight);
     float scale = m.resolution.update(events.dragging, in.lastFrameSeconds, m.options.frameBudgetSeconds);
-    bool viewDrawn = m.presentViews(layout, in, scale);
+    m.viewDrawn = m.updateViews(layout, in, scale);
+    bindFramebuffer(in.targetFramebuffer);
     // A toast is removed when its time is up; nothing else on screen changes by itself (a
     // reduced view is drawn at full size by the frame that ends the drag).
     float redrawIn = m.toastLeft > 0.0f ? m.toastLeft : -1.0f;
@@ -398,10 +404,18 @@ FrameOutput App::frame(const FrameInput& in) {
     out.title = "Lighting Lab - " + ws.document().displayName() + (ws.document().dirty() ? " *" : "");
     out.toggleFullscreen = std::exchange(m.toggleFullscreen, false);
     out.pickFile = std::exchange(m.pickFile, false);
-    out.viewDrawn = viewDrawn;
+    out.viewDrawn = m.viewDrawn;
     out.viewScale = scale;
     out.redrawIn = redrawIn;
     return out;
+}
+
+void App::compose(unsigned targetFramebuffer, int width, int height) {
+    bindFramebuffer(targetFramebuffer);
+    clearFramebuffer(kWindowBackground, width, height);
+    for (const auto& [view, dest] : impl_->shown) {
+        view->present(targetFramebuffer, dest);
+    }
 }
 
 } // namespace lab

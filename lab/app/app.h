@@ -41,6 +41,7 @@ struct FrameInput {
     std::vector<std::string> droppedFiles;
     std::vector<InputEvent> events;     // this frame's share of the queued input (app/input.h)
     int framesDue = 0;                  // frames the platform will draw after this one anyway (FramePacer::dueAfterThis)
+    bool repaint = false;               // the window's picture was lost (uncovered, resized): draw it even if unchanged
     bool closeRequested = false; // the user closed the window
     std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/link.h)
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
@@ -58,6 +59,7 @@ struct FrameOutput {
     // many seconds (a toast going away), < 0 only on input.
     float redrawIn = -1.0f;
     bool viewDrawn = false;  // the 3D view was drawn this frame (otherwise its cached copy was shown)
+    bool presented = true;   // the window was drawn (false: it would have looked exactly as the last; no swap needed)
     float viewScale = 1.0f;  // the fraction of the view's width and height drawn (< 1 while dragging on a slow machine)
 };
 
@@ -88,8 +90,13 @@ public:
     // shaders do not compile; a preset that fails to open is shown as an error in the window.
     bool init(Diagnostics& diagnostics);
 
-    // Between ImGui::NewFrame() and ImGui::Render(), with the default framebuffer bound.
+    // Between ImGui::NewFrame() and ImGui::Render(): the UI, the requests, and the 3D views
+    // drawn offscreen where what they show changed. Draws nothing into the window.
     FrameOutput frame(const FrameInput& input);
+    // The window's picture under ImGui's draw data: the background and this frame's views, into
+    // `targetFramebuffer` (width × height pixels). The platform skips it, and the draw data and
+    // the swap, when the frame would look exactly as the last (imgui_host.h).
+    void compose(unsigned targetFramebuffer, int width, int height);
 
 private:
     struct Impl;

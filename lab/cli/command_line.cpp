@@ -63,6 +63,11 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     app.add_option("--size", windowSize, "Window size (default: 1600x900, or the screen's work area if smaller)")
         ->check(SizeValidator());
     app.add_option("--screenshot-dir", screenshotFolder, "Folder for screenshots (F12)")->capture_default_str();
+    app.add_option("--frame-budget", line.frameBudgetMs,
+                   "While dragging, draw the 3D view at a lower resolution when a frame takes longer than this "
+                   "many milliseconds (0: always full resolution)")
+        ->check(CLI::Range(0.0f, 1000.0f))
+        ->capture_default_str();
     // For GUI tests: the screen rectangles of the main widgets, rewritten every frame.
     app.add_option("--layout-file", layoutFile, "")->group("");
 

@@ -19,6 +19,7 @@ struct CommandLine {
     // lab (the interactive lab)
     std::optional<std::filesystem::path> preset;
     bool presenter = false, fullscreen = false;
+    float frameBudgetMs = 50.0f; // --frame-budget (app/view_cache.h)
     std::optional<Size> windowSize; // --size: else fitted to the screen
     std::filesystem::path screenshotFolder = ".";
     std::optional<std::filesystem::path> layoutFile;

@@ -1,6 +1,7 @@
 // main.cpp — `lab`: parse the arguments (command_line.h), then run the command.
 //
-//   lab [--preset FILE] [--presenter] [--fullscreen]   the interactive lab (a PNG preview where there is no display)
+//   lab [--preset FILE] [--presenter] [--fullscreen] [--size WxH] [--frame-budget MS]
+//                                                      the interactive lab (a PNG preview where there is no display)
 //   lab render PRESET... --out PATH [--size WxH]
 //   lab plot PRESET --out FILE.csv [--incident-deg A]
 //   lab check PRESET... --golden DIR [--update] [--report DIR] [--size WxH]
@@ -21,6 +22,7 @@ int runInteractive(const lab::CommandLine& line) {
     options.presenter = line.presenter;
     options.screenshotFolder = line.screenshotFolder;
     options.layoutFile = line.layoutFile;
+    options.frameBudgetSeconds = line.frameBudgetMs / 1000.0f;
     // The preset list: the shipped presets beside the program, else those of the source tree.
     char exe[4096];
     ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);

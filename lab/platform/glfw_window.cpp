@@ -5,6 +5,7 @@
 //     top), swap — only when a frame is due (app/frame_pacer.h); otherwise it sleeps in GLFW
 //     until an event or the app's timer, so an idle lab costs no CPU;
 //   * every input event is queued (imgui_glfw.h) and handed out a frame's share at a time;
+//   * no swap for a frame that would look exactly as the last (imgui_host.h);
 //   * dropped files and the close button go to the app (which may ask about unsaved edits);
 //   * presenter scale: fonts are re-rasterized at the new size (DejaVu Sans when installed,
 //     ImGui's built-in font otherwise) and the style scaled, instead of blurry stretching;
@@ -149,7 +150,9 @@ void loop(GLFWwindow* window, WindowState& state, ImGuiHost& host) {
         FrameInput in = nextInput(window, state, last, lastCost);
         in.framesDue = pacer.dueAfterThis(!state.queue.empty());
         FrameOutput out = host.frame(in, [] { ImGui_ImplGlfw_NewFrame(); });
-        glfwSwapBuffers(window);
+        if (out.presented) {
+            glfwSwapBuffers(window);
+        }
         lastCost = static_cast<float>(glfwGetTime() - start);
         pacer.drawn(glfwGetTime(), out.redrawIn);
         glfwSetWindowTitle(window, out.title.c_str());

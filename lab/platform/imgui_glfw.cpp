@@ -6,6 +6,8 @@
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 
+#include <utility>
+
 namespace lab {
 
 namespace {
@@ -60,7 +62,10 @@ void onFocus(GLFWwindow* window, int focused) {
     inputOf(window).changed = true;
 }
 
-void onChange(GLFWwindow* window) { inputOf(window).changed = true; }
+void onRepaint(GLFWwindow* window) {
+    inputOf(window).changed = true;
+    inputOf(window).repaint = true;
+}
 
 void onDrop(GLFWwindow* window, int count, const char** paths) {
     for (int i = 0; i < count; ++i) {
@@ -82,16 +87,17 @@ GlfwBackend::GlfwBackend(GLFWwindow* window, PlatformInput* input) {
     glfwSetCursorEnterCallback(window, onEnter);
     glfwSetWindowFocusCallback(window, onFocus);
     glfwSetDropCallback(window, onDrop);
-    glfwSetWindowSizeCallback(window, [](GLFWwindow* w, int, int) { onChange(w); });
-    glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { onChange(w); });
-    glfwSetWindowRefreshCallback(window, onChange);
-    glfwSetWindowIconifyCallback(window, [](GLFWwindow* w, int) { onChange(w); });
+    glfwSetWindowSizeCallback(window, [](GLFWwindow* w, int, int) { onRepaint(w); });
+    glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { onRepaint(w); });
+    glfwSetWindowRefreshCallback(window, onRepaint);
+    glfwSetWindowIconifyCallback(window, [](GLFWwindow* w, int) { onRepaint(w); });
 }
 
 GlfwBackend::~GlfwBackend() { ImGui_ImplGlfw_Shutdown(); }
 
 void takeQueuedInput(PlatformInput& input, FrameInput& in) {
     in.events = input.queue.takeFrame();
+    in.repaint = std::exchange(input.repaint, false);
     in.droppedFiles = input.queue.takeDropped();
 }
 

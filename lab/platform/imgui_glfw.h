@@ -16,6 +16,7 @@ struct PlatformInput {
     InputQueue queue;
     float cursorScale = 1.0f; // GLFW's cursor units to window units (the browser: 1 / device pixel ratio)
     bool changed = false;     // anything happened, input or not (a resize, an uncovered window, focus)
+    bool repaint = false;     // the window's picture was lost or resized: draw it whatever changed
 };
 
 // ImGui's GLFW backend on `window` for as long as it lives, without its input callbacks: the

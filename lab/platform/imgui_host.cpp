@@ -61,6 +61,29 @@ void feed(const std::vector<InputEvent>& events, Pointer& p) {
     io.KeySuper = io.KeysDown[keys::LeftSuper] || io.KeysDown[keys::RightSuper];
 }
 
+// Everything ImGui's draw data would put on screen (vertices, indices, commands) and the
+// framebuffer's size, as bytes: two equal snapshots draw the same picture. Hovering where
+// nothing reacts, or a cursor move over the model, then costs no drawing at all.
+std::string snapshot(const ImDrawData& data, const FrameInput& in) {
+    std::string bytes;
+    auto add = [&](const void* p, std::size_t n) { bytes.append(static_cast<const char*>(p), n); };
+    add(&in.framebufferWidth, sizeof in.framebufferWidth);
+    add(&in.framebufferHeight, sizeof in.framebufferHeight);
+    for (int i = 0; i < data.CmdListsCount; ++i) {
+        const ImDrawList& list = *data.CmdLists[i];
+        add(list.VtxBuffer.Data, list.VtxBuffer.size_in_bytes());
+        add(list.IdxBuffer.Data, list.IdxBuffer.size_in_bytes());
+        for (const ImDrawCmd& c : list.CmdBuffer) {
+            add(&c.ClipRect, sizeof c.ClipRect);
+            add(&c.TextureId, sizeof c.TextureId);
+            add(&c.VtxOffset, sizeof c.VtxOffset);
+            add(&c.IdxOffset, sizeof c.IdxOffset);
+            add(&c.ElemCount, sizeof c.ElemCount);
+        }
+    }
+    return bytes;
+}
+
 } // namespace
 
 struct ImGuiHost::Impl {
@@ -70,6 +93,7 @@ struct ImGuiHost::Impl {
     float scale = 0.0f;
     bool backend = false;
     Pointer pointer;
+    std::string lastDrawn; // the last frame's draw data (snapshot())
 
     // Rebuilds the font atlas at `s` and scales a copy of the base style, instead of stretching.
     void applyScale(float s) {
@@ -138,9 +162,14 @@ FrameOutput ImGuiHost::frame(const FrameInput& in, const std::function<void()>& 
     ImGui::NewFrame();
     FrameOutput out = m.app->frame(in);
     ImGui::Render();
-    bindFramebuffer(in.targetFramebuffer);
-    glViewport(0, 0, in.framebufferWidth, in.framebufferHeight);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    std::string drawn = snapshot(*ImGui::GetDrawData(), in);
+    out.presented = in.repaint || out.viewDrawn || drawn != m.lastDrawn;
+    m.lastDrawn = std::move(drawn);
+    if (out.presented) {
+        m.app->compose(in.targetFramebuffer, in.framebufferWidth, in.framebufferHeight);
+        glViewport(0, 0, in.framebufferWidth, in.framebufferHeight);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    }
     if (out.uiScale != m.scale) {
         m.applyScale(out.uiScale);
     }

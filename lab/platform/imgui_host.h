@@ -28,8 +28,11 @@ public:
     bool start(App& app, std::string& error);
 
     // One frame: the renderer backend's NewFrame, `platformNewFrame` (display size, time, the
-    // cursor's shape), the frame's input events (in.events: mouse, keys, text), ImGui::NewFrame, App::frame, ImGui::Render, and ImGui's draw data over the app's
-    // frame in in.targetFramebuffer. Fonts are rebuilt when the app asks for another UI scale.
+    // cursor's shape), the frame's input events (in.events: mouse, keys, text), ImGui::NewFrame,
+    // App::frame, ImGui::Render; then App::compose and ImGui's draw data into
+    // in.targetFramebuffer — unless the picture would be exactly the last one (the same draw
+    // data, no view drawn, no in.repaint): then nothing is drawn and out.presented is false, so
+    // the platform need not swap. Fonts are rebuilt when the app asks for another UI scale.
     FrameOutput frame(const FrameInput& in, const std::function<void()>& platformNewFrame);
 
 private:

@@ -169,6 +169,7 @@ void frame(void* arg) {
     double dpr = emscripten_get_device_pixel_ratio();
     s.cursorScale = static_cast<float>(1.0 / dpr); // Emscripten's GLFW speaks canvas pixels, ImGui CSS pixels
     bool resized = fitCanvas(s, dpr); // always: it keeps the canvas at the page's size
+    s.repaint = s.repaint || resized;
     if (resized || std::exchange(s.changed, false) || s.pendingLink) {
         s.pacer.input();
     }

@@ -77,6 +77,7 @@ public:
     }
 
     X11Driver& x() { return x_; }
+    pid_t pid() const { return pid_; }
     unsigned long window() const { return window_; }
 
     std::map<std::string, Rect> layout() {
