@@ -47,7 +47,7 @@ function(lab_configure_web_target target)
   target_link_options(${target} PRIVATE
     -sUSE_GLFW=3 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2
     -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=web
-    "-sEXPORTED_FUNCTIONS=[_main,_lab_open_file,_lab_open_link,_lab_widgets,_lab_frames]"
+    "-sEXPORTED_FUNCTIONS=[_main,_lab_open_file,_lab_open_link,_lab_widgets,_lab_frames,_lab_settled]"
     "-sEXPORTED_RUNTIME_METHODS=[ccall,FS]"
     "--preload-file=${CMAKE_SOURCE_DIR}/presets@/presets"
     "--preload-file=${font}@/fonts/DejaVuSans.ttf")

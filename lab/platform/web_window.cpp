@@ -211,6 +211,11 @@ EMSCRIPTEN_KEEPALIVE void lab_open_link(const char* link) {
 }
 // For browser tests: the frames drawn so far (an idle page draws none).
 EMSCRIPTEN_KEEPALIVE int lab_frames() { return gState ? gState->frames : 0; }
+// For browser tests: 1 when the lab has handled everything it was given and owes no frame.
+EMSCRIPTEN_KEEPALIVE int lab_settled() {
+    return gState && !gState->changed && !gState->pendingLink && gState->queue.empty() &&
+           !gState->pacer.due(glfwGetTime(), false);
+}
 // For browser tests: the screen rectangles of the main widgets, in CSS pixels ("name x y w h").
 EMSCRIPTEN_KEEPALIVE const char* lab_widgets() {
     static std::string text;

@@ -49,11 +49,19 @@ async function openLab(fragment = '', { width = 1280, height = 760, scale = 1 } 
   page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
   await page.goto(base + fragment);
   await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
-  await frames(page, 3);
+  await settle(page);
   return { page, context, problems };
 }
 
-// Waits for the browser to draw `n` more animation frames (the lab draws one per frame).
+// Waits until the lab has handled every event and file it was given and owes no frame (it draws
+// only when something changed; lab_settled, web_window.cpp).
+function settle(page) {
+  return page.waitForFunction(
+    () => window.labFilesPending === 0 && Module.ccall('lab_settled', 'number', [], []) === 1,
+    null, { polling: 'raf', timeout: 30000 });
+}
+
+// Waits for the browser to draw `n` more animation frames.
 function frames(page, n) {
   return page.evaluate((count) => new Promise((resolve) => {
     const step = (left) => (left === 0 ? resolve() : requestAnimationFrame(() => step(left - 1)));
@@ -73,9 +81,8 @@ async function widgets(page) {
 
 async function press(page, key) {
   await page.keyboard.down(key);
-  await frames(page, 2); // held across frames: ImGui 1.86 polls keys once a frame
   await page.keyboard.up(key);
-  await frames(page, 2);
+  await settle(page);
 }
 
 // Tab cycles the panels (all, plots and model, model only): twice leaves the view alone on the canvas.
@@ -165,7 +172,8 @@ test('every shipped preset renders in the browser as the native goldens show it'
   for (const file of presets) {
     const name = file.replace(/\.json$/, '');
     await page.evaluate((n) => { location.hash = 'preset=' + n; }, name);
-    await frames(page, 4);
+    await frames(page, 1); // the hashchange
+    await settle(page);
     assert.match(await page.title(), new RegExp(name));
     const result = compare(await viewShot(page), PNG.sync.read(fs.readFileSync(path.join(repo, 'tests/golden', file.replace(/json$/, 'png')))));
     if (!result.passes) failures.push(`${name}: ${JSON.stringify(result)}`);
@@ -186,7 +194,7 @@ test('an idle page draws nothing, and a key press draws at once', async () => {
   assert.ok(await drawn() - idleFrom <= 2, `frames drawn in 2 s without input: ${await drawn() - idleFrom}`);
   const before = await page.screenshot();
   await page.keyboard.press('1'); // flat shading
-  await frames(page, 3);
+  await settle(page);
   assert.ok(await drawn() > idleFrom, 'the key press should draw');
   assert.notDeepEqual(await page.screenshot(), before, 'the frames after the press show flat shading');
   await context.close();
@@ -274,7 +282,8 @@ test('the page survives every file of the fuzz corpora', async () => {
         page.mouse.click(open.x + open.w / 2, open.y + open.h / 2),
       ]);
       await chooser.setFiles(file);
-      await frames(page, 4);
+      await frames(page, 2); // the page reads the file
+      await settle(page);
       if (folder === 'tests/data') {
         assert.equal(await page.evaluate(() => location.hash), before, `${name} does not load, yet the scene changed`);
       }
