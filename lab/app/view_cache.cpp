@@ -6,14 +6,16 @@
 
 namespace lab {
 
-bool CachedView::update(Renderer& renderer, const ViewKey& key, int samples) {
+bool CachedView::update(Renderer& renderer, const ViewKey& key, const Viewport& full, int samples) {
     if (key_ && *key_ == key && target_) {
         return false;
     }
-    if (!target_ || target_->width() != key.width || target_->height() != key.height || target_->samples() != samples) {
-        target_ = std::make_unique<ViewTarget>(key.width, key.height, samples);
+    int w = std::max(full.width, key.width), h = std::max(full.height, key.height);
+    if (!target_ || target_->width() != w || target_->height() != h || target_->samples() != samples) {
+        target_.reset(); // its memory first
+        target_ = std::make_unique<ViewTarget>(w, h, samples);
         if (!target_->complete() && samples > 0) { // a driver that offers samples it cannot attach
-            target_ = std::make_unique<ViewTarget>(key.width, key.height, 0);
+            target_ = std::make_unique<ViewTarget>(w, h, 0);
         }
     }
     target_->bind();
@@ -22,14 +24,14 @@ bool CachedView::update(Renderer& renderer, const ViewKey& key, int samples) {
     } else {
         clearFramebuffer(key.preset.background, key.width, key.height);
     }
-    target_->resolve();
+    target_->resolve(key.width, key.height);
     key_ = key;
     return true;
 }
 
 void CachedView::present(unsigned target, const Viewport& dest) const {
-    if (target_) {
-        target_->present(target, dest);
+    if (target_ && key_) {
+        target_->present(target, dest, key_->width, key_->height);
     }
 }
 

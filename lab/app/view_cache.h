@@ -31,8 +31,9 @@ struct ViewKey {
 class CachedView {
 public:
     // Draws the view into the offscreen target if `key` differs from the last one drawn; true
-    // when it drew. `samples`: multisampling of the target (0 for none).
-    bool update(Renderer& renderer, const ViewKey& key, int samples);
+    // when it drew. `full`: the view's size in the window (key's size is at most that);
+    // `samples`: multisampling of the target (0 for none).
+    bool update(Renderer& renderer, const ViewKey& key, const Viewport& full, int samples);
     // Copies the last drawn view into `dest` of framebuffer `target`, scaled to fit.
     void present(unsigned target, const Viewport& dest) const;
     void reset(); // forget it (the next update draws)

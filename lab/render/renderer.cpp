@@ -410,22 +410,22 @@ ViewTarget::~ViewTarget() {
 
 void ViewTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, drawFbo_); }
 
-void ViewTarget::resolve() const {
+void ViewTarget::resolve(int usedWidth, int usedHeight) const {
     if (readFbo_) {
         glDisable(GL_SCISSOR_TEST); // a blit obeys the scissor
         glBindFramebuffer(GL_READ_FRAMEBUFFER, drawFbo_);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, readFbo_);
-        glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitFramebuffer(0, 0, usedWidth, usedHeight, 0, 0, usedWidth, usedHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }
 }
 
-void ViewTarget::present(unsigned target, const Viewport& dest) const {
+void ViewTarget::present(unsigned target, const Viewport& dest, int usedWidth, int usedHeight) const {
     glDisable(GL_SCISSOR_TEST); // a blit obeys the scissor
     glBindFramebuffer(GL_READ_FRAMEBUFFER, readFbo_ ? readFbo_ : drawFbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
-    bool same = dest.width == width_ && dest.height == height_;
-    glBlitFramebuffer(0, 0, width_, height_, dest.x, dest.y, dest.x + dest.width, dest.y + dest.height, GL_COLOR_BUFFER_BIT,
-                      same ? GL_NEAREST : GL_LINEAR);
+    bool same = dest.width == usedWidth && dest.height == usedHeight;
+    glBlitFramebuffer(0, 0, usedWidth, usedHeight, dest.x, dest.y, dest.x + dest.width, dest.y + dest.height,
+                      GL_COLOR_BUFFER_BIT, same ? GL_NEAREST : GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, target);
 }
 

@@ -109,7 +109,9 @@ private:
 
 // A 3D view kept offscreen between frames (the interactive lab draws the model only when what it
 // shows changes): colour and depth at width × height with `samples` (0: none) for drawing into,
-// resolved into a single-sample copy that present() scales onto the bound draw framebuffer.
+// resolved into a single-sample copy that present() scales onto the bound draw framebuffer. A
+// smaller view (drawn while dragging) uses the bottom-left `used` part, so nothing is allocated
+// per frame.
 class ViewTarget {
 public:
     ViewTarget(int width, int height, int samples);
@@ -121,11 +123,12 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     int samples() const { return samples_; }
-    void bind() const;    // for drawing: Viewport{0, 0, width(), height()}
-    void resolve() const; // after drawing: the samples into the single-sample copy
-    // Copies the view into `dest` of framebuffer `target` (left bound), filtered linearly when
-    // the sizes differ, pixel for pixel when they match.
-    void present(unsigned target, const Viewport& dest) const;
+    void bind() const; // for drawing: into Viewport{0, 0, used width, used height}
+    // After drawing: the samples of the used part into the single-sample copy.
+    void resolve(int usedWidth, int usedHeight) const;
+    // Copies the used part into `dest` of framebuffer `target` (left bound), filtered linearly
+    // when the sizes differ, pixel for pixel when they match.
+    void present(unsigned target, const Viewport& dest, int usedWidth, int usedHeight) const;
 
 private:
     int width_, height_, samples_;
