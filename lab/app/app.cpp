@@ -93,6 +93,7 @@ struct App::Impl {
     }
 
     ui::ScreenModel screenModel();
+    void carryOut(const FrameInput& in, const ui::ScreenEvents& events);
     void carryOut(const Request& request);
     void compileShaders(bool builtin);
     void probeAt(const ui::ViewEvents& view);
@@ -132,6 +133,33 @@ ui::ScreenModel App::Impl::screenModel() {
                  probe && probeOpen ? std::optional<glm::vec3>(probe->positionWorld) : std::nullopt};
     m.lightShapes = lightShapes;
     return m;
+}
+
+// What the platform and the UI asked for this frame, in order, then one undo step if a gesture ended.
+void App::Impl::carryOut(const FrameInput& in, const ui::ScreenEvents& events) {
+    if (!in.droppedFiles.empty()) {
+        workspace.drop(in.droppedFiles);
+    }
+    if (in.openLink && !in.openLink->empty()) {
+        workspace.openLink(*in.openLink);
+    }
+    if (in.closeRequested) {
+        workspace.requestQuit();
+    }
+    for (const Request& r : events.requests) {
+        carryOut(r);
+    }
+    if (events.problemClosed) {
+        problem.reset();
+    }
+    if (events.answer) {
+        workspace.answer(*events.answer);
+    }
+    if (events.view.probed) {
+        probeAt(events.view);
+    }
+    collectMessages(in.deltaTime);
+    workspace.endFrame(events.gesture);
 }
 
 // The window's own commands; everything else goes to the workspace.
@@ -263,7 +291,7 @@ bool App::Impl::updateViews(const ui::Layout& layout, const FrameInput& in, floa
                     std::max(1, static_cast<int>(std::lround(dest.height * scale))), view.mode == ViewMode::Normals,
                     renderer.generation()};
         shown.emplace_back(&cache, dest);
-        return cache.update(renderer, key, viewSamples);
+        return cache.update(renderer, key, dest, viewSamples);
     };
     bool drawn = update(viewA, workspace.a(), workspace.meshA(), view.compare ? layout.viewA : layout.view);
     if (view.compare) {
@@ -358,29 +386,7 @@ FrameOutput App::frame(const FrameInput& in) {
     }
 
     //--- carried out: platform events, the UI's requests, the dialogs' answers ----------------
-    if (!in.droppedFiles.empty()) {
-        ws.drop(in.droppedFiles);
-    }
-    if (in.openLink && !in.openLink->empty()) {
-        ws.openLink(*in.openLink);
-    }
-    if (in.closeRequested) {
-        ws.requestQuit();
-    }
-    for (const Request& r : events.requests) {
-        m.carryOut(r);
-    }
-    if (events.problemClosed) {
-        m.problem.reset();
-    }
-    if (events.answer) {
-        ws.answer(*events.answer);
-    }
-    if (events.view.probed) {
-        m.probeAt(events.view);
-    }
-    m.collectMessages(in.deltaTime);
-    ws.endFrame(events.gesture);
+    m.carryOut(in, events);
 
     //--- the renderer draws what the workspace holds ---------------------------------------
     if (std::exchange(m.screenshotRequested, false)) {
