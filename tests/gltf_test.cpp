@@ -256,6 +256,228 @@ INSTANTIATE_TEST_SUITE_P(
                  "accessors[0]", "overflow to infinity"},
         Mutation{"not JSON", [](Fixture& f, const fs::path&) { f.gltf = "not a gltf"; }, "", ""}));
 
+//----------------------------------------------------------------------------------------
+// GLB: the container is read by the lab (header and chunk headers), the BIN chunk in place
+//----------------------------------------------------------------------------------------
+
+std::string u32Bytes(std::uint64_t v) {
+    auto x = static_cast<std::uint32_t>(v);
+    return std::string(reinterpret_cast<const char*>(&x), 4);
+}
+
+// The quad as a GLB: its JSON with buffer 0 in the BIN chunk (no uri), chunks padded to 4 bytes.
+struct GlbFixture {
+    Json gltf;
+    std::string bin;
+
+    GlbFixture() {
+        Fixture f;
+        gltf = f.gltf;
+        gltf["buffers"][0].erase("uri");
+        bin = f.bin;
+    }
+
+    std::string bytes() const {
+        std::string json = gltf.dump();
+        json.resize((json.size() + 3) & ~std::size_t{3}, ' ');
+        std::string padded = bin;
+        padded.resize((padded.size() + 3) & ~std::size_t{3}, '\0');
+        std::string body = u32Bytes(json.size()) + "JSON" + json + u32Bytes(padded.size()) + std::string("BIN\0", 4) + padded;
+        return "glTF" + u32Bytes(2) + u32Bytes(12 + body.size()) + body;
+    }
+};
+
+std::optional<GltfResult> loadGlb(const fs::path& dir, const std::string& bytes, Diagnostics& d) {
+    fs::create_directories(dir / "model");
+    writeText(dir / "model" / "quad.glb", bytes);
+    return loadGltf(dir / "model" / "quad.glb", "quad.glb", d);
+}
+
+TEST(Glb, TheBinChunkIsReadInPlaceAndGivesTheSameMeshAsTheGltf) {
+    TempFolder dir;
+    Diagnostics d;
+    std::optional<GltfResult> glb = loadGlb(dir.path(), GlbFixture().bytes(), d);
+    ASSERT_TRUE(glb) << toString(d);
+    std::optional<GltfResult> gltf = Fixture().load(dir.path(), d);
+    ASSERT_TRUE(gltf) << toString(d);
+    EXPECT_EQ(glb->mesh.positions, gltf->mesh.positions);
+    EXPECT_EQ(glb->mesh.normals, gltf->mesh.normals);
+    EXPECT_EQ(glb->mesh.indices, gltf->mesh.indices);
+}
+
+TEST(Glb, BuffersWithAUriImagesInTheBinChunkAndLaterChunksStillWork) {
+    TempFolder dir;
+    GlbFixture f;
+    // The indices in an external file (buffer 1), the positions in the BIN chunk (buffer 0).
+    fs::create_directories(dir.path() / "model");
+    writeText(dir.path() / "model" / "indices.bin", f.bin.substr(48));
+    f.gltf["buffers"].push_back({{"uri", "indices.bin"}, {"byteLength", 12}});
+    f.gltf["bufferViews"][1] = {{"buffer", 1}, {"byteOffset", 0}, {"byteLength", 12}};
+    // An image stored in the BIN chunk: skipped, and said so.
+    f.gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 8}});
+    f.gltf["images"] = Json::array({{{"bufferView", 2}, {"mimeType", "image/png"}}});
+    // A chunk of an unknown type after BIN is ignored, as the specification asks.
+    std::string bytes = f.bytes() + u32Bytes(4) + "XTRA" + "1234";
+    std::memcpy(bytes.data() + 8, u32Bytes(bytes.size()).data(), 4);
+    Diagnostics d;
+    std::optional<GltfResult> r = loadGlb(dir.path(), bytes, d);
+    ASSERT_TRUE(r) << toString(d);
+    EXPECT_EQ(r->mesh.triangleCount(), 2u);
+    EXPECT_EQ(r->mesh.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
+    ASSERT_FALSE(r->notes.empty());
+    EXPECT_NE(r->notes.front().find("1 image(s) not loaded"), std::string::npos) << r->notes.front();
+}
+
+// One way a GLB can be broken: the bytes changed, and what the refusal must say.
+struct GlbMutation {
+    const char* name;
+    std::function<void(GlbFixture&, std::string& bytes)> apply; // bytes: GlbFixture::bytes() of the changed fixture
+    const char* where;
+    const char* message;
+};
+
+void PrintTo(const GlbMutation& m, std::ostream* os) { *os << m.name; }
+
+class GlbErrors : public testing::TestWithParam<GlbMutation> {};
+
+// Sets the u32 at `at` (and, with fixLength, the header's total length to the file's size).
+void put(std::string& bytes, std::size_t at, std::uint64_t v) { bytes.replace(at, 4, u32Bytes(v)); }
+void fixLength(std::string& bytes) { put(bytes, 8, bytes.size()); }
+
+TEST_P(GlbErrors, AreRefusedSayingWhatIsWrong) {
+    const GlbMutation& m = GetParam();
+    TempFolder dir;
+    GlbFixture f;
+    std::string bytes;
+    m.apply(f, bytes);
+    Diagnostics d;
+    EXPECT_FALSE(loadGlb(dir.path(), bytes, d)) << m.name;
+    ASSERT_EQ(d.size(), 1u) << m.name << "\n" << toString(d);
+    EXPECT_EQ(d[0].where, m.where) << m.name;
+    EXPECT_NE(d[0].message.find(m.message), std::string::npos) << m.name << ": expected \"" << m.message << "\" in\n"
+                                                               << toString(d);
+}
+
+// The JSON chunk of GlbFixture starts at byte 20; bin(f) is where the BIN chunk's header is.
+std::size_t binAt(const GlbFixture& f) {
+    std::string json = f.gltf.dump();
+    return 20 + ((json.size() + 3) & ~std::size_t{3});
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Malformed, GlbErrors,
+    testing::Values(
+        GlbMutation{"shorter than the header", [](GlbFixture&, std::string& b) { b = "glTF" + u32Bytes(2); }, "",
+                    "GLB file of 8 bytes ends inside its 12-byte header"},
+        GlbMutation{"version 1",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        put(b, 4, 1);
+                    },
+                    "", "GLB version 1 (expected 2)"},
+        GlbMutation{"total length shorter than the file",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        put(b, 8, b.size() - 4);
+                    },
+                    "", "bytes but the file has"},
+        GlbMutation{"the file cut inside the JSON chunk's header",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes().substr(0, 16);
+                        fixLength(b);
+                    },
+                    "", "GLB file of 16 bytes ends inside its JSON chunk's header"},
+        GlbMutation{"first chunk not JSON",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        b.replace(16, 4, std::string("BIN\0", 4));
+                    },
+                    "", "GLB's first chunk is not JSON"},
+        GlbMutation{"empty JSON chunk",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        put(b, 12, 0);
+                    },
+                    "", "GLB JSON chunk of 0 bytes is empty"},
+        GlbMutation{"JSON chunk past the end",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        put(b, 12, b.size());
+                    },
+                    "", "runs past the end of the file"},
+        GlbMutation{"JSON chunk length near 4 GiB (no wrap-around)",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        put(b, 12, 0xFFFFFFFCu);
+                    },
+                    "", "GLB JSON chunk of 4294967292 bytes runs past the end of the file"},
+        GlbMutation{"the file cut inside the BIN chunk's header",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes().substr(0, binAt(f) + 5);
+                        fixLength(b);
+                    },
+                    "", "ends inside the header of the chunk after JSON (5 bytes left)"},
+        GlbMutation{"second chunk not BIN",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        b.replace(binAt(f) + 4, 4, "JSON");
+                    },
+                    "", "GLB's second chunk is not BIN"},
+        GlbMutation{"BIN chunk claims more than the file holds",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        put(b, binAt(f), 64);
+                    },
+                    "", "GLB BIN chunk claims 64 bytes, more than the file holds (60 after its header)"},
+        GlbMutation{"BIN chunk length near 4 GiB (no wrap-around)",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        put(b, binAt(f), 0xFFFFFFFCu);
+                    },
+                    "", "GLB BIN chunk claims 4294967292 bytes"},
+        GlbMutation{"BIN chunk not a multiple of 4 bytes",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        put(b, binAt(f), 58);
+                    },
+                    "", "GLB BIN chunk length 58 is not a multiple of 4"},
+        GlbMutation{"a buffer in a BIN chunk the file does not have",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes().substr(0, binAt(f));
+                        fixLength(b);
+                    },
+                    "buffers[0]", "has no uri, so it is the GLB's BIN chunk, but the file has none"},
+        GlbMutation{"a buffer longer than the BIN chunk",
+                    [](GlbFixture& f, std::string& b) {
+                        f.gltf["buffers"][0]["byteLength"] = 64;
+                        b = f.bytes();
+                    },
+                    "buffers[0].byteLength", "64 bytes, more than the GLB's BIN chunk of 60"},
+        GlbMutation{"a bufferView beyond its buffer, inside the BIN chunk",
+                    [](GlbFixture& f, std::string& b) {
+                        f.gltf["buffers"][0]["byteLength"] = 50; // the chunk holds 60: the view must stop at 50
+                        b = f.bytes();
+                    },
+                    "bufferViews[1]", "lies beyond its buffer of 50 bytes"},
+        GlbMutation{"an accessor beyond its bufferView",
+                    [](GlbFixture& f, std::string& b) {
+                        f.gltf["accessors"][0]["count"] = 5;
+                        b = f.bytes();
+                    },
+                    "accessors[0]", "reads beyond its bufferView"},
+        GlbMutation{"byteLength not an integer (tinygltf's own words)",
+                    [](GlbFixture& f, std::string& b) {
+                        f.gltf["buffers"][0]["byteLength"] = "sixty";
+                        b = f.bytes();
+                    },
+                    "", "byteLength"},
+        GlbMutation{"JSON that does not parse (tinygltf's own words)",
+                    [](GlbFixture& f, std::string& b) {
+                        b = f.bytes();
+                        b[20] = '[';
+                    },
+                    "", ""}));
+
 TEST(Gltf, GlbWhoseHeaderClaimsMoreThanTheFileHolds) {
     TempFolder dir;
     std::string glb = "glTF";

@@ -1,16 +1,18 @@
 // gltf.cpp — glTF 2.0 through tinygltf, with the checks tinygltf leaves out.
 //
 // Owns loadGltf: the file-system guard tinygltf reads through (regular files in the model's
-// folder only), the GLB header and URI checks before tinygltf parses, the scene's node
-// hierarchy (transforms, cycles, depth) and each triangle primitive's assembly into the one
-// output Mesh, with the vertex and triangle limits.
+// folder only), the URI checks before tinygltf parses, the scene's node hierarchy (transforms,
+// cycles, depth) and each triangle primitive's assembly into the one output Mesh, with the
+// vertex and triangle limits.
 //
 // It does not read accessor bytes itself: gltf_accessors.cpp proves each accessor in bounds and
-// copies out of it.
+// copies out of it. Nor does it read a GLB's container: gltf_glb.cpp checks the chunks and keeps
+// the BIN chunk in place, so the accessors read it from the mapped file.
 #include "core/gltf.h"
 
 #include "core/file_io.h"
 #include "core/gltf_accessors.h"
+#include "core/gltf_glb.h"
 #include "core/json_text.h"
 #include "core/paths.h"
 
@@ -33,6 +35,7 @@ namespace lab {
 namespace fs = std::filesystem;
 using gltf_detail::Accessors;
 using gltf_detail::AccessorUse;
+using gltf_detail::BufferBytes;
 using gltf_detail::View;
 
 namespace {
@@ -147,8 +150,9 @@ struct Attributes {
 
 class Loader {
 public:
-    Loader(const tinygltf::Model& model, const std::string& file, Diagnostics& out, const GltfLimits& limits)
-        : model_(model), accessors_(model, file, out), limits_(limits) {}
+    Loader(const tinygltf::Model& model, std::vector<BufferBytes> buffers, const std::string& file, Diagnostics& out,
+           const GltfLimits& limits)
+        : model_(model), accessors_(model, std::move(buffers), file, out), limits_(limits) {}
 
     bool error(const std::string& where, const std::string& message) { return accessors_.error(where, message); }
 
@@ -360,49 +364,10 @@ private:
     int computedNormals_ = 0;
 };
 
-// tinygltf 2.7.0 trusts the GLB header's lengths; check them against the bytes we have.
-bool checkGlbHeader(std::string_view bytes, std::string& error) {
-    auto u32 = [&](std::size_t at) {
-        std::uint32_t v;
-        std::memcpy(&v, bytes.data() + at, 4);
-        return v;
-    };
-    if (bytes.size() < 20 || std::memcmp(bytes.data(), "glTF", 4) != 0) {
-        error = "not a GLB file (no \"glTF\" header)";
-        return false;
-    }
-    if (u32(4) != 2) {
-        error = "GLB version " + std::to_string(u32(4)) + " (expected 2)";
-        return false;
-    }
-    if (u32(8) != bytes.size()) {
-        error = "GLB header claims " + std::to_string(u32(8)) + " bytes but the file has " + std::to_string(bytes.size());
-        return false;
-    }
-    std::uint64_t chunk = u32(12);
-    if (20 + chunk > bytes.size() || u32(16) != 0x4E4F534Au /* "JSON" */) {
-        error = "GLB JSON chunk is missing or runs past the end of the file";
-        return false;
-    }
-    std::uint64_t at = 20 + ((chunk + 3) & ~std::uint64_t{3});
-    if (at + 8 <= bytes.size()) {
-        std::uint64_t binLength = u32(static_cast<std::size_t>(at));
-        if (at + 8 + binLength > bytes.size()) {
-            error = "GLB BIN chunk claims " + std::to_string(binLength) + " bytes, more than the file holds";
-            return false;
-        }
-    }
-    return true;
-}
-
 // Refuses, with the URI and its JSON path, every buffer or image URI that is absolute, has a
 // scheme, or climbs out of the model's folder, before tinygltf tries to open anything. The
 // file-system callbacks above stay as the second line of defence (symbolic links, for one).
-bool checkUris(std::string_view json, const std::string& file, Diagnostics& out) {
-    nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
-    if (doc.is_discarded() || !doc.is_object()) {
-        return true; // tinygltf reports malformed JSON in its own words
-    }
+bool checkUris(const nlohmann::json& doc, const std::string& file, Diagnostics& out) {
     bool ok = true;
     for (const char* list : {"buffers", "images"}) {
         auto items = doc.find(list);
@@ -443,47 +408,80 @@ bool checkUris(std::string_view json, const std::string& file, Diagnostics& out)
 
 // The JSON of a .gltf, or of a .glb's JSON chunk, checked before any parser recurses into it:
 // nested no deeper than `maxDepth`, and every buffer or image URI inside the model's folder.
-bool checkJson(std::string_view json, int maxDepth, const std::string& displayName, Diagnostics& diagnostics) {
+// `doc` gets the parsed JSON when it is an object (malformed JSON is left for tinygltf to
+// report in its own words: `doc` is then not an object).
+bool checkJson(std::string_view json, int maxDepth, const std::string& displayName, Diagnostics& diagnostics,
+               nlohmann::json& doc) {
     if (!jsonNestingWithin(json, maxDepth)) {
         diagnostics.push_back({displayName, "", "JSON nested deeper than " + std::to_string(maxDepth) + " levels"});
         return false;
     }
-    return checkUris(json, displayName, diagnostics);
+    doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
+    return !doc.is_object() || checkUris(doc, displayName, diagnostics);
 }
 
-// The file parsed by tinygltf behind the guards: the GLB header and the JSON checked first,
-// files opened only through `guard`, images skipped and counted in `skippedImages`. Nullopt
-// after a diagnostic.
-std::optional<tinygltf::Model> parseModel(std::string_view bytes, FileGuard& guard, int& skippedImages,
-                                          const GltfLimits& limits, const std::string& displayName,
-                                          Diagnostics& diagnostics) {
+// What tinygltf parsed, and where a GLB's buffers stored in its BIN chunk are.
+struct ParsedModel {
+    tinygltf::Model model;
+    std::optional<std::string_view> bin;           // the GLB's BIN chunk, in the mapped file
+    std::vector<std::optional<std::size_t>> inBin; // per buffer: its byteLength when stored in `bin`
+};
+
+// The bytes of each buffer: from the BIN chunk in place, or tinygltf's copy.
+std::vector<BufferBytes> bufferBytes(const ParsedModel& parsed) {
+    std::vector<BufferBytes> out;
+    for (std::size_t i = 0; i < parsed.model.buffers.size(); ++i) {
+        if (i < parsed.inBin.size() && parsed.inBin[i] && parsed.bin) {
+            out.push_back({reinterpret_cast<const unsigned char*>(parsed.bin->data()), *parsed.inBin[i]});
+        } else {
+            const std::vector<unsigned char>& data = parsed.model.buffers[i].data;
+            out.push_back({data.data(), data.size()});
+        }
+    }
+    return out;
+}
+
+// The file parsed by tinygltf behind the guards: the GLB's chunks and the JSON checked first,
+// files opened only through `guard`, images skipped and counted in `skippedImages`. A GLB's
+// buffers in its BIN chunk stay there (gltf_glb.h): tinygltf parses only the JSON. Nullopt after
+// a diagnostic.
+std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, int& skippedImages,
+                                      const GltfLimits& limits, const std::string& displayName,
+                                      Diagnostics& diagnostics) {
     tinygltf::TinyGLTF gltf;
     gltf.SetFsCallbacks({guardedFileExists, noExpansion, guardedReadWholeFile, refuseWrite, &guard});
     gltf.SetImageLoader(skipImage, &skippedImages);
 
-    tinygltf::Model model;
+    ParsedModel parsed;
     std::string err, warn, error;
-    bool isGlb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-    bool ok;
+    std::string_view json = bytes;
+    std::string rewritten;
+    nlohmann::json doc;
+    const bool isGlb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     if (isGlb) {
-        if (!checkGlbHeader(bytes, error)) {
+        std::optional<gltf_detail::GlbChunks> chunks = gltf_detail::readGlbChunks(bytes, error);
+        if (!chunks) {
             diagnostics.push_back({displayName, "", error});
             return std::nullopt;
         }
-        std::uint32_t jsonLength;
-        std::memcpy(&jsonLength, bytes.data() + 12, 4);
-        if (!checkJson(bytes.substr(20, jsonLength), limits.maxJsonDepth, displayName, diagnostics)) {
-            return std::nullopt;
-        }
-        ok = gltf.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                       static_cast<unsigned>(bytes.size()), guard.folder.string());
-    } else {
-        if (!checkJson(bytes, limits.maxJsonDepth, displayName, diagnostics)) {
-            return std::nullopt;
-        }
-        ok = gltf.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()),
-                                      guard.folder.string());
+        json = chunks->json;
+        parsed.bin = chunks->bin;
     }
+    if (!checkJson(json, limits.maxJsonDepth, displayName, diagnostics, doc)) {
+        return std::nullopt;
+    }
+    if (isGlb && doc.is_object()) { // (malformed JSON goes to tinygltf as it is, to be refused in its words)
+        std::optional<gltf_detail::GlbBuffers> inPlace =
+            gltf_detail::glbBuffersInPlace(std::move(doc), parsed.bin, displayName, diagnostics);
+        if (!inPlace) {
+            return std::nullopt;
+        }
+        rewritten = std::move(inPlace->json);
+        parsed.inBin = std::move(inPlace->inBin);
+        json = rewritten;
+    }
+    bool ok = gltf.LoadASCIIFromString(&parsed.model, &err, &warn, json.data(), static_cast<unsigned>(json.size()),
+                                       guard.folder.string());
     if (!ok) {
         std::string message = err.empty() ? "not a valid glTF file" : err;
         while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) {
@@ -495,7 +493,7 @@ std::optional<tinygltf::Model> parseModel(std::string_view bytes, FileGuard& gua
         diagnostics.push_back({displayName, "", message});
         return std::nullopt;
     }
-    return model;
+    return parsed;
 }
 
 // The root nodes of the default scene (scene 0 when the file names none); nullopt after a
@@ -526,20 +524,21 @@ std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& disp
     }
     FileGuard guard{canonicalFolder(file.parent_path()), limits.maxFileBytes, {}};
     int skippedImages = 0;
-    std::optional<tinygltf::Model> model = parseModel(mapped->bytes(), guard, skippedImages, limits, displayName, diagnostics);
-    mapped.reset(); // tinygltf holds its own copy of the buffers now
-    if (!model) {
+    // The mapping stays open until the mesh is built: a GLB's buffers are read from it in place.
+    std::optional<ParsedModel> parsed = parseModel(mapped->bytes(), guard, skippedImages, limits, displayName, diagnostics);
+    if (!parsed) {
         return std::nullopt;
     }
-    std::optional<std::vector<int>> roots = sceneRoots(*model, displayName, diagnostics);
+    const tinygltf::Model& model = parsed->model;
+    std::optional<std::vector<int>> roots = sceneRoots(model, displayName, diagnostics);
     if (!roots) {
         return std::nullopt;
     }
 
     Diagnostics out;
-    Loader loader(*model, displayName, out, limits);
+    Loader loader(model, bufferBytes(*parsed), displayName, out, limits);
     GltfResult result;
-    std::vector<char> onPath(model->nodes.size(), 0);
+    std::vector<char> onPath(model.nodes.size(), 0);
     for (int root : *roots) {
         if (!loader.visit(root, glm::mat4(1.0f), onPath, 0, result.mesh, result)) {
             diagnostics.insert(diagnostics.end(), out.begin(), out.end());

@@ -5,7 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <cstring>
+#include <iterator>
+#include <type_traits>
 
 namespace lab::gltf_detail {
 
@@ -49,6 +53,124 @@ const char* expectedFor(AccessorUse use) {
     return use == AccessorUse::FloatVec3 ? "FLOAT VEC3" : "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT SCALAR";
 }
 
+// The elements of a validated view as an iterator (each read with memcpy, at any alignment), so
+// that a vector is filled by insert() in one pass: resize() would first zero-fill what is then
+// overwritten, a second pass over a large model's arrays.
+template <typename T> class Elements {
+public:
+    using iterator_category = std::random_access_iterator_tag;
+    using value_type = T;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const T*;
+    using reference = T;
+
+    Elements(const unsigned char* at, std::size_t stride) : at_(at), stride_(stride) {}
+    T operator*() const {
+        T x;
+        std::memcpy(&x, at_, sizeof x);
+        return x;
+    }
+    T operator[](difference_type n) const { return *(*this + n); }
+    Elements& operator++() {
+        at_ += stride_;
+        return *this;
+    }
+    Elements operator++(int) {
+        Elements old = *this;
+        ++*this;
+        return old;
+    }
+    Elements& operator--() {
+        at_ -= stride_;
+        return *this;
+    }
+    Elements& operator+=(difference_type n) {
+        at_ += n * static_cast<difference_type>(stride_);
+        return *this;
+    }
+    friend Elements operator+(Elements e, difference_type n) { return e += n; }
+    friend difference_type operator-(const Elements& x, const Elements& y) {
+        return (x.at_ - y.at_) / static_cast<difference_type>(x.stride_);
+    }
+    friend bool operator==(const Elements& x, const Elements& y) { return x.at_ == y.at_; }
+    friend bool operator!=(const Elements& x, const Elements& y) { return x.at_ != y.at_; }
+    friend bool operator<(const Elements& x, const Elements& y) { return x.at_ < y.at_; }
+
+private:
+    const unsigned char* at_;
+    std::size_t stride_;
+};
+
+// Appends the view's `count` elements of T to `out`, converted to U, in one pass: one memmove
+// where they are packed and aligned as U already (a well-formed GLB's arrays are).
+template <typename T, typename U> void append(const View& v, std::vector<U>& out) {
+    if constexpr (std::is_same_v<T, U>) {
+        if (v.stride == sizeof(T) && reinterpret_cast<std::uintptr_t>(v.data) % alignof(T) == 0) {
+            const auto* packed = reinterpret_cast<const T*>(v.data);
+            out.insert(out.end(), packed, packed + v.count);
+            return;
+        }
+    }
+    const Elements<T> first(v.data, v.stride);
+    out.insert(out.end(), first, first + static_cast<std::ptrdiff_t>(v.count));
+}
+
+// Checks over a large model's arrays at memory speed: 4 words at a time in the vector extension
+// GCC and Clang share (plain loops of unknown length stay scalar at -O2), read with memcpy (any
+// alignment), the last few words one by one.
+using Words = std::uint32_t __attribute__((vector_size(16)));
+constexpr std::size_t kWords = sizeof(Words) / sizeof(std::uint32_t);
+
+Words wordsAt(const unsigned char* bytes, std::size_t i) {
+    Words w;
+    std::memcpy(&w, bytes + 4 * i, sizeof w);
+    return w;
+}
+
+std::uint32_t wordAt(const unsigned char* bytes, std::size_t i) {
+    std::uint32_t w;
+    std::memcpy(&w, bytes + 4 * i, 4);
+    return w;
+}
+
+// The largest of n 32-bit words (0 for none).
+std::uint32_t largestWord(const void* words, std::size_t n) {
+    const auto* bytes = static_cast<const unsigned char*>(words);
+    Words most = {};
+    std::size_t i = 0;
+    for (; i + kWords <= n; i += kWords) {
+        Words w = wordsAt(bytes, i);
+        most = most > w ? most : w;
+    }
+    std::uint32_t result = 0;
+    for (std::size_t k = 0; k < kWords; ++k) {
+        result = std::max(result, most[k]);
+    }
+    for (; i < n; ++i) {
+        result = std::max(result, wordAt(bytes, i));
+    }
+    return result;
+}
+
+// Whether any of n floats (as their 32-bit patterns) is infinite or NaN: all exponent bits set.
+bool anyNonFinite(const void* floats, std::size_t n) {
+    constexpr std::uint32_t kExponent = 0x7F800000u;
+    const auto* bytes = static_cast<const unsigned char*>(floats);
+    Words any = {};
+    std::size_t i = 0;
+    for (; i + kWords <= n; i += kWords) {
+        any |= (wordsAt(bytes, i) & kExponent) == kExponent;
+    }
+    std::uint32_t result = 0;
+    for (std::size_t k = 0; k < kWords; ++k) {
+        result |= any[k];
+    }
+    for (; i < n; ++i) {
+        result |= (wordAt(bytes, i) & kExponent) == kExponent;
+    }
+    return result != 0;
+}
+
 } // namespace
 
 bool Accessors::error(const std::string& where, const std::string& message) {
@@ -76,14 +198,14 @@ bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, View
     }
     const tinygltf::BufferView& bv = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
     std::string bvWhere = "bufferViews[" + std::to_string(a.bufferView) + "]";
-    if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= model_.buffers.size()) {
+    if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= buffers_.size()) {
         return error(bvWhere, "buffer " + std::to_string(bv.buffer) + " does not exist");
     }
-    const std::vector<unsigned char>& buffer = model_.buffers[static_cast<std::size_t>(bv.buffer)].data;
-    if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset) {
+    const BufferBytes& buffer = buffers_[static_cast<std::size_t>(bv.buffer)];
+    if (bv.byteOffset > buffer.size || bv.byteLength > buffer.size - bv.byteOffset) {
         return error(bvWhere, "byte range [" + std::to_string(bv.byteOffset) + ", +" +
                                   std::to_string(bv.byteLength) + ") lies beyond its buffer of " +
-                                  std::to_string(buffer.size()) + " bytes");
+                                  std::to_string(buffer.size) + " bytes");
     }
     std::size_t element = componentSize(a.componentType) * componentCount(a.type);
     std::size_t stride = bv.byteStride ? bv.byteStride : element;
@@ -99,7 +221,7 @@ bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, View
                                 std::to_string(a.byteOffset) + " need more than the view's " +
                                 std::to_string(bv.byteLength) + " bytes)");
     }
-    v.data = buffer.data() + bv.byteOffset + a.byteOffset;
+    v.data = buffer.data + bv.byteOffset + a.byteOffset;
     v.stride = stride;
     v.count = a.count;
     v.componentType = a.componentType;
@@ -112,22 +234,10 @@ bool Accessors::appendVec3s(const View& v, int accessor, const glm::mat3& m, con
                             bool normalize, std::vector<glm::vec3>& out) {
     const std::string where = "accessors[" + std::to_string(accessor) + "]";
     std::size_t first = out.size();
-    out.resize(first + v.count);
+    append<glm::vec3>(v, out);
     glm::vec3* dst = out.data() + first;
-    if (v.stride == sizeof(glm::vec3)) {
-        std::memcpy(static_cast<void*>(dst), v.data, v.count * sizeof(glm::vec3));
-    } else {
-        for (std::size_t i = 0; i < v.count; ++i) {
-            std::memcpy(static_cast<void*>(dst + i), v.data + i * v.stride, sizeof(glm::vec3));
-        }
-    }
     // Infinity and NaN are the values whose exponent bits are all ones.
-    const auto* bits = reinterpret_cast<const std::uint32_t*>(dst);
-    std::uint32_t nonFinite = 0;
-    for (std::size_t i = 0; i < 3 * v.count; ++i) {
-        nonFinite |= static_cast<std::uint32_t>((bits[i] & 0x7F800000u) == 0x7F800000u);
-    }
-    if (nonFinite) {
+    if (anyNonFinite(dst, 3 * v.count)) {
         std::size_t bad = 0;
         while (std::isfinite(dst[bad].x) && std::isfinite(dst[bad].y) && std::isfinite(dst[bad].z)) {
             ++bad;
@@ -159,25 +269,10 @@ bool Accessors::appendVec3s(const View& v, int accessor, const glm::mat3& m, con
 template <typename Index>
 bool Accessors::readIndicesOf(const View& v, std::size_t vertexCount, int accessor, const std::string& where,
                               std::vector<std::uint32_t>& sequence) {
-    sequence.resize(v.count);
-    std::uint32_t* dst = sequence.data();
-    std::uint32_t largest = 0;
-    if (v.stride == sizeof(Index)) {
-        const auto* src = reinterpret_cast<const unsigned char*>(v.data);
-        for (std::size_t i = 0; i < v.count; ++i) {
-            Index x;
-            std::memcpy(&x, src + i * sizeof(Index), sizeof x);
-            dst[i] = x;
-            largest = std::max<std::uint32_t>(largest, x);
-        }
-    } else {
-        for (std::size_t i = 0; i < v.count; ++i) {
-            Index x;
-            std::memcpy(&x, v.data + i * v.stride, sizeof x);
-            dst[i] = x;
-            largest = std::max<std::uint32_t>(largest, x);
-        }
-    }
+    sequence.clear();
+    append<Index>(v, sequence);
+    const std::uint32_t* dst = sequence.data();
+    const std::uint32_t largest = largestWord(dst, v.count);
     if (largest >= vertexCount) {
         std::size_t i = 0;
         while (dst[i] < vertexCount) {

@@ -18,9 +18,17 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lab::gltf_detail {
+
+// Where a buffer's bytes are: tinygltf's copy (a .gltf's buffers, a GLB's buffers with a uri),
+// or, for a GLB's buffers stored in its BIN chunk, the chunk itself in the mapped file.
+struct BufferBytes {
+    const unsigned char* data = nullptr;
+    std::size_t size = 0;
+};
 
 // A validated accessor: `count` elements of `componentType`, `stride` bytes apart from `data`.
 struct View {
@@ -38,8 +46,9 @@ enum class AccessorUse {
 
 class Accessors {
 public:
-    Accessors(const tinygltf::Model& model, const std::string& file, Diagnostics& out)
-        : model_(model), file_(file), out_(out) {}
+    // `buffers` holds the bytes of each of the model's buffers, in order.
+    Accessors(const tinygltf::Model& model, std::vector<BufferBytes> buffers, const std::string& file, Diagnostics& out)
+        : model_(model), buffers_(std::move(buffers)), file_(file), out_(out) {}
 
     // Adds a diagnostic; returns false so callers can `return error(...)`.
     bool error(const std::string& where, const std::string& message);
@@ -65,6 +74,7 @@ private:
                        std::vector<std::uint32_t>& sequence);
 
     const tinygltf::Model& model_;
+    std::vector<BufferBytes> buffers_;
     const std::string& file_;
     Diagnostics& out_;
 };
