@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <csignal>
+#include <sys/resource.h>
+#include <sys/stat.h>
+
 namespace lab {
 namespace {
 
@@ -64,6 +68,42 @@ TEST(Png, RoundTrips) {
     EXPECT_EQ(b->width, 3);
     EXPECT_EQ(b->height, 2);
     EXPECT_EQ(b->rgb, a.rgb);
+}
+
+// `lab render` writes its PNGs without the fsync (WriteSafety::Renewable): still atomic, with
+// the usual permissions, and a write that fails leaves the old file as it was.
+TEST(Png, RenewableWritesAreStillAtomic) {
+    TempFolder dir;
+    const std::filesystem::path file = dir.path() / "render.png";
+    std::string error;
+    ASSERT_TRUE(writePng(flat(4, 4, 10), file, error, WriteSafety::Renewable)) << error;
+    std::optional<Image> back = readPng(file, error);
+    ASSERT_TRUE(back) << error;
+    EXPECT_EQ(back->rgb, flat(4, 4, 10).rgb);
+    mode_t mask = ::umask(0);
+    ::umask(mask);
+    struct stat st {};
+    ASSERT_EQ(::stat(file.c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 0777, 0666 & ~mask);
+
+    // A file-size limit makes the next, larger write fail halfway (EFBIG, for root too).
+    const std::string before = readText(file);
+    Image noisy{256, 256, std::vector<std::uint8_t>(256 * 256 * 3)};
+    for (std::size_t i = 0; i < noisy.rgb.size(); ++i) {
+        noisy.rgb[i] = static_cast<std::uint8_t>((i * 2654435761u) >> 13); // does not compress
+    }
+    struct rlimit old {};
+    ::getrlimit(RLIMIT_FSIZE, &old);
+    struct rlimit small = old;
+    small.rlim_cur = before.size() + 100;
+    auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+    ::setrlimit(RLIMIT_FSIZE, &small);
+    bool written = writePng(noisy, file, error, WriteSafety::Renewable);
+    ::setrlimit(RLIMIT_FSIZE, &old);
+    std::signal(SIGXFSZ, oldHandler);
+    EXPECT_FALSE(written);
+    EXPECT_EQ(readText(file), before);
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), std::filesystem::directory_iterator{}), 1);
 }
 
 TEST(Png, AHeaderClaimingAHugeImageIsRefusedBeforeDecoding) {

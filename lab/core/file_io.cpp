@@ -97,7 +97,7 @@ MappedFile::~MappedFile() {
     }
 }
 
-bool writeFileAtomic(const fs::path& path, std::string_view bytes, std::string& error) {
+bool writeFileAtomic(const fs::path& path, std::string_view bytes, std::string& error, WriteSafety safety) {
     fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
     std::string tmpl = (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
     int fd = ::mkstemp(tmpl.data());
@@ -125,7 +125,7 @@ bool writeFileAtomic(const fs::path& path, std::string_view bytes, std::string& 
     // mkstemp creates 0600; give the file the usual permissions, as an ordinary write would.
     mode_t mask = ::umask(0);
     ::umask(mask);
-    if (::fchmod(fd, 0666 & ~mask) != 0 || ::fsync(fd) != 0) {
+    if (::fchmod(fd, 0666 & ~mask) != 0 || (safety == WriteSafety::Durable && ::fsync(fd) != 0)) {
         return fail("cannot write");
     }
     if (::close(fd) != 0) {

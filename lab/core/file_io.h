@@ -2,7 +2,8 @@
 //
 // Reads refuse anything that is not a regular file and anything larger than the caller's
 // limit before allocating. Writes are atomic: a temporary file in the same folder, flushed to
-// disk, then renamed over the target, so a failed write leaves the old file intact.
+// disk (unless the caller says the file can be made again), then renamed over the target, so a
+// failed write leaves the old file intact.
 #pragma once
 
 #include <cstddef>
@@ -36,7 +37,17 @@ private:
     std::size_t size_;
 };
 
+// How far a write goes before the rename. Both are atomic: anyone reading the path, and a write
+// that fails, see the old file or the whole new one.
+enum class WriteSafety {
+    Durable,   // fsync first: also a crash of the machine leaves the old file or the whole new
+               // one. For what the user made: presets, screenshots, goldens, CSV.
+    Renewable, // no fsync: for output that is made again by running the command again
+               // (`lab render`'s PNGs), which the flush would hold up for nothing.
+};
+
 // Writes `bytes` to `path` atomically; false with `error` on any failure, the old file intact.
-bool writeFileAtomic(const std::filesystem::path& path, std::string_view bytes, std::string& error);
+bool writeFileAtomic(const std::filesystem::path& path, std::string_view bytes, std::string& error,
+                     WriteSafety safety = WriteSafety::Durable);
 
 } // namespace lab

@@ -22,13 +22,13 @@ std::string encodePng(const Image& image) {
     return bytes;
 }
 
-bool writePng(const Image& image, const std::filesystem::path& file, std::string& error) {
+bool writePng(const Image& image, const std::filesystem::path& file, std::string& error, WriteSafety safety) {
     std::string bytes = encodePng(image);
     if (bytes.empty()) {
         error = "cannot encode PNG";
         return false;
     }
-    return writeFileAtomic(file, bytes, error);
+    return writeFileAtomic(file, bytes, error, safety);
 }
 
 std::optional<Image> readPng(const std::filesystem::path& file, std::string& error) {

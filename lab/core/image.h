@@ -1,6 +1,8 @@
 // image.h — 8-bit RGB images: PNG in and out, and the screenshot-test comparison.
 #pragma once
 
+#include "core/file_io.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -19,8 +21,9 @@ inline constexpr int kMaxImageSide = 16384;
 
 // PNG bytes in memory; empty on failure.
 std::string encodePng(const Image& image);
-// Encodes to PNG in memory and writes it atomically.
-bool writePng(const Image& image, const std::filesystem::path& file, std::string& error);
+// Encodes to PNG in memory and writes it atomically (file_io.h: WriteSafety).
+bool writePng(const Image& image, const std::filesystem::path& file, std::string& error,
+              WriteSafety safety = WriteSafety::Durable);
 std::optional<Image> readPng(const std::filesystem::path& file, std::string& error);
 
 // The screenshot tests' thresholds. A pixel fails when any channel differs by more than
