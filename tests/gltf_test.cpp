@@ -256,6 +256,43 @@ INSTANTIATE_TEST_SUITE_P(
                  "accessors[0]", "overflow to infinity"},
         Mutation{"not JSON", [](Fixture& f, const fs::path&) { f.gltf = "not a gltf"; }, "", ""}));
 
+// The index check runs four indices at a time with the sign bit flipped (SSE2 has no unsigned
+// comparison): an index past the vertex count is found wherever it is, however large.
+TEST(Gltf, EveryIndexIsCheckedAgainstTheVertexCount) {
+    const std::pair<std::size_t, std::uint32_t> bad[] = {
+        {0, 4}, {2, 0x80000000u}, {3, 0xFFFFFFFFu}, {5, 4}, {7, 0x7FFFFFFFu}, {8, 0x80000004u}, {8, 5}};
+    for (auto [element, value] : bad) {
+        TempFolder dir;
+        Fixture f;
+        std::uint32_t indices[9] = {0, 1, 2, 0, 2, 3, 1, 2, 3};
+        indices[element] = value;
+        f.bin.resize(48);
+        f.bin.append(reinterpret_cast<const char*>(indices), sizeof indices);
+        f.gltf["accessors"][1]["componentType"] = 5125;
+        f.gltf["accessors"][1]["count"] = 9;
+        f.gltf["bufferViews"][1]["byteLength"] = 36;
+        f.gltf["buffers"][0]["byteLength"] = 84;
+        Diagnostics d;
+        EXPECT_FALSE(f.load(dir.path(), d)) << element;
+        ASSERT_EQ(d.size(), 1u) << toString(d);
+        EXPECT_EQ(d[0].where, "accessors[1]");
+        std::string expected = "index " + std::to_string(value) + " at element " + std::to_string(element);
+        EXPECT_NE(d[0].message.find(expected), std::string::npos) << expected << "\n" << toString(d);
+    }
+    // The largest index that fits, in the vector part and the tail: loads.
+    TempFolder dir;
+    Fixture f;
+    const std::uint32_t indices[9] = {3, 3, 3, 0, 2, 3, 1, 2, 3};
+    f.bin.resize(48);
+    f.bin.append(reinterpret_cast<const char*>(indices), sizeof indices);
+    f.gltf["accessors"][1]["componentType"] = 5125;
+    f.gltf["accessors"][1]["count"] = 9;
+    f.gltf["bufferViews"][1]["byteLength"] = 36;
+    f.gltf["buffers"][0]["byteLength"] = 84;
+    Diagnostics d;
+    EXPECT_TRUE(f.load(dir.path(), d)) << toString(d);
+}
+
 //----------------------------------------------------------------------------------------
 // GLB: the container is read by the lab (header and chunk headers), the BIN chunk in place
 //----------------------------------------------------------------------------------------

@@ -133,23 +133,29 @@ std::uint32_t wordAt(const unsigned char* bytes, std::size_t i) {
     return w;
 }
 
-// The largest of n 32-bit words (0 for none).
-std::uint32_t largestWord(const void* words, std::size_t n) {
+// Whether any of n 32-bit words is `limit` or more. SSE2 has no unsigned comparison: with the
+// top bit flipped on both sides, the signed one orders them the same way.
+bool anyAtLeast(const void* words, std::size_t n, std::uint32_t limit) {
+    using Signed = std::int32_t __attribute__((vector_size(16)));
+    constexpr std::uint32_t kFlip = 0x80000000u;
     const auto* bytes = static_cast<const unsigned char*>(words);
-    Words most = {};
+    if (limit == 0) {
+        return n > 0;
+    }
+    const auto largestAllowed = static_cast<std::int32_t>((limit - 1) ^ kFlip);
+    Signed any = {};
     std::size_t i = 0;
     for (; i + kWords <= n; i += kWords) {
-        Words w = wordsAt(bytes, i);
-        most = most > w ? most : w;
+        any |= reinterpret_cast<Signed>(wordsAt(bytes, i) ^ kFlip) > largestAllowed;
     }
-    std::uint32_t result = 0;
+    std::int32_t result = 0;
     for (std::size_t k = 0; k < kWords; ++k) {
-        result = std::max(result, most[k]);
+        result |= any[k];
     }
     for (; i < n; ++i) {
-        result = std::max(result, wordAt(bytes, i));
+        result |= wordAt(bytes, i) >= limit;
     }
-    return result;
+    return result != 0;
 }
 
 // Whether any of n floats (as their 32-bit patterns) is infinite or NaN: all exponent bits set.
@@ -272,8 +278,7 @@ bool Accessors::readIndicesOf(const View& v, std::size_t vertexCount, int access
     sequence.clear();
     append<Index>(v, sequence);
     const std::uint32_t* dst = sequence.data();
-    const std::uint32_t largest = largestWord(dst, v.count);
-    if (largest >= vertexCount) {
+    if (vertexCount <= 0xFFFFFFFFu && anyAtLeast(dst, v.count, static_cast<std::uint32_t>(vertexCount))) {
         std::size_t i = 0;
         while (dst[i] < vertexCount) {
             ++i;
