@@ -328,7 +328,7 @@ void App::Impl::writeLayoutFile(const FrameInput& in, bool settled) {
                   in.windowHeight, ++frames, settled ? 1 : 0, in.lastFrameSeconds * 1000.0f);
     layout += window;
     std::string error;
-    writeFileAtomic(*options.layoutFile, layout, error);
+    writeFileAtomic(*options.layoutFile, layout, error, WriteSafety::Renewable); // made again every frame
 }
 
 //----------------------------------------------------------------------------------------
