@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace lab::ui {
 namespace {
 
@@ -38,13 +40,50 @@ TEST(Layout, ProjectorScreensKeepThePlotsBesideTheModelAtEveryScale) {
     }
 }
 
-TEST(Layout, PortraitWindowPutsThePlotsBelowTheView) {
-    Layout l = computeLayout({768, 1024, 1.0f, true, true});
-    EXPECT_TRUE(l.plotsBelow);
-    EXPECT_FLOAT_EQ(l.plots.y, l.view.y + l.view.h);
-    EXPECT_FLOAT_EQ(l.plots.x, l.view.x);
-    for (const Rect* r : {&l.panel, &l.view, &l.plots}) {
-        expectInside(*r, 768, 1024, "768x1024");
+// Phones and portrait tablets (issue 13): the model on top across the whole width, the tab row,
+// then the chosen tab's contents; nothing outside the window and nothing overlapping.
+TEST(Layout, PortraitAndNarrowWindowsAreCompactWithTheModelFirst) {
+    for (auto [w, h] : {std::pair{360.0f, 640.0f}, {390.0f, 844.0f}, {768.0f, 1024.0f}, {600.0f, 500.0f}}) {
+        for (float scale : {1.0f, 1.25f, 2.0f}) {
+            for (PanelTab tab : kPanelTabs) {
+                std::string where = std::to_string(int(w)) + "x" + std::to_string(int(h)) + " at " +
+                                    std::to_string(scale) + ", " + toString(tab);
+                const Layout l = computeLayout({w, h, scale, true, true, tab});
+                EXPECT_TRUE(l.compact) << where;
+                EXPECT_FLOAT_EQ(l.view.x, 0.0f) << where;
+                EXPECT_FLOAT_EQ(l.view.y, 0.0f) << where;
+                EXPECT_FLOAT_EQ(l.view.w, w) << where;
+                EXPECT_GE(l.view.h, 0.3f * h) << where;
+                EXPECT_LE(l.view.h, 0.6f * h) << where;
+                EXPECT_FLOAT_EQ(l.tabs.y, l.view.h) << where;
+                EXPECT_FLOAT_EQ(l.tabs.w, w) << where;
+                const Rect& contents = tab == PanelTab::Plots ? l.plots : l.panel;
+                const Rect& other = tab == PanelTab::Plots ? l.panel : l.plots;
+                EXPECT_FLOAT_EQ(other.w, 0.0f) << where;
+                EXPECT_FLOAT_EQ(contents.y, l.tabs.y + l.tabs.h) << where;
+                EXPECT_FLOAT_EQ(contents.y + contents.h, h) << where;
+                EXPECT_FLOAT_EQ(contents.w, w) << where;
+                for (const Rect* r : {&l.view, &l.tabs, &contents}) {
+                    expectInside(*r, w, h, where.c_str());
+                }
+            }
+        }
+    }
+}
+
+TEST(Layout, CompactWithoutTheControlPanelShowsThePlotsBelowWithoutTabs) {
+    Layout l = computeLayout({390, 844, 1.0f, false, true, PanelTab::Material});
+    EXPECT_TRUE(l.compact);
+    EXPECT_EQ(l.tab, PanelTab::Plots);
+    EXPECT_FLOAT_EQ(l.tabs.h, 0.0f);
+    EXPECT_FLOAT_EQ(l.plots.y, l.view.h);
+    Layout none = computeLayout({390, 844, 1.0f, false, false});
+    EXPECT_FLOAT_EQ(none.view.h, 844.0f);
+}
+
+TEST(Layout, ProjectorsAndLandscapeTabletsKeepTheirColumns) {
+    for (auto [w, h] : {std::pair{1024.0f, 768.0f}, {1280.0f, 800.0f}, {844.0f, 390.0f}}) {
+        EXPECT_FALSE(computeLayout({w, h, 2.5f, true, true}).compact) << w << "x" << h;
     }
 }
 

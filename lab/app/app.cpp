@@ -21,6 +21,7 @@ namespace {
 
 constexpr float kMinPresenterScale = 1.5f, kMaxPresenterScale = 2.5f, kPresenterStep = 0.25f;
 constexpr float kToastSeconds = 4.0f;
+constexpr float kTouchScale = 1.2f; // a finger's UI: larger text as well as larger widgets
 const glm::vec3 kWindowBackground(0.09f, 0.09f, 0.11f);
 
 } // namespace
@@ -69,7 +70,7 @@ struct App::Impl {
     ViewResolution resolution;
     int viewSamples = 0;     // what the GL offers of AppOptions::viewSamples
     unsigned long long frames = 0;
-    bool screenshotRequested = false, toggleFullscreen = false, pickFile = false;
+    bool screenshotRequested = false, toggleFullscreen = false, pickFile = false, copyLink = false;
 
     explicit Impl(AppOptions o)
         : options(std::move(o)),
@@ -184,6 +185,11 @@ void App::Impl::carryOut(const Request& r) {
     case Command::Screenshot: screenshotRequested = true; break;
     case Command::FocusOpenPath: panel.focusOpenPath = true; break;
     case Command::PickFile: pickFile = true; break;
+    case Command::CopyLink:
+        copyLink = true;
+        toast = "Link copied: it opens this scene for anyone who follows it";
+        toastLeft = kToastSeconds;
+        break;
     case Command::ToggleShaderEditor: shaderEditor.open = !shaderEditor.open; break;
     case Command::CompileShaders:
         if (shaderEditor.open) {
@@ -370,7 +376,7 @@ FrameOutput App::frame(const FrameInput& in) {
 
     //--- layout -> UI -> requests ---------------------------------------------------------
     ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.panels == Impl::Panels::All,
-                                           m.panels != Impl::Panels::None});
+                                           m.panels != Impl::Panels::None, m.panel.tab});
     ui::ScreenModel model = m.screenModel();
     model.clicks = clicksOf(in.events, m.pressed);
     model.panelInfo.compareStacked = layout.compareStacked;
@@ -406,10 +412,13 @@ FrameOutput App::frame(const FrameInput& in) {
     out.quit = ws.quit();
     out.link = ws.link();
     out.downloads = ws.takeDownloads();
-    out.uiScale = m.presenter ? m.presenterScale : 1.0f;
+    out.uiScale = m.presenter ? m.presenterScale : in.touch ? kTouchScale : 1.0f;
+    out.touch = in.touch;
+    out.typing = events.typing;
     out.title = "Lighting Lab - " + ws.document().displayName() + (ws.document().dirty() ? " *" : "");
     out.toggleFullscreen = std::exchange(m.toggleFullscreen, false);
     out.pickFile = std::exchange(m.pickFile, false);
+    out.copyLink = std::exchange(m.copyLink, false);
     out.viewDrawn = m.viewDrawn;
     out.viewScale = scale;
     out.redrawIn = redrawIn;

@@ -43,6 +43,7 @@ struct FrameInput {
     int framesDue = 0;                  // frames the platform will draw after this one anyway (FramePacer::dueAfterThis)
     bool repaint = false;               // the window's picture was lost (uncovered, resized): draw it even if unchanged
     bool closeRequested = false; // the user closed the window
+    bool touch = false;          // the pointer is a finger (app/touch.h): touch-sized widgets
     std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/link.h)
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
 };
@@ -50,11 +51,14 @@ struct FrameInput {
 struct FrameOutput {
     bool quit = false;
     bool toggleFullscreen = false;
-    float uiScale = 1.0f; // the platform rebuilds fonts and style when this changes
+    float uiScale = 1.0f; // the platform rebuilds fonts and style when this or `touch` changes
+    bool touch = false;   // touch-sized widgets (FrameInput::touch)
+    bool typing = false;  // a text field has the keyboard (the browser shows a touch screen's keyboard)
     std::string title;
     std::string link;               // the current scene as a preset link (shareable, restorable)
     std::vector<Download> downloads; // only when AppOptions::saveByDownload
     bool pickFile = false;           // the user asked to open a file (the browser shows its picker)
+    bool copyLink = false;           // the user asked for the scene's link on the clipboard (the browser)
     // When the next frame is needed without input (app/frame_pacer.h): 0 at once, > 0 in that
     // many seconds (a toast going away), < 0 only on input.
     float redrawIn = -1.0f;

@@ -50,6 +50,7 @@ constexpr std::array kRows = {
     CommandRow{C::LoadModel,          0,                   kNoModifier,   "Load",             ""},
     CommandRow{C::DownloadPreset,     0,                   kNoModifier,   "Download preset",  ""},
     CommandRow{C::PickFile,           0,                   kNoModifier,   "Open preset...",   ""},
+    CommandRow{C::CopyLink,           0,                   kNoModifier,   "Copy link",        ""},
 };
 // clang-format on
 

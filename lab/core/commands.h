@@ -36,7 +36,7 @@ enum class Command {
     // The window and its tools (the app carries these out)
     ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
     ToggleLightShapes,
-    ToggleFullscreen, Screenshot, FocusOpenPath, PickFile, ToggleShaderEditor, CompileShaders,
+    ToggleFullscreen, Screenshot, FocusOpenPath, PickFile, CopyLink, ToggleShaderEditor, CompileShaders,
     RevertShaders,
 };
 

@@ -91,13 +91,17 @@ struct ImGuiHost::Impl {
     App* app = nullptr;
     ImGuiStyle baseStyle;
     float scale = 0.0f;
+    bool touch = false;
     bool backend = false;
     Pointer pointer;
     std::string lastDrawn; // the last frame's draw data (snapshot())
 
-    // Rebuilds the font atlas at `s` and scales a copy of the base style, instead of stretching.
-    void applyScale(float s) {
+    // Rebuilds the font atlas at `s` and scales a copy of the base style, instead of stretching;
+    // for a finger (`t`), taller fields, wider grabs and scrollbars, and a margin around each
+    // widget that still counts as a hit.
+    void applyScale(float s, bool t) {
         scale = s;
+        touch = t;
         ImGuiIO& io = ImGui::GetIO();
         io.Fonts->Clear();
         bool loaded = false;
@@ -114,8 +118,17 @@ struct ImGuiHost::Impl {
         }
         ImGui_ImplOpenGL3_DestroyFontsTexture();
         ImGui_ImplOpenGL3_CreateFontsTexture();
-        ImGui::GetStyle() = baseStyle;
-        ImGui::GetStyle().ScaleAllSizes(s);
+        ImGuiStyle& style = ImGui::GetStyle();
+        style = baseStyle;
+        if (t) {
+            style.FramePadding.y = 7.0f;
+            style.ItemSpacing.y = 7.0f;
+            style.ItemInnerSpacing.x = 6.0f;
+            style.GrabMinSize = 22.0f;
+            style.ScrollbarSize = 22.0f;
+            style.TouchExtraPadding = ImVec2(3.0f, 3.0f);
+        }
+        style.ScaleAllSizes(s);
     }
 };
 
@@ -144,7 +157,7 @@ bool ImGuiHost::start(App& app, std::string& error) {
         return false;
     }
     m.backend = true;
-    m.applyScale(1.0f);
+    m.applyScale(1.0f, false);
     Diagnostics diagnostics;
     if (!app.init(diagnostics)) {
         error = "the lab cannot start:\n" + toString(diagnostics);
@@ -170,8 +183,9 @@ FrameOutput ImGuiHost::frame(const FrameInput& in, const std::function<void()>& 
         glViewport(0, 0, in.framebufferWidth, in.framebufferHeight);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }
-    if (out.uiScale != m.scale) {
-        m.applyScale(out.uiScale);
+    if (out.uiScale != m.scale || out.touch != m.touch) {
+        m.applyScale(out.uiScale, out.touch);
+        out.redrawIn = 0.0f; // the next frame shows the new sizes
     }
     return out;
 }

@@ -10,12 +10,18 @@
 //   * files dropped on the canvas or chosen in the page's file picker land in /presets (next to
 //     the bundled presets, so a preset's relative model paths resolve) and go to the app as drops;
 //   * downloads (presets, screenshots) become browser downloads;
+//   * touch: the page hands every finger to the lab (lab_touch), which turns them into mouse
+//     events (app/touch.h); on a touch screen the UI is touch-sized, and while a text field has
+//     the keyboard the page focuses a hidden text input so that the screen's keyboard shows
+//     (its text comes back through lab_text and lab_backspace);
+//   * "Copy link" puts the page's address, whose fragment is the scene, on the clipboard;
 //   * the current scene is kept in the URL fragment (history.replaceState, a shareable link)
 //     and in localStorage, so a reload restores it; a hashchange opens the new link.
 // Not here: anything about presets, rendering or the UI's content.
 #include "platform/window.h"
 
 #include "app/frame_pacer.h"
+#include "app/touch.h"
 #include "platform/imgui_glfw.h"
 #include "platform/imgui_host.h"
 #include "ui/widget_map.h"
@@ -71,6 +77,18 @@ EM_JS(void, labJsPickFile, (), {
     if (input) input.click();
 });
 
+EM_JS(int, labJsCoarsePointer, (), {
+    return matchMedia('(pointer: coarse)').matches ? 1 : 0;
+});
+
+EM_JS(void, labJsKeyboard, (int on), {
+    if (Module.labKeyboard) Module.labKeyboard(on !== 0);
+});
+
+EM_JS(void, labJsCopyLink, (), {
+    if (Module.labCopyLink) Module.labCopyLink(location.href);
+});
+
 EM_JS(void, labJsReady, (), {
     if (Module.onLabReady) Module.onLabReady();
 });
@@ -87,6 +105,9 @@ struct WebState : PlatformInput {
     double last = 0.0;
     float lastCost = 0.0f;
     FramePacer pacer;
+    TouchGestures touch;
+    bool touchScreen = false; // a finger was seen, or the page's pointer is coarse
+    bool typing = false;      // the screen's keyboard was asked for
     int canvasWidth = 0, canvasHeight = 0;
     std::string lastLink, lastTitle;
     std::optional<std::string> pendingLink;
@@ -142,6 +163,7 @@ FrameInput nextInput(WebState& s, double dpr) {
         f = adopt(f);
     }
     in.openLink = std::exchange(s.pendingLink, std::nullopt);
+    in.touch = s.touchScreen;
     return in;
 }
 
@@ -152,6 +174,13 @@ void deliver(WebState& s, const FrameOutput& out) {
     }
     if (out.pickFile) {
         labJsPickFile();
+    }
+    if (out.copyLink) {
+        labJsCopyLink();
+    }
+    if (s.touchScreen && out.typing != s.typing) {
+        s.typing = out.typing;
+        labJsKeyboard(out.typing ? 1 : 0);
     }
     if (out.title != s.lastTitle) {
         glfwSetWindowTitle(s.window, out.title.c_str()); // document.title
@@ -204,6 +233,49 @@ EMSCRIPTEN_KEEPALIVE void lab_open_file(const char* path) {
         gState->changed = true;
     }
 }
+// A finger (CSS pixels from the canvas's corner): phase 0 down, 1 moved, 2 up or cancelled.
+EMSCRIPTEN_KEEPALIVE void lab_touch(int phase, int id, float x, float y) {
+    if (!gState) {
+        return;
+    }
+    std::vector<InputEvent> events;
+    if (phase == 0) {
+        gState->touch.start(id, x, y, events);
+    } else if (phase == 1) {
+        gState->touch.move(id, x, y, events);
+    } else {
+        gState->touch.end(id, x, y, events);
+    }
+    for (const InputEvent& e : events) {
+        gState->queue.push(e);
+    }
+    gState->touchScreen = true;
+    gState->changed = true;
+}
+// Text from the screen's keyboard (UTF-8), and its Backspace.
+EMSCRIPTEN_KEEPALIVE void lab_text(const char* utf8) {
+    if (!gState) {
+        return;
+    }
+    const auto* p = reinterpret_cast<const unsigned char*>(utf8);
+    while (*p) {
+        unsigned c = *p++;
+        int more = c >= 0xF0 ? 3 : c >= 0xE0 ? 2 : c >= 0xC0 ? 1 : 0;
+        c &= more == 3 ? 0x07u : more == 2 ? 0x0Fu : more == 1 ? 0x1Fu : 0x7Fu;
+        for (; more > 0 && (*p & 0xC0) == 0x80; --more) {
+            c = (c << 6) | (*p++ & 0x3Fu);
+        }
+        gState->queue.push(InputEvent::character(c));
+    }
+    gState->changed = true;
+}
+EMSCRIPTEN_KEEPALIVE void lab_backspace() {
+    if (gState) {
+        gState->queue.push(InputEvent::key(GLFW_KEY_BACKSPACE, true));
+        gState->queue.push(InputEvent::key(GLFW_KEY_BACKSPACE, false));
+        gState->changed = true;
+    }
+}
 EMSCRIPTEN_KEEPALIVE void lab_open_link(const char* link) {
     if (gState && gState->lastLink != link) {
         gState->pendingLink = std::string(link);
@@ -251,6 +323,7 @@ WindowResult runLab(const AppOptions& options, const WindowOptions&, std::string
         s->pendingLink = std::string(link);
     }
     std::free(link);
+    s->touchScreen = labJsCoarsePointer() != 0;
     s->last = glfwGetTime();
     emscripten_set_main_loop_arg(frame, s, 0, true);
     return WindowResult::Closed; // not reached

@@ -5,10 +5,70 @@
 
 namespace lab::ui {
 
+const char* toString(PanelTab tab) {
+    switch (tab) {
+    case PanelTab::Model: return "Model";
+    case PanelTab::Material: return "Material";
+    case PanelTab::Lights: return "Lights";
+    case PanelTab::Plots: return "Plots";
+    }
+    return "?";
+}
+
+bool isCompact(float width, float height) { return width < height || width < 640.0f; }
+
+namespace {
+
+// The model on top (at most as tall as it is wide, at least 45% of the height when the tabs have
+// the rest), the tab row, the tab's contents.
+Layout compactLayout(const LayoutInput& in) {
+    const float s = in.uiScale, W = in.width, H = in.height;
+    Layout l;
+    l.compact = true;
+    l.tab = in.showPanel ? in.tab : PanelTab::Plots;
+    if (!in.showPanel && !in.showPlots) {
+        l.view = {0, 0, W, H};
+        return l;
+    }
+    float tabsH = in.showPanel ? 36.0f * s : 0.0f;
+    float viewH = std::clamp(std::min(H * 0.45f, W), std::min(120.0f, H * 0.3f), H * 0.6f);
+    l.view = {0, 0, W, viewH};
+    l.tabs = in.showPanel ? Rect{0, viewH, W, tabsH} : Rect{};
+    Rect contents{0, viewH + tabsH, W, std::max(H - viewH - tabsH, 1.0f)};
+    if (l.tab == PanelTab::Plots) {
+        l.plots = contents;
+        l.plotsBelow = true;
+    } else {
+        l.panel = contents;
+    }
+    return l;
+}
+
+void splitForCompare(Layout& l) {
+    const Rect& v = l.view;
+    l.compareStacked = v.w * 0.5f < v.h * 0.8f;
+    if (l.compareStacked) {
+        l.viewA = {v.x, v.y, v.w, v.h * 0.5f};
+        l.viewB = {v.x, v.y + v.h * 0.5f, v.w, v.h * 0.5f};
+    } else {
+        l.viewA = {v.x, v.y, v.w * 0.5f, v.h};
+        l.viewB = {v.x + v.w * 0.5f, v.y, v.w * 0.5f, v.h};
+    }
+}
+
+} // namespace
+
 // The panels' widths grow with the UI scale up to a third of the window each; the plots stay
 // beside the model while the model keeps at least 240 units and 0.4 of the window's height.
 Layout computeLayout(const LayoutInput& in) {
     const float s = in.uiScale, W = in.width, H = in.height;
+    if (isCompact(W, H)) {
+        Layout l = compactLayout(in);
+        l.view.w = std::max(l.view.w, 1.0f);
+        l.view.h = std::max(l.view.h, 1.0f);
+        splitForCompare(l);
+        return l;
+    }
     Layout l;
     float panelW = in.showPanel ? std::min(360.0f * s, W * 0.34f) : 0.0f;
     // Without the control panel the plots may take more of the width (presenter mode on a projector).
@@ -30,15 +90,7 @@ Layout computeLayout(const LayoutInput& in) {
     }
     l.view.w = std::max(l.view.w, 1.0f);
     l.view.h = std::max(l.view.h, 1.0f);
-    const Rect& v = l.view;
-    l.compareStacked = v.w * 0.5f < v.h * 0.8f;
-    if (l.compareStacked) {
-        l.viewA = {v.x, v.y, v.w, v.h * 0.5f};
-        l.viewB = {v.x, v.y + v.h * 0.5f, v.w, v.h * 0.5f};
-    } else {
-        l.viewA = {v.x, v.y, v.w * 0.5f, v.h};
-        l.viewB = {v.x + v.w * 0.5f, v.y, v.w * 0.5f, v.h};
-    }
+    splitForCompare(l);
     return l;
 }
 

@@ -4,7 +4,11 @@
 // has room beside them (presenter mode included), below the view only on narrow or portrait
 // windows; the view takes the rest and grows with the window. Either panel may be hidden. In compare mode the
 // view is split in two: side by side, or A above B where halves side by side would be narrow
-// (the field of view is vertical, so a narrow half would crop the model). No ImGui here.
+// (the field of view is vertical, so a narrow half would crop the model).
+//
+// Phones, tablets in portrait and narrow windows get the compact layout instead: the model on
+// top across the whole width, then a row of tabs (Model · Material · Lights · Plots) and below it
+// the chosen tab's contents, the plots by default. No ImGui here.
 #pragma once
 
 namespace lab::ui {
@@ -14,11 +18,18 @@ struct Rect {
     bool contains(float px, float py) const { return px >= x && py >= y && px < x + w && py < y + h; }
 };
 
+// The compact layout's tabs, in the order they are shown: the control panel in three parts and
+// the plots.
+enum class PanelTab { Model, Material, Lights, Plots };
+inline constexpr PanelTab kPanelTabs[] = {PanelTab::Model, PanelTab::Material, PanelTab::Lights, PanelTab::Plots};
+const char* toString(PanelTab tab);
+
 struct LayoutInput {
     float width = 0, height = 0; // the window
     float uiScale = 1.0f;        // font size / 13: the panels grow with the UI
     bool showPanel = true;       // the control panel
     bool showPlots = true;       // the plots
+    PanelTab tab = PanelTab::Plots; // the compact layout's chosen tab
 };
 
 struct Layout {
@@ -27,7 +38,16 @@ struct Layout {
     Rect viewA, viewB;  // its halves in compare mode
     bool plotsBelow = false;
     bool compareStacked = false; // A above B rather than beside it
+    // Compact: the view on top, then the tab row (`tabs`, empty when the control panel is
+    // hidden), then the chosen tab's contents in `panel` (Model, Material, Lights) or `plots`.
+    bool compact = false;
+    Rect tabs;
+    PanelTab tab = PanelTab::Plots; // what `panel` or `plots` holds in the compact layout
 };
+
+// Phones, portrait tablets and narrow windows: taller than wide, or narrower than 640 units
+// (whatever the UI's scale: a projector at presenter scale keeps its columns).
+bool isCompact(float width, float height);
 
 Layout computeLayout(const LayoutInput& input);
 

@@ -37,7 +37,7 @@ void enumRadios(const char* id, E& value, const std::array<E, N>& values, const 
     ImGui::PushID(id);
     for (std::size_t i = 0; i < N; ++i) {
         if (i > 0) {
-            ImGui::SameLine();
+            sameLineIfFitsRadio(names[i]);
         }
         if (ImGui::RadioButton(names[i], value == values[i])) {
             value = values[i];
@@ -50,19 +50,22 @@ void enumRadios(const char* id, E& value, const std::array<E, N>& values, const 
 // Revert, Undo and Redo on one line, each enabled only when it would do something.
 void historyButtons(const PanelInfo& info, std::vector<Request>& requests) {
     commandButton(Command::Revert, requests, info.dirty);
-    ImGui::SameLine();
+    sameLineIfFits(commandRow(Command::Undo).label);
     commandButton(Command::Undo, requests, info.canUndo);
-    ImGui::SameLine();
+    sameLineIfFits(commandRow(Command::Redo).label);
     commandButton(Command::Redo, requests, info.canRedo);
 }
 
 void browserFilesSection(const PanelInfo& info, std::vector<Request>& requests) {
     commandButton(Command::DownloadPreset, requests);
     mark("file.download");
-    ImGui::SameLine();
+    sameLineIfFits(commandRow(Command::PickFile).label);
     commandButton(Command::PickFile, requests);
     mark("file.open");
-    ImGui::SameLine();
+    sameLineIfFits(commandRow(Command::CopyLink).label);
+    commandButton(Command::CopyLink, requests);
+    mark("file.copy-link");
+    sameLineIfFits(commandRow(Command::Revert).label);
     historyButtons(info, requests);
     ImGui::TextDisabled("Drop a .json preset or a .glb model on the page.");
 }
@@ -89,7 +92,7 @@ void filesSection(const PanelInfo& info, PanelState& state, std::vector<Request>
         requests.back().path = state.saveAsPath; // where an untitled scene goes
     }
     mark("file.save");
-    ImGui::SameLine();
+    sameLineIfFits(commandRow(Command::Revert).label);
     historyButtons(info, requests);
     if (state.focusOpenPath) {
         ImGui::SetKeyboardFocusHere();
@@ -178,7 +181,7 @@ void shadingSection(Preset& p, ViewSettings& view) {
                                                    {"diffuse", &p.terms.diffuse},
                                                    {"specular", &p.terms.specular}};
     for (const auto& [name, on] : terms) {
-        ImGui::SameLine();
+        sameLineIfFitsRadio(name); // a checkbox is as wide as a radio button
         ImGui::Checkbox((std::string(name) + "##t").c_str(), on);
         mark(std::string("terms.") + name);
     }
@@ -272,7 +275,7 @@ void lightFalloffEditor(LightDesc& l, const std::string& prefix) {
             {"none", {1, 0, 0}}, {"1/d", {0, 1, 0}}, {"1/d^2", {0, 0, 1}}, {"OpenGL", {1, 0.35f, 0.44f}}};
         for (std::size_t i = 0; i < std::size(choices); ++i) {
             if (i > 0) {
-                ImGui::SameLine();
+                sameLineIfFits(ImGui::CalcTextSize(choices[i].name).x + ImGui::GetStyle().FramePadding.x * 2.0f);
             }
             if (ImGui::SmallButton(choices[i].name)) {
                 l.attenuation = choices[i].c;
@@ -377,12 +380,14 @@ void compareRow(ViewSettings& view, const PanelInfo& info, std::vector<Request>&
     }
     mark("compare");
     if (view.compare) {
-        ImGui::SameLine();
-        if (ImGui::RadioButton(info.compareStacked ? "edit A (top)" : "edit A (left)", !view.editingB)) {
+        const char* editA = info.compareStacked ? "edit A (top)" : "edit A (left)";
+        const char* editB = info.compareStacked ? "edit B (bottom)" : "edit B (right)";
+        sameLineIfFitsRadio(editA);
+        if (ImGui::RadioButton(editA, !view.editingB)) {
             view.editingB = false;
         }
-        ImGui::SameLine();
-        if (ImGui::RadioButton(info.compareStacked ? "edit B (bottom)" : "edit B (right)", view.editingB)) {
+        sameLineIfFitsRadio(editB);
+        if (ImGui::RadioButton(editB, view.editingB)) {
             view.editingB = true;
         }
         mark("compare.edit-b");
@@ -391,41 +396,46 @@ void compareRow(ViewSettings& view, const PanelInfo& info, std::vector<Request>&
 
 void toolButtons(std::vector<Request>& requests) {
     commandButton(Command::ToggleShaderEditor, requests);
-    ImGui::SameLine();
+    sameLineIfFits(commandRow(Command::Screenshot).label);
     commandButton(Command::Screenshot, requests);
     mark("screenshot");
-    ImGui::SameLine();
+    sameLineIfFits(commandRow(Command::ToggleHelp).label);
     commandButton(Command::ToggleHelp, requests);
 }
 
 } // namespace
 
 void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, PanelState& state,
-                  std::vector<Request>& requests) {
-    if (ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) {
+                  std::vector<Request>& requests, PanelPart part) {
+    const bool all = part == PanelPart::All, model = all || part == PanelPart::Model,
+               material = all || part == PanelPart::Material, lights = all || part == PanelPart::Lights;
+    if (model && ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) {
         filesSection(info, state, requests);
     }
-    if (info.presetFiles && !info.presetFiles->empty() && ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (model && info.presetFiles && !info.presetFiles->empty() &&
+        ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) {
         presetsSection(info, state, requests);
     }
-    compareRow(view, info, requests);
-    toolButtons(requests);
-    if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (model) {
+        compareRow(view, info, requests);
+        toolButtons(requests);
+    }
+    if (material && ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
         materialSection(preset);
     }
-    if (ImGui::CollapsingHeader("Reflection model (BRDF)", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (material && ImGui::CollapsingHeader("Reflection model (BRDF)", ImGuiTreeNodeFlags_DefaultOpen)) {
         brdfSection(preset);
     }
-    if (ImGui::CollapsingHeader("Shading and terms", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (material && ImGui::CollapsingHeader("Shading and terms", ImGuiTreeNodeFlags_DefaultOpen)) {
         shadingSection(preset, view);
     }
-    if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (lights && ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) {
         lightsSection(preset, state);
     }
-    if (ImGui::CollapsingHeader("Model")) {
+    if (model && ImGui::CollapsingHeader("Model", all ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
         modelSection(preset, info, state, requests);
     }
-    if (ImGui::CollapsingHeader("Camera")) {
+    if (model && ImGui::CollapsingHeader("Camera")) {
         cameraSection(preset, requests);
     }
 }

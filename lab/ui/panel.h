@@ -9,6 +9,7 @@
 #include "core/commands.h"
 #include "core/preset.h"
 #include "core/view_mode.h"
+#include "ui/layout.h"
 
 #include <filesystem>
 #include <string>
@@ -31,13 +32,18 @@ struct PanelInfo {
 struct PanelState {
     std::string openPath, saveAsPath, modelPath; // text fields
     int selectedLight = 0;
+    PanelTab tab = PanelTab::Plots; // the compact layout's chosen tab (ui/layout.h)
     bool focusOpenPath = false; // Ctrl+O: the open field takes the keyboard this frame
     int listScrolledTo = -1;    // the preset the list last scrolled to: it follows the current one
 };
 
+// The whole panel, or one of the compact layout's tabs (ui/layout.h): Model (files, presets,
+// compare, tools, the model, the camera), Material (material, BRDF, shading and terms), Lights.
+enum class PanelPart { All, Model, Material, Lights };
+
 // Draws the panel's contents into the current ImGui window: edits `preset` (the set being
 // edited) and `view` in place, appends what it asks for to `requests`.
 void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, PanelState& state,
-                  std::vector<Request>& requests);
+                  std::vector<Request>& requests, PanelPart part = PanelPart::All);
 
 } // namespace lab::ui

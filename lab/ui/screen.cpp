@@ -6,6 +6,10 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cctype>
+#include <string>
+
 namespace lab::ui {
 
 namespace {
@@ -16,22 +20,81 @@ constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_N
                                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
                                     ImGuiWindowFlags_NoNavInputs;
 
-void beginFixed(const char* title, const Rect& r) {
+void beginFixed(const char* title, const Rect& r, ImGuiWindowFlags extra = 0) {
     ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
     ImGui::SetNextWindowSize(ImVec2(r.w, r.h));
-    ImGui::Begin(title, nullptr, kFixed);
+    ImGui::Begin(title, nullptr, kFixed | extra);
+}
+
+// A drag that starts on the window's background scrolls it, as a finger expects (ImGui 1.86
+// scrolls only by wheel and scrollbar); a drag that starts on a widget is the widget's.
+void dragToScroll() {
+    ImGuiIO& io = ImGui::GetIO();
+    if (ImGui::IsWindowHovered() && !ImGui::IsAnyItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+        ImGui::SetScrollY(ImGui::GetScrollY() - io.MouseDelta.y);
+    }
+}
+
+PanelPart partOf(const Layout& layout) {
+    if (!layout.compact) {
+        return PanelPart::All;
+    }
+    switch (layout.tab) {
+    case PanelTab::Model: return PanelPart::Model;
+    case PanelTab::Material: return PanelPart::Material;
+    case PanelTab::Lights: return PanelPart::Lights;
+    case PanelTab::Plots: break;
+    }
+    return PanelPart::All;
+}
+
+// The compact layout's tab row: one wide button a tab, the chosen one highlighted ("tab.plots").
+void tabRow(const Rect& r, PanelTab& tab) {
+    const float unit = uiScale();
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4.0f * unit, 4.0f * unit));
+    beginFixed("###tabs", r, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PopStyleVar();
+    const float gap = 4.0f * unit;
+    ImVec2 avail = ImGui::GetContentRegionAvail();
+    ImVec2 size((avail.x - gap * 3.0f) / 4.0f, std::max(avail.y, 1.0f));
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(gap, gap));
+    for (PanelTab t : kPanelTabs) {
+        if (t != kPanelTabs[0]) {
+            ImGui::SameLine();
+        }
+        bool chosen = t == tab;
+        ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(chosen ? ImGuiCol_ButtonActive : ImGuiCol_FrameBg));
+        if (ImGui::Button(toString(t), size)) {
+            tab = t;
+        }
+        ImGui::PopStyleColor();
+        std::string name = std::string("tab.") + toString(t);
+        for (char& c : name) {
+            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        }
+        mark(name);
+    }
+    ImGui::PopStyleVar();
+    ImGui::End();
+    widgets().set("tabs", r);
 }
 
 // The control panel and the plots, each where the layout puts it (nowhere when hidden).
 void panels(const Layout& layout, ScreenModel& m, ScreenEvents& events) {
+    // The compact layout's windows have no title bar: the tab row says what they are.
+    const ImGuiWindowFlags extra = layout.compact ? ImGuiWindowFlags_NoTitleBar : 0;
+    if (layout.tabs.w > 0.0f) {
+        tabRow(layout.tabs, m.panel->tab);
+    }
     if (layout.panel.w > 0.0f) {
-        beginFixed("Lighting Lab###panel", layout.panel);
-        controlPanel(*m.edited, *m.view, m.panelInfo, *m.panel, events.requests);
+        beginFixed("Lighting Lab###panel", layout.panel, extra);
+        controlPanel(*m.edited, *m.view, m.panelInfo, *m.panel, events.requests, partOf(layout));
+        dragToScroll();
         ImGui::End();
         widgets().set("panel", layout.panel);
     }
     if (layout.plots.w > 0.0f) {
-        beginFixed("Reflected intensity###plots", layout.plots);
+        beginFixed("Reflected intensity###plots", layout.plots, extra);
         plotsPanel(*m.a, m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr);
         ImGui::End();
         widgets().set("plots", layout.plots);

@@ -61,7 +61,8 @@ void startGesture(const Preset& scene, const Rect& active, ViewControls& s) {
     s.pressX = io.MousePos.x;
     s.pressY = io.MousePos.y;
     s.pressMoved = false;
-    s.drag = ImGui::IsMouseClicked(1) ? ViewControls::Drag::Pan : ViewControls::Drag::Orbit;
+    s.button = ImGui::IsMouseClicked(0) ? 0 : ImGui::IsMouseClicked(1) ? 1 : 2;
+    s.drag = s.button == 0 ? ViewControls::Drag::Orbit : ViewControls::Drag::Pan; // touch: two fingers are the middle button
     if (s.drag == ViewControls::Drag::Orbit) {
         s.light = lightUnderMouse(scene, active, io.MousePos);
         if (s.light >= 0) {
@@ -87,7 +88,7 @@ ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, Vi
     if (hovered && io.MouseWheel != 0.0f) {
         zoomCamera(scene.camera, std::pow(0.9f, io.MouseWheel));
     }
-    if (hovered && s.drag == ViewControls::Drag::None && (ImGui::IsMouseClicked(0) || ImGui::IsMouseClicked(1))) {
+    if (hovered && s.drag == ViewControls::Drag::None && (ImGui::IsMouseClicked(0) || ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2))) {
         startGesture(scene, active, s);
     }
     if (s.drag == ViewControls::Drag::None) {
@@ -104,7 +105,7 @@ ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, Vi
             dragLight(scene, s.light, delta, active);
         }
     }
-    bool released = s.drag == ViewControls::Drag::Pan ? ImGui::IsMouseReleased(1) : ImGui::IsMouseReleased(0);
+    bool released = ImGui::IsMouseReleased(s.button);
     if (released) { // a release without a move was a click: the queued clicks above probe it
         s.drag = ViewControls::Drag::None;
         s.light = -1;

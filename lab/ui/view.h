@@ -1,7 +1,7 @@
 // view.h — the 3D view's ImGui side: mouse gestures, light markers and the text drawn over it.
 //
 // viewControls() edits the camera and the light positions of the preset it is given, in place,
-// like the panel edits the rest (left drag orbits, right drag pans, the wheel zooms, a drag on a
+// like the panel edits the rest (left drag orbits, right or middle drag pans, the wheel zooms, a drag on a
 // light marker moves that light in the plane parallel to the image), and reports a click that
 // did not move as a probe. lightMarkers() draws the lights: numbered markers (at the view's edge
 // for lights outside it), spot cones and directional lights' rays. viewOverlay() draws the
@@ -26,7 +26,8 @@ struct ViewControls {
     enum class Drag { None, Orbit, Pan, Light } drag = Drag::None;
     bool pressMoved = false;
     float pressX = 0, pressY = 0;
-    int light = -1; // the light being dragged
+    int light = -1;  // the light being dragged
+    int button = 0;  // the mouse button that started the drag
 };
 
 struct ViewEvents {

@@ -84,4 +84,19 @@ void helpMarker(const char* text) {
     }
 }
 
+void sameLineIfFits(float width) {
+    float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width;
+    if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) {
+        ImGui::SameLine();
+    }
+}
+
+void sameLineIfFits(const char* buttonLabel) {
+    sameLineIfFits(ImGui::CalcTextSize(buttonLabel, nullptr, true).x + ImGui::GetStyle().FramePadding.x * 2.0f);
+}
+
+void sameLineIfFitsRadio(const char* label) {
+    sameLineIfFits(ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x);
+}
+
 } // namespace lab::ui

@@ -24,6 +24,12 @@ bool dragVec3(const char* label, glm::vec3& value, float speed, float min = 0.0f
 // A button for `command`, labelled from the command table (with its shortcut in the tooltip);
 // a click appends the command to `requests`. Disabled (greyed) when `enabled` is false.
 bool commandButton(Command command, std::vector<Request>& requests, bool enabled = true);
+// SameLine() when an item `width` wide (a button labelled `label`) still fits on this line, so
+// rows of buttons wrap in a narrow panel (a phone) instead of running off its edge.
+void sameLineIfFits(float width);
+void sameLineIfFits(const char* buttonLabel);
+// ... for a radio button labelled `label`.
+void sameLineIfFitsRadio(const char* label);
 // A "(?)" marker with a tooltip.
 void helpMarker(const char* text);
 
