@@ -140,6 +140,25 @@ TEST(FramePacer, DrawsAfterInputAndThenSleeps) {
     EXPECT_EQ(p.dueAfterThis(false), FramePacer::kSettleFrames - 1);
 }
 
+// A tap arrives as four events that take four frames; the settling frames follow the last of them
+// (a tab bar that the tap showed needs them to lay out).
+TEST(FramePacer, SettlingFramesFollowTheFrameThatTookTheLastEvent) {
+    FramePacer p;
+    while (p.due(0.0, false)) {
+        p.drawn(0.0, -1.0f);
+    }
+    p.input();
+    int queued = 4, afterLast = 0;
+    for (int i = 0; i < 20 && p.due(0.0, queued > 0); ++i) {
+        if (queued == 0) {
+            ++afterLast;
+        }
+        queued = queued > 0 ? queued - 1 : 0; // this frame takes one event
+        p.drawn(0.0, -1.0f, queued > 0);
+    }
+    EXPECT_EQ(afterLast, FramePacer::kSettleFrames - 1);
+}
+
 TEST(FramePacer, WakesForTheAppsTimer) {
     FramePacer p;
     while (p.due(0.0, false)) {

@@ -3,8 +3,8 @@
 
 namespace lab {
 
-void FramePacer::drawn(double now, float redrawIn) {
-    if (owed_ > 0) {
+void FramePacer::drawn(double now, float redrawIn, bool inputQueued) {
+    if (owed_ > 0 && !inputQueued) {
         --owed_;
     }
     if (redrawIn == 0.0f && owed_ == 0) {

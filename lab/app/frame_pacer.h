@@ -20,8 +20,11 @@ public:
     void input() { owed_ = owed_ > kSettleFrames ? owed_ : kSettleFrames; }
     // A frame is due now (queued input counts: pass InputQueue::empty()).
     bool due(double now, bool inputQueued) const { return inputQueued || owed_ > 0 || (wakeAt_ >= 0.0 && now >= wakeAt_); }
-    // After a frame that asked to be drawn again in `redrawIn` seconds (0: at once; < 0: only on input).
-    void drawn(double now, float redrawIn);
+    // After a frame that asked to be drawn again in `redrawIn` seconds (0: at once; < 0: only on
+    // input). While input is still queued the settling frames wait: they follow the frame that
+    // took the last event (a tap is four events and four frames; a tab bar shown by the last one
+    // needs its own frames to lay out).
+    void drawn(double now, float redrawIn, bool inputQueued = false);
     // The frames still due after the one about to be drawn, whatever it asks (for tests that
     // wait for the lab to settle): owed ones, and one while input is queued.
     int dueAfterThis(bool inputQueued) const { return (owed_ > 1 ? owed_ - 1 : 0) + (inputQueued ? 1 : 0); }

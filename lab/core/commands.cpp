@@ -55,9 +55,10 @@ constexpr std::array kRows = {
 // clang-format on
 
 // What the mouse and drops do: not commands, but the help lists them with the keys.
-constexpr std::array<std::pair<const char*, const char*>, 3> kPointerHelp = {{
-    {"Left drag / Right drag / Wheel", "orbit / pan / zoom; drag a light marker to move the light"},
+constexpr std::array<std::pair<const char*, const char*>, 4> kPointerHelp = {{
+    {"Left drag / Right or middle drag / Wheel", "orbit / pan / zoom; drag a light marker to move the light"},
     {"Click", "probe the pixel under the mouse"},
+    {"Touch: one finger / two fingers / tap", "orbit / pan and pinch to zoom / probe or press"},
     {"Drop a file", ".json opens a preset, .gltf/.glb loads a model"},
 }};
 

@@ -154,7 +154,7 @@ void loop(GLFWwindow* window, WindowState& state, ImGuiHost& host) {
             glfwSwapBuffers(window);
         }
         lastCost = static_cast<float>(glfwGetTime() - start);
-        pacer.drawn(glfwGetTime(), out.redrawIn);
+        pacer.drawn(glfwGetTime(), out.redrawIn, !state.queue.empty());
         glfwSetWindowTitle(window, out.title.c_str());
         if (out.toggleFullscreen) {
             toggleFullscreen(window, state);

@@ -86,6 +86,16 @@ std::string snapshot(const ImDrawData& data, const FrameInput& in) {
 
 } // namespace
 
+namespace {
+
+// The characters the UI can show: Latin-1, Greek (θ, ω, ...), dashes and the ellipsis (which ImGui
+// uses for clipped text), arrows, minus, <= and >=. The browser's font is cut down to exactly these
+// (cmake/web.cmake): keep the two lists the same.
+const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2190, 0x2193,
+                                0x2212, 0x2212, 0x2264, 0x2265, 0xFFFD, 0xFFFD, 0};
+
+} // namespace
+
 struct ImGuiHost::Impl {
     std::vector<std::string> fontFiles;
     App* app = nullptr;
@@ -108,7 +118,7 @@ struct ImGuiHost::Impl {
         for (const std::string& f : fontFiles) {
             std::error_code ec;
             if (!loaded && std::filesystem::is_regular_file(f, ec)) {
-                loaded = io.Fonts->AddFontFromFileTTF(f.c_str(), 15.0f * s) != nullptr;
+                loaded = io.Fonts->AddFontFromFileTTF(f.c_str(), 15.0f * s, nullptr, kGlyphRanges) != nullptr;
             }
         }
         if (!loaded) {

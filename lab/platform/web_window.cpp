@@ -89,12 +89,17 @@ EM_JS(void, labJsCopyLink, (), {
     if (Module.labCopyLink) Module.labCopyLink(location.href);
 });
 
+// When start-up reached `what`, in ms from navigation (window.labTimes: the browser tests report them).
+EM_JS(void, labJsMark, (const char* what), {
+    (window.labTimes = window.labTimes || {})[UTF8ToString(what)] = performance.now();
+});
+
 EM_JS(void, labJsReady, (), {
     if (Module.onLabReady) Module.onLabReady();
 });
 // clang-format on
 
-const std::vector<std::string> kFonts = {"/fonts/DejaVuSans.ttf"};
+const std::vector<std::string> kFonts = {"/fonts/DejaVuSans-ui.ttf"}; // cut to the UI's glyphs (cmake/web.cmake)
 
 struct WebState : PlatformInput {
     explicit WebState(const AppOptions& options) : app(options) {}
@@ -217,8 +222,12 @@ void frame(void* arg) {
     });
     deliver(s, out);
     s.lastCost = static_cast<float>(glfwGetTime() - start);
-    s.pacer.drawn(glfwGetTime(), out.redrawIn);
-    if (++s.frames == 2) {
+    s.pacer.drawn(glfwGetTime(), out.redrawIn, !s.queue.empty());
+    if (++s.frames == 1) {
+        glFinish(); // once: the mark is when the first frame's pixels are done, not when its commands were sent
+        labJsMark("firstFrame");
+    }
+    if (s.frames == 2) {
         labJsReady(); // the page (and its tests) know the first frames are drawn
     }
 }
@@ -297,6 +306,7 @@ EMSCRIPTEN_KEEPALIVE const char* lab_widgets() {
 }
 
 WindowResult runLab(const AppOptions& options, const WindowOptions&, std::string& error) {
+    labJsMark("main");
     if (!glfwInit()) {
         error = "GLFW did not start";
         return WindowResult::Failed;
@@ -315,9 +325,11 @@ WindowResult runLab(const AppOptions& options, const WindowOptions&, std::string
     s->window = window;
     s->backend = std::make_unique<GlfwBackend>(window, s);
     gState = s;
+    labJsMark("context");
     if (!s->host.start(s->app, error)) {
         return WindowResult::Failed;
     }
+    labJsMark("started");
     char* link = labJsInitialLink();
     if (link && *link) {
         s->pendingLink = std::string(link);

@@ -67,7 +67,7 @@ void browserFilesSection(const PanelInfo& info, std::vector<Request>& requests) 
     mark("file.copy-link");
     sameLineIfFits(commandRow(Command::Revert).label);
     historyButtons(info, requests);
-    ImGui::TextDisabled("Drop a .json preset or a .glb model on the page.");
+    disabledWrapped("Drop a .json preset or a .glb model on the page.");
 }
 
 // A path field with a button after it; Enter in the field or the button sends `command`.
@@ -150,7 +150,7 @@ void brdfSection(Preset& p) {
     if (p.brdf == BrdfModel::Phong) {
         ImGui::TextDisabled("S = max(0, R.V)^n");
     } else if (p.brdf == BrdfModel::BlinnPhong) {
-        ImGui::TextDisabled("S = max(0, N.H)^n,  H = normalize(L + V)");
+        disabledWrapped("S = max(0, N.H)^n,  H = normalize(L + V)");
     } else {
         ImGui::TextDisabled("S = D F G / (4 N.V)");
         static const char* const distributionNames[] = {"Beckmann", "Gaussian", "GGX"};
@@ -341,7 +341,7 @@ void lightsSection(Preset& p, PanelState& state) {
     ImGui::SameLine();
     ImGui::TextDisabled("%zu of %d", p.lights.size(), limits::kMaxLights);
     if (p.lights.empty()) {
-        ImGui::TextDisabled("No lights: only emissive and global ambient remain.");
+        disabledWrapped("No lights: only emissive and global ambient remain.");
         return;
     }
     state.selectedLight = std::clamp(state.selectedLight, 0, static_cast<int>(p.lights.size()) - 1);
@@ -365,7 +365,7 @@ void cameraSection(Preset& p, std::vector<Request>& requests) {
     dragVec3("target", p.camera.target, 0.02f);
     limitedSlider("fovy (deg)", p.camera.fovyDeg, limits::kFovyDeg, "%.1f");
     commandButton(Command::ResetCamera, requests);
-    ImGui::TextDisabled("Left drag: orbit  Right drag: pan  Wheel: zoom");
+    disabledWrapped("Left drag: orbit  Right drag: pan  Wheel: zoom (a finger orbits, two pan and pinch)");
     // Keep the camera valid whatever was dragged.
     if (glm::length(p.camera.eye - p.camera.target) < 1e-3f) {
         p.camera.eye = p.camera.target + glm::vec3(0, 0, 1e-3f);

@@ -72,16 +72,36 @@ bool commandButton(Command command, std::vector<Request>& requests, bool enabled
     return clicked;
 }
 
+void disabledWrapped(const char* text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+}
+
 void helpMarker(const char* text) {
-    ImGui::SameLine();
+    sameLineIfFits(ImGui::CalcTextSize("(?)").x);
     ImGui::TextDisabled("(?)");
-    if (ImGui::IsItemHovered()) {
-        ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    // Hovered with a mouse; tapped with a finger (which leaves no hovering cursor): a popup that
+    // stays until the next tap.
+    ImGui::PushID(text);
+    if (ImGui::IsItemClicked()) {
+        ImGui::OpenPopup("help");
+    }
+    bool popup = ImGui::BeginPopup("help");
+    if (popup || ImGui::IsItemHovered()) {
+        if (!popup) {
+            ImGui::BeginTooltip();
+        }
+        ImGui::PushTextWrapPos(std::min(ImGui::GetFontSize() * 30.0f, ImGui::GetIO().DisplaySize.x * 0.8f));
         ImGui::TextUnformatted(text);
         ImGui::PopTextWrapPos();
-        ImGui::EndTooltip();
+        if (popup) {
+            ImGui::EndPopup();
+        } else {
+            ImGui::EndTooltip();
+        }
     }
+    ImGui::PopID();
 }
 
 void sameLineIfFits(float width) {

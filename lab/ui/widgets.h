@@ -30,6 +30,8 @@ void sameLineIfFits(float width);
 void sameLineIfFits(const char* buttonLabel);
 // ... for a radio button labelled `label`.
 void sameLineIfFitsRadio(const char* label);
+// Greyed text wrapped at the window's edge (a phone's panel is narrow).
+void disabledWrapped(const char* text);
 // A "(?)" marker with a tooltip.
 void helpMarker(const char* text);
 
