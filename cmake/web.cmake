@@ -49,7 +49,7 @@ add_custom_command(OUTPUT "${LAB_WEB_FONT}"
   COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_BINARY_DIR}/fonts"
   COMMAND "${LAB_PYFTSUBSET}" "${LAB_FONT_SOURCE}" "--output-file=${LAB_WEB_FONT}"
           "--unicodes=U+0020-00FF,U+0370-03FF,U+2010-2027,U+2190-2193,U+2212,U+2264-2265,U+FFFD"
-          --no-hinting --layout-features= --name-IDs=0,1,2,3,4,5,6 --drop-tables+=GSUB,GPOS,GDEF,kern
+          --no-hinting --layout-features= --name-IDs=0,1,2,3,4,5,6 --drop-tables+=GSUB,GPOS,GDEF,kern,FFTM
   DEPENDS "${LAB_FONT_SOURCE}" VERBATIM)
 add_custom_target(lab_web_font DEPENDS "${LAB_WEB_FONT}")
 

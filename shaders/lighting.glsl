@@ -64,9 +64,11 @@ float blinnPhongSpecular(vec3 N, vec3 L, vec3 V, float shininess) {
 // Cook-Torrance microfacet terms (c = N.H, m = roughness)
 //----------------------------------------------------------------------------------------
 
-// exp((c^2 - 1)/(c^2 m^2)) / (pi m^2 c^4). Beckmann 1963.
+// exp((c^2 - 1)/(c^2 m^2)) / (pi m^2 c^4). Beckmann 1963. Below c = 10^-4 the value is 0 in
+// float for every accepted m (at most 10: exp(-10^6)); computing it there would divide 0 by a
+// c^4 that underflows to 0.
 float distributionBeckmann(float NoH, float m) {
-    if (NoH <= 0.0f) {
+    if (NoH <= 1e-4f) {
         return 0.0f;
     }
     float c2 = NoH * NoH;
@@ -183,12 +185,14 @@ float specularFactor(vec3 N, vec3 L, vec3 V, float shininess, Brdf b) {
 // The whole model
 //----------------------------------------------------------------------------------------
 
-// Unit vector from the surface point p towards light l.
+// Unit vector from the surface point p towards light l; 0 for a light exactly at p (no direction:
+// it lights nothing there but its ambient term).
 vec3 lightVector(Light l, vec3 p) {
     if (l.type == LIGHT_DIRECTIONAL) {
         return -l.direction;
     }
-    return normalize(l.position - p);
+    vec3 d = l.position - p;
+    return dot(d, d) > 1e-30f ? normalize(d) : vec3(0.0f);
 }
 
 // Att_i: distance attenuation times the spot factor; 1 for a directional light.
@@ -222,7 +226,7 @@ LightTerms lightContribution(Material m, Brdf b, Terms t, Light l, vec3 p, vec3 
 // clamped to [0, 1]. Phong 1975, with the OpenGL 1.x light model.
 vec3 shade(Material m, Brdf b, Terms t, vec3 ambientLight, Light lights[MAX_LIGHTS],
            int lightCount, vec3 p, vec3 N) {
-    vec3 V = normalize(-p);
+    vec3 V = dot(p, p) > 1e-30f ? normalize(-p) : vec3(0.0f, 0.0f, 1.0f); // a vertex at the eye: look along -z
     vec3 color = vec3(0.0f);
     if (t.emissive) {
         color += m.emissive;

@@ -25,20 +25,22 @@ TEST(Limits, NextUpIsNextafterTowardsInfinity) {
 
 TEST(Limits, ContainsAndClampAreConstexpr) {
     static_assert(limits::contains(limits::kCutoffDeg, 0.0f) && limits::contains(limits::kCutoffDeg, 90.0f));
-    static_assert(!limits::contains(limits::kShininess, 0.0f) && limits::contains(limits::kShininess, 1e-30f));
+    static_assert(!limits::contains(limits::kShininess, 0.0f) && limits::contains(limits::kShininess, 1e-3f));
+    static_assert(!limits::contains(limits::kRoughness, 1e-30f) && !limits::contains(limits::kCoordinate, 2e4f));
     static_assert(limits::clamp(limits::kCutoffDeg, 120.0f) == 90.0f);
     static_assert(limits::clamp(limits::kSubdivisionsRound, 1) == 3);
     static_assert(limits::contains(limits::kSubdivisions, 1024) && !limits::contains(limits::kSubdivisions, 1025));
 }
 
 TEST(Limits, ClampGivesTheNearestAcceptedValue) {
-    EXPECT_EQ(limits::clamp(limits::kShininess, 0.0f), std::nextafter(0.0f, kInf));
-    EXPECT_EQ(limits::clamp(limits::kShininess, -5.0f), std::nextafter(0.0f, kInf));
+    EXPECT_EQ(limits::clamp(limits::kShininess, 0.0f), 1e-3f);
+    EXPECT_EQ(limits::clamp(limits::kShininess, -5.0f), 1e-3f);
+    EXPECT_EQ(limits::clamp(limits::kRoughness, 1e-30f), 1e-3f) << "a square that underflows was NaN (issue 14)";
     EXPECT_EQ(limits::clamp(limits::kFovyDeg, 200.0f), 179.0f);
     EXPECT_EQ(limits::clamp(limits::kPlotIncidentDeg, -91.0f), -90.0f);
     EXPECT_EQ(limits::clamp(limits::kAttenuation, 3.5f), 3.5f);
-    EXPECT_EQ(limits::clamp(limits::kAttenuation, kInf), limits::kUnbounded);
-    EXPECT_EQ(limits::clamp(limits::kIor, std::nanf("")), std::nextafter(0.0f, kInf));
+    EXPECT_EQ(limits::clamp(limits::kAttenuation, kInf), 1e6f);
+    EXPECT_EQ(limits::clamp(limits::kIor, std::nanf("")), 1e-2f);
     EXPECT_FALSE(limits::contains(limits::kMaterialColor, std::nanf("")));
 }
 
@@ -71,7 +73,14 @@ const Field kFields[] = {
     {"lights[0].exponent", R"("lights": [{"exponent": )", "}]", &limits::kSpotExponent},
     {"ambient_light[0]", R"("ambient_light": [)", ", 0, 0]", &limits::kAmbientLight},
     {"camera.fovy_deg", R"("camera": {"fovy_deg": )", "}", &limits::kFovyDeg},
-    {"camera.near", R"("camera": {"far": 3e38, "near": )", "}", &limits::kNear},
+    {"camera.near", R"("camera": {"far": 1e6, "near": )", "}", &limits::kNear},
+    {"camera.eye[0]", R"("camera": {"eye": [)", ", 0, 3]}", &limits::kCoordinate},
+    {"camera.target[1]", R"("camera": {"target": [0, )", ", 0]}", &limits::kCoordinate},
+    {"lights[0].position[2]", R"("lights": [{"position": [1, 1, )", "]}]", &limits::kCoordinate},
+    {"lights[0].direction[0]", R"("lights": [{"direction": [)", ", -1, 0]}]", &limits::kCoordinate},
+    {"model.translate[0]", R"("model": {"translate": [)", ", 0, 0]}", &limits::kCoordinate},
+    {"model.scale[1]", R"("model": {"scale": [1, )", ", 1]}", &limits::kCoordinate},
+    {"model.rotate_deg[2]", R"("model": {"rotate_deg": [0, 0, )", "]}", &limits::kRotationDeg},
     {"camera.far", R"("camera": {"far": )", "}", &limits::kFar},
     {"background[2]", R"("background": [0, 0, )", "]", &limits::kBackground},
     {"plot.incident_deg", R"("plot": {"incident_deg": )", "}", &limits::kPlotIncidentDeg},
@@ -130,6 +139,22 @@ std::string fieldName(const testing::TestParamInfo<Field>& field) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Preset, LimitsOfKey, testing::ValuesIn(kFields), fieldName);
+
+// Rules beyond one number's range: a direction and the camera's eye-to-target need a length to
+// normalize, a scale factor a magnitude to invert (issue 14: a tiny direction validated and then
+// normalized to garbage).
+TEST(Limits, DirectionsAndScalesHaveAMinimumSize) {
+    auto messages = [](const std::string& body) {
+        Diagnostics d;
+        parsePreset(R"({"format": "lighting-lab-preset", "version": 1, )" + body + "}", "red.json", std::nullopt, d);
+        return toString(d);
+    };
+    EXPECT_NE(messages(R"("lights": [{"type": "directional", "direction": [1e-4, 0, 0]}])").find("lights[0].direction: must be at least 0.001 long"), std::string::npos);
+    EXPECT_EQ(messages(R"("lights": [{"type": "directional", "direction": [1e-3, 0, 0]}])"), "");
+    EXPECT_NE(messages(R"("camera": {"eye": [0, 0, 1e-4], "target": [0, 0, 0]})").find("camera.target: must be at least 0.001 from eye"), std::string::npos);
+    EXPECT_NE(messages(R"("model": {"scale": [1, 1e-5, 1]})").find("model.scale: scale factors must be at least 0.0001"), std::string::npos);
+    EXPECT_EQ(messages(R"("model": {"scale": [1, -1e-4, 1]})"), "");
+}
 
 TEST(Limits, SubdivisionsAreValidatedPerBuiltin) {
     auto refusedAt = [](const char* builtin, int n) {

@@ -51,7 +51,7 @@ TEST(Link, BrokenLinksAreRefusedWithAReason) {
         {"#p=%%%", "p", "not valid base64url"},
         {"#p=" + base64UrlEncode("{not json"), "line 1, column 3", "invalid JSON"},
         {"#p=" + base64UrlEncode(R"({"format": "lighting-lab-preset", "version": 1, "material": {"shininess": -1}})"),
-         "material.shininess", "greater than 0"},
+         "material.shininess", "in [0.001, 1000000]"},
         {"#preset=../../etc/passwd", "preset", "not the name of a bundled preset"},
         {"#preset=", "preset", "not the name"},
         {"#zoom=3", "", "expected #preset=<name> or #p="},

@@ -4,6 +4,7 @@
 #include "app/view_cache.h"
 #include "core/file_io.h"
 #include "core/probe.h"
+#include "core/safe_text.h"
 #include "render/renderer.h"
 #include "render/shader.h"
 #include "ui/screen.h"
@@ -117,7 +118,7 @@ ui::ScreenModel App::Impl::screenModel() {
     m.b = workspace.view.compare ? &workspace.b() : nullptr;
     m.edited = &workspace.edited();
     m.view = &workspace.view;
-    m.panelInfo = {&workspace.presetFiles(), workspace.currentPreset(), doc.displayName(), doc.dirty(),
+    m.panelInfo = {&workspace.presetFiles(), workspace.currentPreset(), printable(doc.displayName(), true), doc.dirty(),
                    doc.canUndo(), doc.canRedo(), false, options.saveByDownload};
     m.panel = &panel;
     m.plots = &plots;
@@ -129,7 +130,7 @@ ui::ScreenModel App::Impl::screenModel() {
     m.showHelp = &showHelp;
     m.problem = problem ? &*problem : nullptr;
     m.unsavedQuestion = workspace.question() ? &*workspace.question() : nullptr;
-    m.overlay = {doc.displayName(), doc.dirty(), m.a, m.b, workspace.view.mode, frameMs,
+    m.overlay = {printable(doc.displayName(), true), doc.dirty(), m.a, m.b, workspace.view.mode, frameMs,
                  toastLeft > 0.0f ? toast.c_str() : nullptr, caption,
                  probe && probeOpen ? std::optional<glm::vec3>(probe->positionWorld) : std::nullopt};
     m.lightShapes = lightShapes;
@@ -246,7 +247,7 @@ void App::Impl::collectMessages(float deltaTime) {
     toastLeft -= deltaTime;
     std::vector<std::string> notes = workspace.takeNotes();
     if (!notes.empty()) {
-        toast = notes.back();
+        toast = printable(notes.back(), true);
         toastLeft = kToastSeconds;
     }
     std::vector<Problem> problems = workspace.takeProblems();
@@ -415,7 +416,7 @@ FrameOutput App::frame(const FrameInput& in) {
     out.uiScale = m.presenter ? m.presenterScale : in.touch ? kTouchScale : 1.0f;
     out.touch = in.touch;
     out.typing = events.typing;
-    out.title = "Lighting Lab - " + ws.document().displayName() + (ws.document().dirty() ? " *" : "");
+    out.title = "Lighting Lab - " + printable(ws.document().displayName(), true) + (ws.document().dirty() ? " *" : "");
     out.toggleFullscreen = std::exchange(m.toggleFullscreen, false);
     out.pickFile = std::exchange(m.pickFile, false);
     out.copyLink = std::exchange(m.copyLink, false);

@@ -4,6 +4,7 @@
 #include "core/enums.h"
 #include "core/link.h"
 #include "core/paths.h"
+#include "core/safe_text.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -371,7 +372,7 @@ void Workspace::openLink(const std::string& fragment) {
         fs::path file = bundledFolder() / (name->name + ".json");
         std::error_code ec;
         if (!fs::is_regular_file(file, ec)) {
-            problem("Cannot open the link (nothing was changed)", "there is no bundled preset \"" + name->name + "\"");
+            problem("Cannot open the link (nothing was changed)", "there is no bundled preset " + inQuotes(name->name));
             return;
         }
         open(file);

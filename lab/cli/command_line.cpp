@@ -1,9 +1,12 @@
 // command_line.cpp — the CLI11 definition of `lab`'s arguments.
 #include "cli/command_line.h"
 
+#include "cli/output.h"
 #include "core/limits.h"
 
 #include <CLI/CLI.hpp>
+
+#include <sstream>
 
 #ifndef LAB_VERSION
 #define LAB_VERSION "0.0.0"
@@ -91,7 +94,11 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        int status = app.exit(e); // help and version to stdout, errors to stderr
+        // Help and version to stdout, errors to stderr; CLI11 echoes the arguments, so escaped.
+        std::ostringstream out, err;
+        int status = app.exit(e, out, err);
+        print(stdout, out.str());
+        print(stderr, err.str());
         return status == 0 ? kExitOk : kExitBadInput;
     }
 

@@ -1,10 +1,12 @@
 // commands.cpp — render, plot, check and the preview fallback.
 #include "cli/commands.h"
 
+#include "cli/output.h"
 #include "core/file_io.h"
 #include "core/limits.h"
 #include "core/plot.h"
 #include "core/preset.h"
+#include "core/safe_text.h"
 #include "platform/headless_gl.h"
 #include "render/offscreen.h"
 
@@ -21,7 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 void printDiagnostics(const Diagnostics& diagnostics) {
-    std::fputs(toString(diagnostics).c_str(), stderr);
+    print(stderr, toString(diagnostics));
 }
 
 // The headless GL context and renderer, created on first use.
@@ -32,12 +34,12 @@ struct Gpu {
     bool start() {
         std::string error;
         if (!gl.create(error)) {
-            std::fprintf(stderr, "lab: %s\n", error.c_str());
+            print(stderr, "lab: " + error + "\n");
             return false;
         }
         Diagnostics diagnostics;
         if (!renderer.init(diagnostics)) {
-            std::fprintf(stderr, "lab: the built-in shaders do not compile on %s:\n", gl.renderer().c_str());
+            print(stderr, "lab: the built-in shaders do not compile on %s:\n", gl.renderer().c_str());
             printDiagnostics(diagnostics);
             return false;
         }
@@ -61,7 +63,7 @@ std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<fs::path>& fi
 
 void printNotes(const fs::path& preset, const std::vector<std::string>& notes) {
     for (const std::string& n : notes) {
-        std::fprintf(stderr, "%s: note: %s\n", preset.string().c_str(), n.c_str());
+        print(stderr, preset.string() + ": note: " + n + "\n");
     }
 }
 
@@ -82,11 +84,11 @@ std::optional<Size> parseSize(const std::string& text, std::string& error) {
     };
     if (x == std::string::npos || !number(std::string_view(text).substr(0, x), s.width) ||
         !number(std::string_view(text).substr(x + 1), s.height)) {
-        error = "--size: expected WIDTHxHEIGHT such as 512x512, got \"" + text + "\"";
+        error = "--size: expected WIDTHxHEIGHT such as 512x512, got " + inQuotes(text);
         return std::nullopt;
     }
     if (s.width < 1 || s.height < 1 || s.width > kMaxRenderSide || s.height > kMaxRenderSide) {
-        error = "--size: each side must be from 1 to " + std::to_string(kMaxRenderSide) + ", got \"" + text + "\"";
+        error = "--size: each side must be from 1 to " + std::to_string(kMaxRenderSide) + ", got " + inQuotes(text);
         return std::nullopt;
     }
     return s;
@@ -104,7 +106,7 @@ int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size si
         std::error_code ec;
         fs::create_directories(out, ec);
         if (!fs::is_directory(out)) {
-            std::fprintf(stderr, "lab render: --out %s: with several presets --out must be a folder (%s)\n",
+            print(stderr, "lab render: --out %s: with several presets --out must be a folder (%s)\n",
                          out.string().c_str(), ec ? ec.message().c_str() : "it is a file");
             return kExitBadInput;
         }
@@ -113,7 +115,7 @@ int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size si
         for (const fs::path& p : presets) {
             auto [it, fresh] = names.emplace(p.stem().string(), p);
             if (!fresh && it->second != p) {
-                std::fprintf(stderr, "lab render: %s and %s would both write %s.png\n", it->second.string().c_str(),
+                print(stderr, "lab render: %s and %s would both write %s.png\n", it->second.string().c_str(),
                              p.string().c_str(), p.stem().string().c_str());
                 return kExitBadInput;
             }
@@ -144,11 +146,11 @@ int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size si
         // Renewable: renamed into place without an fsync (about 10 ms a run here, sometimes 50,
         // while the file system commits its journal); a render is made again by running it again.
         if (!writePng(*image, target, error, WriteSafety::Renewable)) {
-            std::fprintf(stderr, "lab render: %s\n", error.c_str());
+            print(stderr, "lab render: " + error + "\n");
             anyBad = true;
             continue;
         }
-        std::printf("%s\n", target.string().c_str());
+        print(stdout, target.string() + "\n");
     }
     return anyBad ? kExitBadInput : kExitOk;
 }
@@ -166,15 +168,15 @@ int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float
     }
     float angle = incidentDeg.value_or(preset->preset.plotIncidentDeg);
     if (!limits::contains(limits::kPlotIncidentDeg, angle)) {
-        std::fprintf(stderr, "lab plot: --incident-deg must be %s, got %g\n", limits::kPlotIncidentDeg.text, double(angle));
+        print(stderr, "lab plot: --incident-deg must be %s, got %g\n", limits::kPlotIncidentDeg.text, double(angle));
         return kExitBadInput;
     }
     std::string error;
     if (!writeFileAtomic(out, plotCsv(reflectedIntensity(preset->preset, angle)), error)) {
-        std::fprintf(stderr, "lab plot: %s\n", error.c_str());
+        print(stderr, "lab plot: " + error + "\n");
         return kExitBadInput;
     }
-    std::printf("%s\n", out.string().c_str());
+    print(stdout, out.string() + "\n");
     return kExitOk;
 }
 
@@ -191,7 +193,7 @@ struct CheckLog {
     int failed = 0;
 
     void line(const std::string& s) {
-        std::printf("%s\n", s.c_str());
+        print(stdout, s + "\n");
         text += s + "\n";
     }
     void pass(const std::string& s) {
@@ -287,7 +289,7 @@ void checkPreset(Gpu& gpu, const LoadedPreset& preset, const std::string& name, 
 
 int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) {
     if (!options.update && !fs::is_directory(options.golden)) {
-        std::fprintf(stderr, "lab check: --golden %s: no such folder\n", options.golden.string().c_str());
+        print(stderr, "lab check: --golden %s: no such folder\n", options.golden.string().c_str());
         return kExitBadInput;
     }
     std::error_code ec;
@@ -312,7 +314,7 @@ int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) 
         std::string error;
         fs::create_directories(options.report, ec);
         if (!writeFileAtomic(options.report / "report.txt", log.text, error)) {
-            std::fprintf(stderr, "lab check: %s\n", error.c_str());
+            print(stderr, "lab check: " + error + "\n");
         }
     }
     if (log.failed > 0) {
@@ -353,10 +355,10 @@ int runPreview(const std::optional<fs::path>& presetFile) {
     }
     std::string error;
     if (!writePng(*image, out, error, WriteSafety::Renewable)) { // a preview, made again on the next run
-        std::fprintf(stderr, "lab: %s\n", error.c_str());
+        print(stderr, "lab: " + error + "\n");
         return kExitFailure;
     }
-    std::printf("No window available: rendered \"%s\" to %s\n", preset.preset.name.c_str(), out.string().c_str());
+    print(stdout, "No window available: rendered " + inQuotes(preset.preset.name) + " to " + out.string() + "\n");
     return kExitOk;
 }
 

@@ -8,6 +8,7 @@
 //
 // Exit status: 0 success, 2 bad input (message on stderr), 1 internal failure or failed check.
 #include "cli/command_line.h"
+#include "cli/output.h"
 #include "platform/window.h"
 
 #include <cstdio>
@@ -42,10 +43,10 @@ int runInteractive(const lab::CommandLine& line) {
     switch (lab::runLab(options, window, error)) {
     case lab::WindowResult::Closed: return lab::kExitOk;
     case lab::WindowResult::Failed:
-        std::fprintf(stderr, "lab: %s\n", error.c_str());
+        lab::print(stderr, "lab: " + error + "\n");
         return lab::kExitFailure;
     case lab::WindowResult::NoDisplay:
-        std::fprintf(stderr, "lab: no window here (no display, or a build without a window platform); rendering a preview instead\n");
+        lab::print(stderr, "lab: no window here (no display, or a build without a window platform); rendering a preview instead\n");
         break;
     }
     return lab::runPreview(line.preset);

@@ -1,6 +1,9 @@
 // camera.cpp — orbit, zoom and pan.
 #include "core/camera.h"
 
+#include "core/limits.h"
+
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/constants.hpp>
@@ -9,6 +12,21 @@
 #include <cmath>
 
 namespace lab {
+
+namespace {
+
+// A gesture never takes the camera outside what a preset may hold (core/limits.h): a valid scene
+// stays valid, whatever was dragged.
+void keepInRange(Camera& camera) {
+    const glm::vec3 lo(limits::kCoordinate.min), hi(limits::kCoordinate.max);
+    camera.eye = glm::clamp(camera.eye, lo, hi);
+    camera.target = glm::clamp(camera.target, lo, hi);
+    if (glm::length(camera.eye - camera.target) < 2.0f * limits::kMinDirectionLength) {
+        camera.eye = camera.target + glm::vec3(0.0f, 0.0f, 2.0f * limits::kMinDirectionLength);
+    }
+}
+
+} // namespace
 
 void orbitCamera(Camera& camera, float yawDeg, float pitchDeg) {
     glm::vec3 up = glm::normalize(camera.up);
@@ -26,6 +44,7 @@ void orbitCamera(Camera& camera, float yawDeg, float pitchDeg) {
         dir = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(current - target), right) * glm::vec4(dir, 0.0f));
     }
     camera.eye = camera.target + glm::normalize(dir) * distance;
+    keepInRange(camera);
 }
 
 void zoomCamera(Camera& camera, float factor) {
@@ -33,6 +52,7 @@ void zoomCamera(Camera& camera, float factor) {
     float distance = glm::length(offset);
     float next = std::clamp(distance * factor, camera.near * 2.0f, camera.far / 2.0f);
     camera.eye = camera.target + offset * (next / distance);
+    keepInRange(camera);
 }
 
 void panCamera(Camera& camera, float dx, float dy) {
@@ -45,6 +65,7 @@ void panCamera(Camera& camera, float dx, float dy) {
     glm::vec3 move = (-dx * right - dy * up) * viewHeight;
     camera.eye += move;
     camera.target += move;
+    keepInRange(camera);
 }
 
 } // namespace lab

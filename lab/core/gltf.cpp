@@ -15,6 +15,7 @@
 #include "core/gltf_glb.h"
 #include "core/json_text.h"
 #include "core/paths.h"
+#include "core/safe_text.h"
 
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
@@ -384,9 +385,14 @@ bool checkUris(const nlohmann::json& doc, const std::string& file, Diagnostics& 
                 continue;
             }
             std::string where = std::string(list) + "[" + std::to_string(i) + "].uri";
+            if (hasNul(uri)) { // "a\u0000.gltf" would open "a"
+                out.push_back({file, where, inQuotes(uri) + " holds a NUL byte"});
+                ok = false;
+                continue;
+            }
             std::size_t colon = uri.find(':'), slash = uri.find('/');
             if (uri.empty() || uri[0] == '/' || uri[0] == '\\' || (colon != std::string::npos && colon < slash)) {
-                out.push_back({file, where, "\"" + uri + "\" is absolute or has a scheme; only paths relative to the model's folder are read"});
+                out.push_back({file, where, inQuotes(uri) + " is absolute or has a scheme; only paths relative to the model's folder are read"});
                 ok = false;
                 continue;
             }
@@ -398,7 +404,7 @@ bool checkUris(const nlohmann::json& doc, const std::string& file, Diagnostics& 
                 }
             }
             if (depth < 0) {
-                out.push_back({file, where, "\"" + uri + "\" leaves the model's folder"});
+                out.push_back({file, where, inQuotes(uri) + " leaves the model's folder"});
                 ok = false;
             }
         }
@@ -483,7 +489,7 @@ std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, 
     bool ok = gltf.LoadASCIIFromString(&parsed.model, &err, &warn, json.data(), static_cast<unsigned>(json.size()),
                                        guard.folder.string());
     if (!ok) {
-        std::string message = err.empty() ? "not a valid glTF file" : err;
+        std::string message = err.empty() ? "not a valid glTF file" : shortened(err); // it may quote a whole data: URI
         while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) {
             message.pop_back();
         }

@@ -3,9 +3,16 @@
 // The preset validator (preset_read.cpp) refuses what lies outside these ranges, with `text` as
 // its wording ("must be greater than 0, got -3"); the GUI's sliders span [sliderMin, sliderMax]
 // and clamp typed values with clamp(), so the panel can never produce a preset the validator
-// refuses. Numbers with no range of their own (positions, directions, the model's transform)
-// are any finite float, kFinite. Rules that tie several values together (far > near, a non-zero
-// direction or scale, c0, c1, c2 not all 0) are the validator's.
+// refuses. Rules that tie several values together (far > near, a direction's or a scale's
+// length, c0, c1, c2 not all 0) are the validator's.
+//
+// Every range is chosen so that every formula in shaders/lighting.glsl stays finite in float for
+// every accepted preset (issue 14: a roughness whose square underflowed gave NaN, a light a
+// light-year away gave an unlit sphere): coordinates within 10^4 keep distances squared far
+// from overflow, a roughness of at least 10^-3 keeps m^2 and (m^2 - 1) + 1 apart from 0, an ior
+// of at least 10^-2 keeps ior^2 a normal float, exponents of at least 10^-3 survive a GPU's
+// flush of denormals to zero. tests/finite_test.cpp evaluates the model at the corners of these
+// ranges on the CPU and the GPU and finds no NaN or infinity.
 //
 // This file owns the ranges and the two questions asked of them. It does not read JSON or
 // report anything.
@@ -69,34 +76,42 @@ constexpr int clamp(const IntRange& r, int v) { return v < r.min ? r.min : v > r
 // The ranges, by preset key
 //----------------------------------------------------------------------------------------
 
-// Positions, directions, the model's transform: any finite float (the slider span is a guess
-// at a useful scene size; typed values go further).
+// Any finite float (numbers read outside presets: `lab plot`'s arguments are ranged themselves).
 inline constexpr Range kFinite{-kUnbounded, kUnbounded, false, -10.0f, 10.0f, "a finite number"};
+
+// Positions, directions and the model's transform, each coordinate (the slider span is a guess
+// at a useful scene size; typed values go further). A direction (a light's, the camera's up) is
+// at least kMinDirectionLength long, each scale factor at least kMinScale in magnitude.
+inline constexpr Range kCoordinate{-1.0e4f, 1.0e4f, false, -10.0f, 10.0f, "in [-10000, 10000]"};
+inline constexpr float kMinDirectionLength = 1.0e-3f;
+inline constexpr float kMinScale = 1.0e-4f;
+// model.rotate_deg, each angle.
+inline constexpr Range kRotationDeg{-1.0e4f, 1.0e4f, false, -180.0f, 180.0f, "in [-10000, 10000]"};
 
 // material.emissive, ambient, diffuse, specular: reflectances, so at most 1.
 inline constexpr Range kMaterialColor{0.0f, 1.0f, false, 0.0f, 1.0f, "in [0, 1]"};
 // material.shininess: the Phong and Blinn-Phong exponent.
-inline constexpr Range kShininess{0.0f, kUnbounded, true, 1.0f, 1000.0f, "greater than 0"};
+inline constexpr Range kShininess{1.0e-3f, 1.0e6f, false, 1.0f, 1000.0f, "in [0.001, 1000000]"};
 
 // cook_torrance.roughness (m) and ior.
-inline constexpr Range kRoughness{0.0f, kUnbounded, true, 0.01f, 1.0f, "greater than 0"};
-inline constexpr Range kIor{0.0f, kUnbounded, true, 1.0f, 3.0f, "greater than 0"};
+inline constexpr Range kRoughness{1.0e-3f, 10.0f, false, 0.01f, 1.0f, "in [0.001, 10]"};
+inline constexpr Range kIor{1.0e-2f, 100.0f, false, 1.0f, 3.0f, "in [0.01, 100]"};
 
 // lights[].ambient, diffuse, specular and ambient_light: intensities, which may exceed 1.
-inline constexpr Range kLightColor{0.0f, kUnbounded, false, 0.0f, 1.0f, "0 or more"};
+inline constexpr Range kLightColor{0.0f, 1.0e4f, false, 0.0f, 1.0f, "in [0, 10000]"};
 inline constexpr Range kAmbientLight = kLightColor;
 // lights[].attenuation, each of c0, c1, c2.
-inline constexpr Range kAttenuation{0.0f, kUnbounded, false, 0.0f, 10.0f, "0 or more"};
+inline constexpr Range kAttenuation{0.0f, 1.0e6f, false, 0.0f, 10.0f, "in [0, 1000000]"};
 // lights[].cutoff_deg and exponent: the spot cone.
 inline constexpr Range kCutoffDeg{0.0f, 90.0f, false, 0.0f, 90.0f, "in [0, 90]"};
-inline constexpr Range kSpotExponent{0.0f, kUnbounded, false, 0.0f, 128.0f, "0 or more"};
+inline constexpr Range kSpotExponent{0.0f, 1.0e6f, false, 0.0f, 128.0f, "in [0, 1000000]"};
 // At most this many lights (the shaders' MAX_LIGHTS).
 inline constexpr int kMaxLights = 8;
 
 // camera.fovy_deg, near and far (far > near is checked apart).
-inline constexpr Range kFovyDeg{0.0f, 179.0f, true, 5.0f, 120.0f, "greater than 0 and at most 179"};
-inline constexpr Range kNear{0.0f, kUnbounded, true, 0.01f, 10.0f, "greater than 0"};
-inline constexpr Range kFar{0.0f, kUnbounded, true, 1.0f, 1000.0f, "greater than 0"};
+inline constexpr Range kFovyDeg{0.1f, 179.0f, false, 5.0f, 120.0f, "in [0.1, 179]"};
+inline constexpr Range kNear{1.0e-4f, 1.0e5f, false, 0.01f, 10.0f, "in [0.0001, 100000]"};
+inline constexpr Range kFar{1.0e-3f, 1.0e6f, false, 1.0f, 1000.0f, "in [0.001, 1000000]"};
 
 // background: a colour written as it is.
 inline constexpr Range kBackground{0.0f, 1.0f, false, 0.0f, 1.0f, "in [0, 1]"};

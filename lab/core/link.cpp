@@ -1,6 +1,8 @@
 // link.cpp — preset links: base64url of minified JSON, validated like a file.
 #include "core/link.h"
 
+#include "core/safe_text.h"
+
 #include <nlohmann/json.hpp>
 
 namespace lab {
@@ -98,7 +100,7 @@ std::optional<std::variant<LinkedPresetName, Preset>> parseLink(std::string_view
             ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.');
         }
         if (!ok || name.find("..") != std::string::npos) {
-            diagnostics.push_back({file, "preset", "\"" + name + "\" is not the name of a bundled preset"});
+            diagnostics.push_back({file, "preset", inQuotes(name) + " is not the name of a bundled preset"});
             return std::nullopt;
         }
         return LinkedPresetName{name};

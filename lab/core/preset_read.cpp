@@ -15,11 +15,13 @@
 #include "core/limits.h"
 #include "core/paths.h"
 #include "core/preset_names.h"
+#include "core/safe_text.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <set>
 #include <span>
@@ -58,6 +60,9 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 template <typename Names>
 std::string suggestion(std::string_view word, const Names& candidates) {
     std::string_view best;
+    if (word.size() > 64) {
+        return {}; // no key or name is that long (and the distance would cost its length times theirs)
+    }
     std::size_t bestDistance = std::max<std::size_t>(2, word.size() / 3) + 1;
     for (std::string_view c : candidates) {
         std::size_t d = editDistance(word, c);
@@ -66,7 +71,7 @@ std::string suggestion(std::string_view word, const Names& candidates) {
             best = c;
         }
     }
-    return best.empty() ? std::string{} : " (did you mean \"" + std::string(best) + "\"?)";
+    return best.empty() ? std::string{} : " (did you mean " + inQuotes(best) + "?)";
 }
 
 //----------------------------------------------------------------------------------------
@@ -81,11 +86,16 @@ public:
     // A Reader for `object`, found at `path`, reporting to the same place.
     Reader child(const Json& object, std::string path) const { return Reader(object, std::move(path), file_, out_); }
 
-    // Reports the keys not in `known`, with the closest known one as a suggestion.
+    // Reports the keys not in `known`, with the closest known one as a suggestion. A key that is
+    // not a plain name (control characters, a NUL, great length) is quoted in the path.
     void finish(Keys known) {
         for (const auto& [key, value] : object_.items()) {
             if (!consumed_.contains(key)) {
-                error(key, "unknown key" + suggestion(key, known));
+                bool plain = key.size() <= 64 && std::all_of(key.begin(), key.end(), [](unsigned char c) {
+                                 return std::isalnum(c) || c == '_' || c == '-';
+                             });
+                error(plain ? key : inQuotes(key, 60),
+                      "unknown key" + std::string(hasNul(key) ? " (it holds a NUL byte)" : "") + suggestion(key, known));
             }
         }
     }
@@ -162,14 +172,14 @@ public:
         std::string choices;
         std::vector<std::string_view> names;
         for (const auto& [value, name] : table) {
-            choices += (choices.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+            choices += (choices.empty() ? "" : ", ") + inQuotes(name);
             names.push_back(name);
             if (v->is_string() && v->get<std::string>() == name) {
                 dst = value;
                 return;
             }
         }
-        std::string got = v->is_string() ? "\"" + v->get<std::string>() + "\"" : describe(*v);
+        std::string got = v->is_string() ? inQuotes(v->get<std::string>()) : describe(*v);
         error(key, "expected one of " + choices + ", got " + got +
                        (v->is_string() ? suggestion(v->get<std::string>(), names) : ""));
     }
@@ -270,7 +280,7 @@ std::optional<Json> parseObject(std::string_view text, const std::string& file, 
         std::string what = e.what();
         std::size_t colon = what.rfind(": ");
         std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
-        diagnostics.push_back({file, lineColumn(text, e.byte == 0 ? 0 : e.byte - 1), "invalid JSON: " + detail});
+        diagnostics.push_back({file, lineColumn(text, e.byte == 0 ? 0 : e.byte - 1), "invalid JSON: " + shortened(detail, 200)});
         return std::nullopt;
     } catch (const Json::out_of_range& e) {
         // A number too large for a double, e.g. 1e999: "... number overflow parsing '1e999'".
@@ -279,10 +289,10 @@ std::optional<Json> parseObject(std::string_view text, const std::string& file, 
         std::string number = open < close ? what.substr(open + 1, close - open - 1) : "";
         std::size_t at = number.empty() ? std::string_view::npos : text.find(number);
         diagnostics.push_back({file, at == std::string_view::npos ? "" : lineColumn(text, at),
-                               "number out of range: " + (number.empty() ? what : number)});
+                               "number out of range: " + shortened(number.empty() ? what : number, 200)});
         return std::nullopt;
     } catch (const Json::exception& e) {
-        diagnostics.push_back({file, "", std::string("invalid JSON: ") + e.what()});
+        diagnostics.push_back({file, "", "invalid JSON: " + shortened(e.what(), 200)});
         return std::nullopt;
     }
     if (!json.is_object()) {
@@ -354,8 +364,10 @@ void readGltfPath(Reader& r, Model& model, const std::optional<fs::path>& folder
     std::string lower = path;
     std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
     std::string error;
-    if (!lower.ends_with(".gltf") && !lower.ends_with(".glb")) {
-        r.error("gltf", "expected a .gltf or .glb file, got \"" + path + "\"");
+    if (hasNul(path)) {
+        r.error("gltf", "the path " + inQuotes(path) + " holds a NUL byte");
+    } else if (!lower.ends_with(".gltf") && !lower.ends_with(".glb")) {
+        r.error("gltf", "expected a .gltf or .glb file, got " + inQuotes(path));
     } else if (!folder) {
         r.error("gltf", "a glTF model needs the preset to be a file (paths are relative to it)");
     } else if (!resolveModelPath(path, *folder, error)) {
@@ -381,18 +393,19 @@ void readModel(Reader& r, Model& model, const std::optional<fs::path>& folder) {
             r.error("subdivisions", "a sphere needs at least 2 stacks");
         }
     }
-    r.readVec3("scale", model.scale);
-    if (model.scale.x == 0.0f || model.scale.y == 0.0f || model.scale.z == 0.0f) {
-        r.error("scale", "scale factors must not be 0 (the normal matrix would not exist)");
+    r.readVec3("scale", model.scale, limits::kCoordinate);
+    if (std::abs(model.scale.x) < limits::kMinScale || std::abs(model.scale.y) < limits::kMinScale ||
+        std::abs(model.scale.z) < limits::kMinScale) {
+        r.error("scale", "scale factors must be at least 0.0001 in magnitude (at 0 the normal matrix would not exist)");
     }
-    r.readVec3("rotate_deg", model.rotateDeg);
-    r.readVec3("translate", model.translate);
+    r.readVec3("rotate_deg", model.rotateDeg, limits::kRotationDeg);
+    r.readVec3("translate", model.translate, limits::kCoordinate);
 }
 
 void readCamera(Reader& r, Camera& camera) {
-    r.readVec3("eye", camera.eye);
-    r.readVec3("target", camera.target);
-    r.readVec3("up", camera.up);
+    r.readVec3("eye", camera.eye, limits::kCoordinate);
+    r.readVec3("target", camera.target, limits::kCoordinate);
+    r.readVec3("up", camera.up, limits::kCoordinate);
     r.readNumber("fovy_deg", camera.fovyDeg, limits::kFovyDeg);
     r.readNumber("near", camera.near, limits::kNear);
     r.readNumber("far", camera.far, limits::kFar);
@@ -400,8 +413,8 @@ void readCamera(Reader& r, Camera& camera) {
         r.error("far", "must be greater than near");
     }
     glm::vec3 forward = camera.target - camera.eye;
-    if (glm::dot(forward, forward) == 0.0f) {
-        r.error("target", "must differ from eye");
+    if (glm::length(forward) < limits::kMinDirectionLength) {
+        r.error("target", "must be at least 0.001 from eye");
     } else {
         glm::vec3 side = glm::cross(forward, camera.up);
         if (glm::dot(side, side) <= 1e-12f * glm::dot(forward, forward) * glm::dot(camera.up, camera.up)) {
@@ -428,10 +441,10 @@ void readMaterial(Reader& r, MaterialDesc& material) {
 
 void readLight(Reader& r, LightDesc& light) {
     r.readEnum("type", light.type, preset_names::kLightType);
-    r.readVec3("position", light.position);
-    r.readVec3("direction", light.direction);
-    if (light.direction == glm::vec3(0.0f)) {
-        r.error("direction", "must not be the zero vector");
+    r.readVec3("position", light.position, limits::kCoordinate);
+    r.readVec3("direction", light.direction, limits::kCoordinate);
+    if (glm::length(light.direction) < limits::kMinDirectionLength) {
+        r.error("direction", "must be at least 0.001 long (it is normalized)");
     }
     for (auto [key, color] : {std::pair{"ambient", &light.ambient}, std::pair{"diffuse", &light.diffuse},
                               std::pair{"specular", &light.specular}}) {
@@ -508,27 +521,27 @@ void readPresetKeys(Reader& r, Preset& p, const std::optional<fs::path>& folder)
 std::optional<fs::path> resolveModelPath(const std::string& gltf, const fs::path& folder, std::string& error) {
     fs::path relative(gltf);
     if (relative.is_absolute()) {
-        error = "\"" + gltf + "\" is an absolute path; model paths are relative to the preset's folder";
+        error = inQuotes(gltf) + " is an absolute path; model paths are relative to the preset's folder";
         return std::nullopt;
     }
     fs::path base = canonicalFolder(folder);
     std::error_code ec;
     fs::path full = fs::weakly_canonical(base / relative, ec);
     if (ec) {
-        error = "\"" + gltf + "\": " + ec.message();
+        error = inQuotes(gltf) + ": " + ec.message();
         return std::nullopt;
     }
     if (!isInside(base, full)) {
-        error = "\"" + gltf + "\" leaves the preset's folder " + base.string();
+        error = inQuotes(gltf) + " leaves the preset's folder " + base.string();
         return std::nullopt;
     }
     fs::file_status status = fs::status(full, ec);
     if (!fs::exists(status)) {
-        error = "model file \"" + gltf + "\" not found (looked for " + full.string() + ")";
+        error = "model file " + inQuotes(gltf) + " not found (looked for " + inQuotes(full.string(), 400) + ")";
         return std::nullopt;
     }
     if (!fs::is_regular_file(status)) {
-        error = "\"" + gltf + "\" is not a regular file";
+        error = inQuotes(gltf) + " is not a regular file";
         return std::nullopt;
     }
     return full;

@@ -1,6 +1,7 @@
 // dialogs.cpp — modal popups, centred in the window.
 #include "ui/dialogs.h"
 
+#include "core/safe_text.h"
 #include "ui/widgets.h"
 
 #include <imgui.h>
@@ -32,11 +33,12 @@ bool problemDialog(const Problem& problem) {
     if (!beginModal("Error")) {
         return false;
     }
-    ImGui::TextUnformatted(problem.title.c_str());
+    // Messages quote what files contain: shown through printable() (core/safe_text.h), whole.
+    ImGui::TextUnformatted(printable(problem.title).c_str());
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 150, 140, 255));
     for (const Diagnostic& d : problem.diagnostics) {
-        ImGui::TextUnformatted(d.str().c_str());
+        ImGui::TextUnformatted(printable(d.str()).c_str());
     }
     ImGui::PopStyleColor();
     widgets().set("error", {ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowSize().x, ImGui::GetWindowSize().y});
@@ -55,7 +57,7 @@ std::optional<UnsavedAnswer> unsavedChangesDialog(const std::string& documentNam
         return std::nullopt;
     }
     std::optional<UnsavedAnswer> answer;
-    ImGui::Text("%s has unsaved changes. Discard them to %s?", documentName.c_str(), what.c_str());
+    ImGui::TextUnformatted((printable(documentName, true) + " has unsaved changes. Discard them to " + printable(what, true) + "?").c_str());
     if (answered("Save first", "confirm.save")) {
         answer = UnsavedAnswer::SaveFirst;
     }

@@ -237,9 +237,9 @@ void modelSection(Preset& p, const PanelInfo& info, PanelState& state, std::vect
         p.model.scale = scale;
     }
     mark("model.scale");
-    dragVec3("rotate (deg)", p.model.rotateDeg, 0.5f);
+    dragVec3("rotate (deg)", p.model.rotateDeg, 0.5f, limits::kRotationDeg.min, limits::kRotationDeg.max);
     mark("model.rotate");
-    dragVec3("translate", p.model.translate, 0.01f);
+    dragVec3("translate", p.model.translate, 0.01f, limits::kCoordinate.min, limits::kCoordinate.max);
     mark("model.translate");
 }
 
@@ -301,12 +301,14 @@ void lightEditor(LightDesc& l, const std::string& prefix) {
     enumCombo("type", l.type, kLightTypes, typeNames);
     mark(prefix + "type");
     if (l.type != LightType::Directional) {
-        dragVec3("position", l.position, 0.02f);
+        dragVec3("position", l.position, 0.02f, limits::kCoordinate.min, limits::kCoordinate.max);
         mark(prefix + "position");
     }
     if (l.type != LightType::Point) {
-        if (dragVec3("direction", l.direction, 0.01f) && l.direction == glm::vec3(0.0f)) {
-            l.direction = {0.0f, -1.0f, 0.0f};
+        glm::vec3 before = l.direction;
+        if (dragVec3("direction", l.direction, 0.01f, limits::kCoordinate.min, limits::kCoordinate.max) &&
+            glm::length(l.direction) < limits::kMinDirectionLength) {
+            l.direction = before; // the validator's minimum length: keep the last valid direction
         }
         mark(prefix + "direction");
         glm::vec2 angles = toAngles(l.direction);
@@ -361,14 +363,14 @@ void lightsSection(Preset& p, PanelState& state) {
 }
 
 void cameraSection(Preset& p, std::vector<Request>& requests) {
-    dragVec3("eye", p.camera.eye, 0.02f);
-    dragVec3("target", p.camera.target, 0.02f);
+    dragVec3("eye", p.camera.eye, 0.02f, limits::kCoordinate.min, limits::kCoordinate.max);
+    dragVec3("target", p.camera.target, 0.02f, limits::kCoordinate.min, limits::kCoordinate.max);
     limitedSlider("fovy (deg)", p.camera.fovyDeg, limits::kFovyDeg, "%.1f");
     commandButton(Command::ResetCamera, requests);
     disabledWrapped("Left drag: orbit  Right drag: pan  Wheel: zoom (a finger orbits, two pan and pinch)");
     // Keep the camera valid whatever was dragged.
-    if (glm::length(p.camera.eye - p.camera.target) < 1e-3f) {
-        p.camera.eye = p.camera.target + glm::vec3(0, 0, 1e-3f);
+    if (glm::length(p.camera.eye - p.camera.target) < 2.0f * limits::kMinDirectionLength) {
+        p.camera.eye = p.camera.target + glm::vec3(0, 0, 2.0f * limits::kMinDirectionLength);
     }
 }
 

@@ -88,7 +88,15 @@ void panels(const Layout& layout, ScreenModel& m, ScreenEvents& events) {
     }
     if (layout.panel.w > 0.0f) {
         beginFixed("Lighting Lab###panel", layout.panel, extra);
+        if (layout.compact) {
+            // Fields to the width less a label's and a help marker's room (ImGui's default, 65% of
+            // the window, leaves a phone's labels too little).
+            ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.0f);
+        }
         controlPanel(*m.edited, *m.view, m.panelInfo, *m.panel, events.requests, partOf(layout));
+        if (layout.compact) {
+            ImGui::PopItemWidth();
+        }
         dragToScroll();
         ImGui::End();
         widgets().set("panel", layout.panel);

@@ -4,10 +4,13 @@
 #include "core/camera.h"
 #include "core/enums.h"
 #include "core/lighting.h"
+#include "core/limits.h"
+#include "core/safe_text.h"
 #include "ui/widgets.h"
 
 #include <imgui.h>
 
+#include <glm/common.hpp>
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
@@ -53,7 +56,8 @@ void dragLight(Preset& scene, int index, ImVec2 delta, const Rect& r) {
     glm::vec3 up = glm::cross(right, forward);
     float depth = glm::dot(l.position - camera.eye, forward);
     float perPixel = 2.0f * std::max(depth, 0.01f) * std::tan(glm::radians(camera.fovyDeg) / 2.0f) / r.h;
-    l.position += (delta.x * right - delta.y * up) * perPixel;
+    l.position = glm::clamp(l.position + (delta.x * right - delta.y * up) * perPixel, glm::vec3(limits::kCoordinate.min),
+                            glm::vec3(limits::kCoordinate.max));
 }
 
 void startGesture(const Preset& scene, const Rect& active, ViewControls& s) {
@@ -269,15 +273,16 @@ float caption(const Preset& p, ImVec2 at, float width, ImDrawList* dl) {
     ImFont* font = ImGui::GetFont();
     float size = ImGui::GetFontSize(), big = size * 1.35f, pad = 0.5f * size;
     width -= 2 * pad; // the text's own width inside the band
-    ImVec2 title = font->CalcTextSizeA(big, width, width, p.name.c_str());
-    ImVec2 text = p.description.empty() ? ImVec2(0, 0) : font->CalcTextSizeA(size, width, width, p.description.c_str());
-    float height = title.y + (p.description.empty() ? 0.0f : text.y + 0.3f * size) + 2 * pad;
+    const std::string name = printable(p.name, true), description = printable(p.description); // from the file
+    ImVec2 title = font->CalcTextSizeA(big, width, width, name.c_str());
+    ImVec2 text = description.empty() ? ImVec2(0, 0) : font->CalcTextSizeA(size, width, width, description.c_str());
+    float height = title.y + (description.empty() ? 0.0f : text.y + 0.3f * size) + 2 * pad;
     float w = std::max(title.x, text.x) + 2 * pad;
     dl->AddRectFilled(at, ImVec2(at.x + w, at.y + height), IM_COL32(0, 0, 0, 170), 4.0f);
-    dl->AddText(font, big, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 255), p.name.c_str(), nullptr, width);
-    if (!p.description.empty()) {
+    dl->AddText(font, big, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 255), name.c_str(), nullptr, width);
+    if (!description.empty()) {
         dl->AddText(font, size, ImVec2(at.x + pad, at.y + pad + title.y + 0.3f * size), IM_COL32(225, 225, 225, 255),
-                    p.description.c_str(), nullptr, width);
+                    description.c_str(), nullptr, width);
     }
     widgets().set("view.caption", {at.x, at.y, w, height});
     return height;

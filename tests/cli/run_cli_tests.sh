@@ -53,7 +53,7 @@ check nothing-written test ! -e "$tmp/x.png"
 # --- bad presets: every problem, with file and JSON path --------------------------------
 expect broken-preset 2 'broken\.json: material\.difuse: unknown key \(did you mean "diffuse"\?\)' -- \
     "$lab" render "$src/tests/data/broken.json" --out "$tmp/x.png"
-expect broken-preset-all-problems 2 'material\.shininess: must be greater than 0.*' -- \
+expect broken-preset-all-problems 2 'material\.shininess: must be in \[0\.001, 1000000\].*' -- \
     "$lab" render "$src/tests/data/broken.json" --out "$tmp/x.png"
 out=$("$lab" render "$src/tests/data/broken.json" --out "$tmp/x.png" 2>&1)
 check broken-preset-three-lines test "$(grep -c 'broken\.json' <<<"$out")" -eq 3

@@ -430,7 +430,7 @@ test('touch: a tap on a tab or a checkbox works, a tap on the model opens the pr
   await context.close();
 });
 
-test('touch: one finger orbits, two fingers pinch to zoom, and a drag there and back is the golden again', async () => {
+test('touch: one finger orbits, two fingers pinch to zoom and pan, and a drag there and back is the golden again', async () => {
   // A tablet in landscape, panels hidden, so the view is the desktop golden's 1024x640.
   const { page, context } = await openLab('', { width: 1024, height: 640, touch: true });
   await hidePanels(page);
@@ -447,6 +447,9 @@ test('touch: one finger orbits, two fingers pinch to zoom, and a drag there and 
   await touch.drag([[[462, 320], [362, 320]], [[562, 320], [662, 320]]]);
   const zoomed = await viewShot(page);
   assert.ok(lit(zoomed) > lit(start) * 1.3, `a pinch out zooms in (${lit(start)} -> ${lit(zoomed)} lit pixels)`);
+  // Two fingers moving together pan (that they do not zoom is tests/touch_test.cpp's).
+  await touch.drag([[[462, 320], [462, 420]], [[562, 320], [562, 420]]]);
+  assert.ok(changedShare(zoomed, await viewShot(page)) > 0.02, 'a two-finger drag pans the view');
   await context.close();
 });
 
