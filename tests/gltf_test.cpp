@@ -576,6 +576,64 @@ TEST(Gltf, LimitsAreCheckedBeforeAllocating) {
     EXPECT_NE(d[0].message.find("more than 1 triangles"), std::string::npos) << d[0].str();
 }
 
+// Issue 14: many nodes or primitives took time growing with their square (200,000 nodes: 37 s).
+// Each array is counted before tinygltf builds anything, and refused naming the array and the limit.
+TEST(Gltf, ObjectCountsAreLimitedBeforeTinygltfParses) {
+    struct Case {
+        std::function<void(GltfLimits&)> limit;
+        std::function<void(Json&)> grow;
+        const char* where;
+        const char* message;
+    };
+    const Case cases[] = {
+        {[](GltfLimits& l) { l.maxNodes = 3; }, [](Json& g) { g["nodes"] = Json::array({g["nodes"][0], Json::object(), Json::object(), Json::object()}); },
+         "nodes", "4 objects; the lab reads at most 3"},
+        {[](GltfLimits& l) { l.maxMeshes = 1; }, [](Json& g) { g["meshes"].push_back(g["meshes"][0]); },
+         "meshes", "2 objects; the lab reads at most 1"},
+        {[](GltfLimits& l) { l.maxPrimitives = 2; },
+         [](Json& g) { g["meshes"][0]["primitives"] = Json::array({g["meshes"][0]["primitives"][0], g["meshes"][0]["primitives"][0], g["meshes"][0]["primitives"][0]}); },
+         "meshes", "3 primitives in all; the lab reads at most 2"},
+        {[](GltfLimits& l) { l.maxAccessors = 1; }, [](Json&) {}, "accessors", "2 objects; the lab reads at most 1"},
+        {[](GltfLimits& l) { l.maxOtherObjects = 1; }, [](Json&) {}, "bufferViews", "2 objects; the lab reads at most 1"},
+    };
+    for (const Case& c : cases) {
+        TempFolder dir;
+        Fixture f;
+        c.grow(f.gltf);
+        GltfLimits limits;
+        c.limit(limits);
+        Diagnostics d;
+        EXPECT_FALSE(f.load(dir.path(), d, limits)) << c.where;
+        ASSERT_EQ(d.size(), 1u) << toString(d);
+        EXPECT_EQ(d[0].where, c.where);
+        EXPECT_EQ(d[0].message, c.message);
+        d.clear();
+        EXPECT_TRUE(f.load(dir.path(), d)) << "within the default limits: " << toString(d);
+    }
+}
+
+// Issue 14: what a file holds reaches messages escaped and bounded; a NUL in a URI is refused
+// ("a\u0000.gltf" passed the extension check and opened "a").
+TEST(Gltf, UrisWithANulOrControlsAreRefusedAndQuotedSafely) {
+    TempFolder dir;
+    Fixture f;
+    f.gltf["buffers"][0]["uri"] = std::string("quad\0.bin", 9);
+    f.gltf["buffers"][0]["uri"] = std::string("quad") + std::string(1, '\0') + ".bin";
+    Diagnostics d;
+    EXPECT_FALSE(f.load(dir.path(), d));
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0].message, "\"quad\\0.bin\" holds a NUL byte");
+    Fixture escape;
+    escape.gltf["buffers"][0]["uri"] = "/\x1b]0;pwned\x07" + std::string(5000, 'x');
+    d.clear();
+    EXPECT_FALSE(escape.load(dir.path(), d));
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0].message.find('\x1b'), std::string::npos) << "no raw escape";
+    EXPECT_NE(d[0].message.find("\\x1B]0;pwned\\x07"), std::string::npos) << d[0].message;
+    EXPECT_LT(d[0].message.size(), 300u) << "a long value is cut, with its size";
+    EXPECT_NE(d[0].message.find("5011 bytes"), std::string::npos) << d[0].message;
+}
+
 TEST(Gltf, VertexAndFileSizeLimitsAreCheckedBeforeReading) {
     TempFolder dir;
     Fixture f;

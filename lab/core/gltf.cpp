@@ -27,6 +27,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -351,7 +352,8 @@ private:
         if (base == 0 && out.indices.empty()) {
             out.indices = std::move(triangles);
         } else {
-            out.indices.reserve(out.indices.size() + triangles.size());
+            // No reserve(size + n) here: an exact reserve per primitive defeats the vector's doubling
+            // and copied every index again for each of 100,000 nodes (issue 14's quadratic time).
             for (std::uint32_t i : triangles) {
                 out.indices.push_back(base + i);
             }
@@ -412,18 +414,51 @@ bool checkUris(const nlohmann::json& doc, const std::string& file, Diagnostics& 
     return ok;
 }
 
+// How many objects the file declares, against `limits`: each top-level array, and the meshes'
+// primitives together. False after a diagnostic naming the array and the limit.
+bool checkCounts(const nlohmann::json& doc, const GltfLimits& limits, const std::string& displayName,
+                 Diagnostics& diagnostics) {
+    std::size_t primitives = 0;
+    for (const auto& [key, value] : doc.items()) {
+        if (!value.is_array()) {
+            continue;
+        }
+        std::size_t limit = key == "nodes" ? limits.maxNodes : key == "meshes" ? limits.maxMeshes
+                          : key == "accessors" ? limits.maxAccessors : limits.maxOtherObjects;
+        if (value.size() > limit) {
+            const bool plain = key.size() <= 40 && std::all_of(key.begin(), key.end(), [](unsigned char c) { return std::isalnum(c); });
+            diagnostics.push_back({displayName, plain ? key : inQuotes(key, 40),
+                                   std::to_string(value.size()) + " objects; the lab reads at most " + std::to_string(limit)});
+            return false;
+        }
+        if (key != "meshes") {
+            continue;
+        }
+        for (const nlohmann::json& mesh : value) {
+            auto list = mesh.is_object() ? mesh.find("primitives") : mesh.end();
+            primitives += list != mesh.end() && list->is_array() ? list->size() : 0;
+        }
+        if (primitives > limits.maxPrimitives) {
+            diagnostics.push_back({displayName, "meshes", std::to_string(primitives) + " primitives in all; the lab reads at most " +
+                                                              std::to_string(limits.maxPrimitives)});
+            return false;
+        }
+    }
+    return true;
+}
+
 // The JSON of a .gltf, or of a .glb's JSON chunk, checked before any parser recurses into it:
 // nested no deeper than `maxDepth`, and every buffer or image URI inside the model's folder.
 // `doc` gets the parsed JSON when it is an object (malformed JSON is left for tinygltf to
 // report in its own words: `doc` is then not an object).
-bool checkJson(std::string_view json, int maxDepth, const std::string& displayName, Diagnostics& diagnostics,
+bool checkJson(std::string_view json, const GltfLimits& limits, const std::string& displayName, Diagnostics& diagnostics,
                nlohmann::json& doc) {
-    if (!jsonNestingWithin(json, maxDepth)) {
-        diagnostics.push_back({displayName, "", "JSON nested deeper than " + std::to_string(maxDepth) + " levels"});
+    if (!jsonNestingWithin(json, limits.maxJsonDepth)) {
+        diagnostics.push_back({displayName, "", "JSON nested deeper than " + std::to_string(limits.maxJsonDepth) + " levels"});
         return false;
     }
     doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
-    return !doc.is_object() || checkUris(doc, displayName, diagnostics);
+    return !doc.is_object() || (checkCounts(doc, limits, displayName, diagnostics) && checkUris(doc, displayName, diagnostics));
 }
 
 // What tinygltf parsed, and where a GLB's buffers stored in its BIN chunk are.
@@ -473,7 +508,7 @@ std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, 
         json = chunks->json;
         parsed.bin = chunks->bin;
     }
-    if (!checkJson(json, limits.maxJsonDepth, displayName, diagnostics, doc)) {
+    if (!checkJson(json, limits, displayName, diagnostics, doc)) {
         return std::nullopt;
     }
     if (isGlb && doc.is_object()) { // (malformed JSON goes to tinygltf as it is, to be refused in its words)

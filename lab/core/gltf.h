@@ -26,6 +26,13 @@ struct GltfLimits {
     std::size_t maxVertices = 20'000'000;
     int maxNodeDepth = 64;
     int maxJsonDepth = 128; // JSON nesting, bounded before tinygltf's recursive parse sees the text
+    // How many of each object a file may declare, counted before tinygltf builds them: far above
+    // any real model, low enough that every loader step stays fast (issue 14: 200,000 nodes took 37 s).
+    std::size_t maxNodes = 200'000;
+    std::size_t maxMeshes = 100'000;
+    std::size_t maxPrimitives = 200'000; // all meshes' together
+    std::size_t maxAccessors = 1'000'000;
+    std::size_t maxOtherObjects = 100'000; // bufferViews, buffers, materials, images, ..., each
 };
 
 struct GltfResult {
