@@ -16,6 +16,11 @@ namespace lab {
 
 namespace {
 
+// An empty path is no path: `--out ""` is refused naming the option, not later as "cannot replace :".
+const CLI::Validator kNotEmpty(
+    [](std::string& text) { return text.empty() ? std::string("must not be empty") : std::string(); }, "PATH");
+
+
 // CLI11 validator for --size, so a bad size is reported like every other bad flag.
 struct SizeValidator : CLI::Validator {
     SizeValidator() {
@@ -38,10 +43,11 @@ struct CheckArguments {
 CLI::App* addCheckCommand(CLI::App& app, CommandLine& line, CheckArguments& a) {
     CLI::App* check = app.add_subcommand("check", "Render presets and compare them with golden images");
     check->add_option("presets", a.presets, "Preset files")->required();
-    check->add_option("--golden", a.golden, "Folder of golden PNGs, <preset name>.png")->required();
+    check->add_option("--golden", a.golden, "Folder of golden PNGs, <preset name>.png")->required()->check(kNotEmpty);
     check->add_flag("--update", line.check.update, "Write goldens from the renders instead of comparing");
     check->add_option("--report", a.report, "Folder for report.txt and the actual and diff images of failures")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(kNotEmpty);
     check->add_option("--size", a.size, "Render size")->check(SizeValidator())->capture_default_str();
     check->add_option("--pixel-tolerance", line.check.tolerance.pixelTolerance, "A pixel fails above this channel difference")
         ->check(CLI::Range(0, 255))->capture_default_str();
@@ -78,13 +84,13 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     std::string renderOut, renderSize = "512x512";
     CLI::App* render = app.add_subcommand("render", "Render presets headless to PNG (no display or GPU needed)");
     render->add_option("presets", renderPresets, "Preset files")->required();
-    render->add_option("--out", renderOut, "The PNG file; a folder when there are several presets")->required();
+    render->add_option("--out", renderOut, "The PNG file; a folder when there are several presets")->required()->check(kNotEmpty);
     render->add_option("--size", renderSize, "Image size")->check(SizeValidator())->capture_default_str();
 
     std::string plotPreset, plotOut;
     CLI::App* plot = app.add_subcommand("plot", "Write the polar-plot data (reflected intensity) as CSV");
     plot->add_option("preset", plotPreset, "Preset file")->required();
-    plot->add_option("--out", plotOut, "CSV file to write")->required();
+    plot->add_option("--out", plotOut, "CSV file to write")->required()->check(kNotEmpty);
     plot->add_option("--incident-deg", line.incidentDeg, "Incident angle in degrees (default: the preset's plot.incident_deg)")
         ->check(CLI::Range(limits::kPlotIncidentDeg.min, limits::kPlotIncidentDeg.max));
 

@@ -293,7 +293,19 @@ int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) 
         return kExitBadInput;
     }
     std::error_code ec;
-    fs::create_directories(options.update ? options.golden : options.report, ec);
+    // Every folder check writes to must be one (a file in its place would fail each write later,
+    // as a check failure instead of the bad argument it is).
+    for (const auto& [flag, folder] : {std::pair{"--golden", &options.golden}, std::pair{"--report", &options.report}}) {
+        if (flag == std::string_view("--golden") && !options.update) {
+            continue;
+        }
+        fs::create_directories(*folder, ec);
+        if (!fs::is_directory(*folder)) {
+            print(stderr, "lab check: " + std::string(flag) + " " + folder->string() + ": cannot be used as a folder (" +
+                              (ec ? ec.message() : "it is a file") + ")\n");
+            return kExitBadInput;
+        }
+    }
     bool anyBad = false;
     auto loaded = loadAll(presets, anyBad);
     Gpu gpu;

@@ -50,6 +50,30 @@ expect missing-preset 2 'no such file' -- "$lab" render "$tmp/none.json" --out "
 expect preset-is-folder 2 'folder' -- "$lab" render "$tmp" --out "$tmp/x.png"
 check nothing-written test ! -e "$tmp/x.png"
 
+# --- hostile names and values reach the terminal escaped (issue 14) ------------------------
+esc=$'\e'
+expect empty-out 2 '^--out: must not be empty' -- "$lab" render "$phong" --out ""
+out=$("$lab" render "$tmp/${esc}]0;pwned"$'\a'".json" --out "$tmp/x.png" 2>&1)
+check escaped-file-name grep -qF '\x1B]0;pwned\x07.json: no such file' <<<"$out"
+check no-raw-escape-in-file-name test "$(printf '%s' "$out" | tr -d -c '\033\007' | wc -c)" -eq 0
+out=$("$lab" "--bogus${esc}[2J" 2>&1)
+check escaped-unknown-flag grep -qF -- '--bogus\x1B[2J' <<<"$out"
+printf '{"format": "lighting-lab-preset", "version": 1, "material": {"shininess": 32, "\\u001b[31mred\\u0000": 1}}' >"$tmp/hostile.json"
+out=$("$lab" render "$tmp/hostile.json" --out "$tmp/h.png" 2>&1)
+rc=$?
+check hostile-key-refused test $rc -eq 2
+check hostile-key-escaped grep -qF 'material."\x1B[31mred\0": unknown key (it holds a NUL byte)' <<<"$out"
+check hostile-key-no-raw-bytes test "$(printf '%s' "$out" | tr -d -c '\000\033' | wc -c)" -eq 0
+printf '{"format": "lighting-lab-preset", "version": 1, "name": "caf\xe9"}' >"$tmp/latin1.json"
+out=$("$lab" render "$tmp/latin1.json" --out "$tmp/h.png" 2>&1)
+check invalid-utf8-escaped grep -qF 'invalid JSON: '"'"'"caf\xE9"'"'" <<<"$out"
+check invalid-utf8-no-raw-byte test "$(printf '%s' "$out" | tr -d -c '\351' | wc -c)" -eq 0
+touch "$tmp/a-file"
+expect check-update-golden-is-a-file 2 '^lab check: --golden .*a-file: cannot be used as a folder' -- \
+    "$lab" check "$phong" --golden "$tmp/a-file" --update
+expect check-report-is-a-file 2 '^lab check: --report .*a-file: cannot be used as a folder' -- \
+    "$lab" check "$phong" --golden "$src/tests/golden" --report "$tmp/a-file"
+
 # --- bad presets: every problem, with file and JSON path --------------------------------
 expect broken-preset 2 'broken\.json: material\.difuse: unknown key \(did you mean "diffuse"\?\)' -- \
     "$lab" render "$src/tests/data/broken.json" --out "$tmp/x.png"
