@@ -12,6 +12,7 @@
 
 #include "core/file_io.h"
 #include "core/gltf_accessors.h"
+#include "core/gltf_data_uri.h"
 #include "core/gltf_glb.h"
 #include "core/json_text.h"
 #include "core/paths.h"
@@ -344,9 +345,14 @@ private:
             }
         } else {
             // Computed after the node transform, so the area weights are those of the model as drawn.
-            std::vector<glm::vec3> own(out.positions.begin() + base, out.positions.end());
-            std::vector<glm::vec3> computed = computeVertexNormals(own, triangles);
-            out.normals.insert(out.normals.end(), computed.begin(), computed.end());
+            // (A view of its own vertices, not a copy: a large model's peak memory counts, issue 14.)
+            std::vector<glm::vec3> computed =
+                computeVertexNormals(std::span<const glm::vec3>(out.positions).subspan(base), triangles);
+            if (out.normals.empty()) {
+                out.normals = std::move(computed);
+            } else {
+                out.normals.insert(out.normals.end(), computed.begin(), computed.end());
+            }
             ++computedNormals_;
         }
         if (base == 0 && out.indices.empty()) {
@@ -466,13 +472,17 @@ struct ParsedModel {
     tinygltf::Model model;
     std::optional<std::string_view> bin;           // the GLB's BIN chunk, in the mapped file
     std::vector<std::optional<std::size_t>> inBin; // per buffer: its byteLength when stored in `bin`
+    gltf_detail::DataUriBuffers dataUris;           // buffers decoded from base64 data: URIs (gltf_data_uri.h)
+    std::vector<std::optional<std::size_t>> inDataUri; // per buffer: its byteLength when decoded there
 };
 
 // The bytes of each buffer: from the BIN chunk in place, or tinygltf's copy.
 std::vector<BufferBytes> bufferBytes(const ParsedModel& parsed) {
     std::vector<BufferBytes> out;
     for (std::size_t i = 0; i < parsed.model.buffers.size(); ++i) {
-        if (i < parsed.inBin.size() && parsed.inBin[i] && parsed.bin) {
+        if (i < parsed.inDataUri.size() && parsed.inDataUri[i]) {
+            out.push_back({parsed.dataUris.bytes[i].data(), *parsed.inDataUri[i]});
+        } else if (i < parsed.inBin.size() && parsed.inBin[i] && parsed.bin) {
             out.push_back({reinterpret_cast<const unsigned char*>(parsed.bin->data()), *parsed.inBin[i]});
         } else {
             const std::vector<unsigned char>& data = parsed.model.buffers[i].data;
@@ -480,6 +490,37 @@ std::vector<BufferBytes> bufferBytes(const ParsedModel& parsed) {
         }
     }
     return out;
+}
+
+// The buffers decoded from data: URIs: each must hold its byteLength (a longer one is read up
+// to it, as a .bin file is); its JSON then says 1 byte, as the placeholder holds. False after a
+// diagnostic.
+bool useDecodedBuffers(nlohmann::json& doc, ParsedModel& parsed, const std::string& displayName, Diagnostics& diagnostics) {
+    auto buffers = doc.find("buffers");
+    if (buffers == doc.end() || !buffers->is_array()) {
+        return true;
+    }
+    parsed.inDataUri.resize(buffers->size());
+    for (std::size_t i = 0; i < buffers->size() && i < parsed.dataUris.decoded.size(); ++i) {
+        nlohmann::json& buffer = (*buffers)[i];
+        if (!parsed.dataUris.decoded[i] || !buffer.is_object()) {
+            continue;
+        }
+        auto length = buffer.find("byteLength");
+        if (length == buffer.end() || !length->is_number_unsigned()) {
+            continue; // tinygltf refuses it in its own words
+        }
+        const auto byteLength = length->get<std::uint64_t>();
+        const std::size_t held = parsed.dataUris.bytes[i].size();
+        if (byteLength > held) {
+            diagnostics.push_back({displayName, "buffers[" + std::to_string(i) + "].byteLength",
+                                   std::to_string(byteLength) + " bytes, more than its data: URI holds (" + std::to_string(held) + ")"});
+            return false;
+        }
+        parsed.inDataUri[i] = static_cast<std::size_t>(byteLength);
+        buffer["byteLength"] = 1;
+    }
+    return true;
 }
 
 // The file parsed by tinygltf behind the guards: the GLB's chunks and the JSON checked first,
@@ -508,8 +549,27 @@ std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, 
         json = chunks->json;
         parsed.bin = chunks->bin;
     }
+    // Buffers as base64 data: URIs, decoded straight from the file's bytes before any parser
+    // copies them (gltf_data_uri.h).
+    bool badDataUri = false;
+    std::optional<gltf_detail::DataUriBuffers> dataUris =
+        gltf_detail::decodeDataUriBuffers(json, displayName, diagnostics, badDataUri);
+    if (badDataUri) {
+        return std::nullopt;
+    }
+    if (dataUris) {
+        parsed.dataUris = std::move(*dataUris);
+        json = parsed.dataUris.json;
+    }
     if (!checkJson(json, limits, displayName, diagnostics, doc)) {
         return std::nullopt;
+    }
+    if (dataUris && doc.is_object() && !useDecodedBuffers(doc, parsed, displayName, diagnostics)) {
+        return std::nullopt;
+    }
+    if (dataUris && doc.is_object() && !isGlb) {
+        rewritten = doc.dump();
+        json = rewritten;
     }
     if (isGlb && doc.is_object()) { // (malformed JSON goes to tinygltf as it is, to be refused in its words)
         std::optional<gltf_detail::GlbBuffers> inPlace =
@@ -565,10 +625,13 @@ std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& disp
     }
     FileGuard guard{canonicalFolder(file.parent_path()), limits.maxFileBytes, {}};
     int skippedImages = 0;
-    // The mapping stays open until the mesh is built: a GLB's buffers are read from it in place.
+    // The mapping stays open until the mesh is built when a GLB's buffers are read from it in place.
     std::optional<ParsedModel> parsed = parseModel(mapped->bytes(), guard, skippedImages, limits, displayName, diagnostics);
     if (!parsed) {
         return std::nullopt;
+    }
+    if (!parsed->bin) {
+        mapped.reset(); // the text is parsed and any data: URI decoded: only a GLB's BIN chunk is read from the file later
     }
     const tinygltf::Model& model = parsed->model;
     std::optional<std::vector<int>> roots = sceneRoots(model, displayName, diagnostics);

@@ -127,8 +127,7 @@ std::vector<FlatVertex> expandFlat(const Mesh& mesh) {
     return out;
 }
 
-std::vector<glm::vec3> computeVertexNormals(const std::vector<glm::vec3>& positions,
-                                            const std::vector<std::uint32_t>& indices) {
+std::vector<glm::vec3> computeVertexNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices) {
     // In double: the cross product of any two float-range edges fits, where float would overflow
     // to infinity for models of very large coordinates (found by fuzz_gltf).
     std::vector<glm::dvec3> sum(positions.size(), glm::dvec3(0.0));

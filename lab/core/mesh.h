@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace lab {
@@ -42,7 +43,6 @@ std::vector<FlatVertex> expandFlat(const Mesh& mesh);
 // Area-weighted average of the adjacent face normals (the cross product's length is twice the
 // area, so summing unnormalized cross products weights by area). Vertices on no triangle, or on
 // only degenerate ones, get +z.
-std::vector<glm::vec3> computeVertexNormals(const std::vector<glm::vec3>& positions,
-                                            const std::vector<std::uint32_t>& indices);
+std::vector<glm::vec3> computeVertexNormals(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices);
 
 } // namespace lab
