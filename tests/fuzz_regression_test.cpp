@@ -32,6 +32,7 @@ TEST(FuzzRegression, PresetInputs) {
     ASSERT_GT(files.size(), 20u);
     for (const fs::path& f : files) {
         EXPECT_EQ(fuzz::checkPreset(readText(f)), "") << f;
+        EXPECT_EQ(fuzz::checkPresetRenders(readText(f)), "") << f;
     }
 }
 
@@ -69,6 +70,10 @@ TEST(FuzzRegression, CommandLineInputs) {
         testing::internal::GetCapturedStderr();
         EXPECT_EQ(problem, "") << f;
     }
+    // The seeds' render, plot and check were run, not only parsed.
+    EXPECT_TRUE(fs::exists(fuzz::commandScratch() / "x.png"));
+    EXPECT_TRUE(fs::exists(fuzz::commandScratch() / "p.csv"));
+    EXPECT_TRUE(fs::exists(fuzz::commandScratch() / "golden" / "a.png"));
 }
 
 } // namespace

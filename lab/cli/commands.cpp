@@ -296,8 +296,8 @@ int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) 
     // Every folder check writes to must be one (a file in its place would fail each write later,
     // as a check failure instead of the bad argument it is).
     for (const auto& [flag, folder] : {std::pair{"--golden", &options.golden}, std::pair{"--report", &options.report}}) {
-        if (flag == std::string_view("--golden") && !options.update) {
-            continue;
+        if (options.update != (flag == std::string_view("--golden"))) {
+            continue; // --update writes goldens only; a comparison writes the report only
         }
         fs::create_directories(*folder, ec);
         if (!fs::is_directory(*folder)) {

@@ -8,13 +8,24 @@
 #pragma once
 
 #include "cli/command_line.h"
-#include "core/gltf.h"
-#include "core/preset.h"
-#include "render/offscreen.h" // kMaxRenderSide
+#include "cli/commands.h"
 #include "core/file_io.h"
+#include "core/gltf.h"
+#include "core/lighting.h"
+#include "core/plot.h"
+#include "core/preset.h"
+#include "core/safe_text.h"
+#include "platform/headless_gl.h"
+#include "render/offscreen.h" // kMaxRenderSide
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,6 +64,56 @@ inline std::string checkPreset(std::string_view text) {
         return "saving twice gives different bytes";
     }
     return "";
+}
+
+// The headless GL context and renderer, made once per process; nullptr where there is no GL
+// (the rendering checks are then skipped).
+inline OffscreenRenderer* sharedRenderer() {
+    static HeadlessGl gl;
+    static OffscreenRenderer renderer;
+    static int state = 0; // 0 not tried, 1 ready, -1 failed
+    if (state == 0) {
+        std::string error;
+        Diagnostics d;
+        state = gl.create(error) && renderer.init(d) ? 1 : -1;
+    }
+    return state == 1 ? &renderer : nullptr;
+}
+
+// A preset that validates keeps the lighting model finite (core/limits.h): its colour at a few
+// points and normals, and `lab plot`'s samples, are finite numbers; and it renders (at 8 x 8).
+inline std::string checkPresetRenders(std::string_view text) {
+    Diagnostics d;
+    std::optional<Preset> preset = parsePreset(text, "fuzz.json", std::nullopt, d);
+    if (!preset) {
+        return "";
+    }
+    const Transforms t = computeTransforms(*preset, 1.0f);
+    const ShadingInputs in = packShading(*preset, t.view);
+    for (const glm::vec3& p : {glm::vec3(0.0f, 0.0f, -3.0f), glm::vec3(0.5f, -0.4f, -1.0f), glm::vec3(t.modelView[3])}) {
+        for (const glm::vec3& n : {glm::vec3(0, 0, 1), glm::normalize(glm::vec3(1, 1, 1)), glm::vec3(0, 1, 0)}) {
+            glm::vec3 c = shade(in, p, n);
+            if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
+                return "a preset that validates shades to a non-finite colour";
+            }
+        }
+    }
+    for (float incident : {-90.0f, 0.0f, 45.0f, 90.0f}) {
+        for (const PlotSample& s : reflectedIntensity(*preset, incident)) {
+            if (!std::isfinite(s.total) || !std::isfinite(s.diffuse) || !std::isfinite(s.specular)) {
+                return "a preset that validates has a non-finite plot sample";
+            }
+        }
+    }
+    OffscreenRenderer* renderer = sharedRenderer();
+    if (!renderer) {
+        return "";
+    }
+    std::optional<Image> image = renderer->render(LoadedPreset{*preset, {}}, 8, 8, d);
+    if (!image) {
+        return d.empty() ? "a valid preset did not render, without a diagnostic" : "";
+    }
+    return image->width == 8 && image->height == 8 ? "" : "a render of the wrong size";
 }
 
 // A .gltf or .glb (decided by its first bytes), as a real file in `folder`.
@@ -96,7 +157,104 @@ inline std::string checkGltf(std::string_view bytes, const std::filesystem::path
     return "";
 }
 
-// Command-line arguments, one per line (at most 64): parsed, never run.
+// Where the command-line check runs commands: a scratch folder with a valid preset (a.json), a
+// broken one (b.json), a golden for a.json (golden/a.png) and a file where a folder is wanted.
+inline const std::filesystem::path& commandScratch() {
+    // Removed when the process ends.
+    struct Scratch {
+        std::filesystem::path path;
+        ~Scratch() {
+            std::error_code ec;
+            std::filesystem::remove_all(path, ec);
+        }
+    };
+    static const Scratch scratch{[] {
+        std::filesystem::path f = std::filesystem::temp_directory_path() / ("lab-fuzz-cli-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(f / "golden");
+        std::string error;
+        writeFileAtomic(f / "a.json", R"({"format": "lighting-lab-preset", "version": 1, "name": "a"})", error);
+        writeFileAtomic(f / "b.json", "{\"format\": \"lighting-lab-preset\", \"version\": 1, \"\x1b[2J\": 1}", error);
+        writeFileAtomic(f / "file", "not a folder", error);
+        return f;
+    }()};
+    return scratch.path;
+}
+
+// A path the fuzzed command may use: relative, inside the scratch folder (no "..", no root).
+inline std::optional<std::filesystem::path> inScratch(const std::filesystem::path& p) {
+    if (p.empty() || p.is_absolute() || p.has_root_name()) {
+        return std::nullopt;
+    }
+    for (const auto& part : p) {
+        if (part == "..") {
+            return std::nullopt;
+        }
+    }
+    return commandScratch() / p;
+}
+
+// Runs a parsed render, plot or check with its paths moved into the scratch folder and its
+// sizes at most 16 x 16, its output captured: the exit status is 0, 1 or 2, and what it printed
+// is terminal-safe (printable() of it is itself). Commands that name a path outside are not run.
+inline std::string runParsedCommand(CommandLine line) {
+    std::vector<std::filesystem::path*> paths{&line.out, &line.check.golden, &line.check.report};
+    for (std::filesystem::path& p : line.presets) {
+        paths.push_back(&p);
+    }
+    for (std::filesystem::path* p : paths) {
+        if (p->empty()) {
+            continue; // not used by this command (an empty --out is refused by the parser)
+        }
+        std::optional<std::filesystem::path> moved = inScratch(*p);
+        if (!moved) {
+            return "";
+        }
+        *p = *moved;
+    }
+    for (Size* s : {&line.size, &line.check.size}) {
+        s->width = std::min(s->width, 16);
+        s->height = std::min(s->height, 16);
+    }
+    const std::filesystem::path captured = commandScratch() / ".output";
+    std::fflush(stdout);
+    std::fflush(stderr);
+    int file = ::open(captured.c_str(), O_RDWR | O_CREAT | O_TRUNC, 0600);
+    if (file < 0) {
+        return "";
+    }
+    int savedOut = ::dup(1), savedErr = ::dup(2);
+    ::dup2(file, 1);
+    ::dup2(file, 2);
+    int status = kExitOk;
+    switch (line.command) {
+    case CommandLine::Command::Render: status = runRender(line.presets, line.out, line.size); break;
+    case CommandLine::Command::Plot: status = runPlot(line.presets.front(), line.out, line.incidentDeg); break;
+    case CommandLine::Command::Check: status = runCheck(line.presets, line.check); break;
+    case CommandLine::Command::Lab: break;
+    }
+    std::fflush(stdout);
+    std::fflush(stderr);
+    for (auto [saved, fd] : {std::pair{savedOut, 1}, std::pair{savedErr, 2}}) {
+        if (saved >= 0) {
+            ::dup2(saved, fd);
+            ::close(saved);
+        }
+    }
+    ::close(file);
+    std::ifstream in(captured, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (status != kExitOk && status != kExitFailure && status != kExitBadInput) {
+        return "an exit status other than 0, 1 or 2";
+    }
+    if (printable(text.str()) != text.str()) {
+        return "output that is not terminal-safe: " + printable(text.str());
+    }
+    return "";
+}
+
+// Command-line arguments, one per line (at most 64): parsed, and render, plot and check run on
+// the scratch folder's files (runParsedCommand).
 inline std::string checkCommandLine(std::string_view text) {
     std::vector<std::string> args{"lab"};
     std::size_t start = 0;
@@ -128,7 +286,7 @@ inline std::string checkCommandLine(std::string_view text) {
     if (line.incidentDeg && !(*line.incidentDeg >= -90.0f && *line.incidentDeg <= 90.0f)) {
         return "an incident angle outside [-90, 90] was accepted";
     }
-    return "";
+    return line.command == CommandLine::Command::Lab ? "" : runParsedCommand(line);
 }
 
 } // namespace lab::fuzz

@@ -1,4 +1,5 @@
-// fuzz_cli.cpp — libFuzzer target for the command-line argument parser.
+// fuzz_cli.cpp — libFuzzer target for the command line: the argument parser, then render, plot and
+// check run on a scratch folder's files (fuzz_checks.h, runParsedCommand).
 // The checks are in fuzz_checks.h; tools/dev fuzz runs this target (see README "Hardening").
 #include "fuzz_checks.h"
 
