@@ -7,14 +7,13 @@
 // On the GPU, the same corners rendered as probes and compared with the CPU, clamped as the
 // screen clamps: a NaN or an infinity on either side shows as a probe that disagrees.
 #include "gl_suite.h"
+#include "probes.h"
 
 #include "core/lighting.h"
 #include "core/limits.h"
 #include "core/plot.h"
 
 #include <gtest/gtest.h>
-
-#include <glm/gtc/matrix_inverse.hpp>
 
 #include <cmath>
 #include <functional>
@@ -223,38 +222,18 @@ TEST_F(GpuCorners, TheShadersAgreeWithTheCpu) {
                 Preset preset = basePreset(v);
                 corner.apply(preset);
                 preset.shading = shading;
-                const Transforms t = computeTransforms(preset, 1.0f);
-                const ShadingInputs inputs = packShading(preset, t.view);
-                const glm::mat4 toObject = glm::inverse(t.modelView);
-                const glm::mat3 normalToObject = glm::inverse(t.normalMatrix);
-                const float tanHalf = std::tan(glm::radians(preset.camera.fovyDeg) / 2.0f);
                 const float zNear = preset.camera.near, zFar = preset.camera.far;
                 std::mt19937 random(7);
-                std::uniform_real_distribution<float> depth(0.0f, 1.0f), unit(-1.0f, 1.0f);
-                std::vector<FlatVertex> probes;
-                std::vector<glm::vec3> expected;
-                for (int py = 0; py < kSize; ++py) {
-                    for (int px = 0; px < kSize; ++px) {
-                        float z = -(zNear + (zFar - zNear) * (0.05f + 0.5f * depth(random)));
-                        glm::vec2 ndc(2.0f * (px + 0.5f) / kSize - 1.0f, 2.0f * (py + 0.5f) / kSize - 1.0f);
-                        glm::vec3 eye(ndc.x * -z * tanHalf, ndc.y * -z * tanHalf, z);
-                        glm::vec3 N = glm::normalize(glm::vec3(unit(random), unit(random), unit(random)) + 0.6f * glm::normalize(-eye));
-                        glm::vec3 position = glm::vec3(toObject * glm::vec4(eye, 1.0f));
-                        glm::vec3 normal = normalToObject * N;
-                        probes.push_back({position, normal, position});
-                        glm::vec3 p = glm::vec3(t.modelView * glm::vec4(position, 1.0f));
-                        glm::vec3 cpu = shade(inputs, p, glm::normalize(t.normalMatrix * normal));
-                        ASSERT_TRUE(finite(cpu)) << v.name << ", " << corner.name;
-                        expected.push_back(glm::clamp(cpu, 0.0f, 1.0f));
-                    }
+                std::uniform_real_distribution<float> depth(0.05f, 0.55f);
+                test::Probes probes =
+                    test::makeProbes(preset, kSize, random, [&] { return zNear + (zFar - zNear) * depth(random); });
+                for (glm::vec3& cpu : probes.expected) {
+                    ASSERT_TRUE(finite(cpu)) << v.name << ", " << corner.name;
+                    cpu = glm::clamp(cpu, 0.0f, 1.0f);
                 }
-                Framebuffer target(kSize, kSize);
-                ASSERT_TRUE(target.complete());
-                target.bind();
-                glClearColor(0, 0, 0, 1);
-                glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                renderer_->drawPoints(preset, probes, kSize, kSize);
-                Image image = target.readRgb();
+                const std::vector<glm::vec3>& expected = probes.expected;
+                Image image = test::drawProbes(*renderer_, preset, probes, kSize);
+                ASSERT_EQ(image.width, kSize) << "no framebuffer";
                 int differing = 0;
                 for (int py = 0; py < kSize; ++py) {
                     for (int px = 0; px < kSize; ++px) {

@@ -741,22 +741,13 @@ TEST(GltfDataUri, TextThePassDoesNotFollowIsLeftAsItWas) {
 // growth of this process's peak resident memory (VmHWM, reset through /proc/self/clear_refs)
 // while one 24 MB file loads, against its size.
 TEST(Gltf, PeakMemoryForAnEmbeddedBufferStaysWithinTwoAndAHalfTimesTheFile) {
-    auto peakKb = [] {
+    // A "Vm...:  N kB" line of /proc/self/status.
+    auto statusKb = [](std::string_view field) {
         std::ifstream status("/proc/self/status");
         std::string line;
         while (std::getline(status, line)) {
-            if (line.starts_with("VmHWM:")) {
-                return std::stol(line.substr(6));
-            }
-        }
-        return -1L;
-    };
-    auto currentKb = [] {
-        std::ifstream status("/proc/self/status");
-        std::string line;
-        while (std::getline(status, line)) {
-            if (line.starts_with("VmRSS:")) {
-                return std::stol(line.substr(6));
+            if (line.starts_with(field)) {
+                return std::stol(line.substr(field.size()));
             }
         }
         return -1L;
@@ -782,17 +773,7 @@ TEST(Gltf, PeakMemoryForAnEmbeddedBufferStaysWithinTwoAndAHalfTimesTheFile) {
                 bytes.append(reinterpret_cast<const char*>(t), sizeof t);
             }
         }
-        static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-        std::string base64;
-        for (std::size_t k = 0; k < bytes.size(); k += 3) {
-            std::uint32_t v = std::uint32_t(std::uint8_t(bytes[k])) << 16;
-            v |= k + 1 < bytes.size() ? std::uint32_t(std::uint8_t(bytes[k + 1])) << 8 : 0;
-            v |= k + 2 < bytes.size() ? std::uint32_t(std::uint8_t(bytes[k + 2])) : 0;
-            base64 += alphabet[(v >> 18) & 63];
-            base64 += alphabet[(v >> 12) & 63];
-            base64 += k + 1 < bytes.size() ? alphabet[(v >> 6) & 63] : '=';
-            base64 += k + 2 < bytes.size() ? alphabet[v & 63] : '=';
-        }
+        const std::string base64 = base64Of(bytes);
         const std::size_t indexCount = (bytes.size() - positionBytes) / 4;
         std::string json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
                            R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],"accessors":[)"
@@ -810,10 +791,10 @@ TEST(Gltf, PeakMemoryForAnEmbeddedBufferStaysWithinTwoAndAHalfTimesTheFile) {
     {
         std::ofstream("/proc/self/clear_refs") << "5"; // the peak starts again from here
     }
-    const long before = currentKb();
+    const long before = statusKb("VmRSS:");
     Diagnostics d;
     std::optional<GltfResult> r = loadGltf(file, "embedded.gltf", d);
-    const long peak = peakKb();
+    const long peak = statusKb("VmHWM:");
     ASSERT_TRUE(r) << toString(d);
     EXPECT_EQ(r->mesh.triangleCount(), std::size_t(2 * 699 * 699));
     ASSERT_GT(before, 0);

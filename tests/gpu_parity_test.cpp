@@ -6,6 +6,7 @@
 // chosen so that it projects onto the centre of its own pixel. Per-vertex shading (flat,
 // Gouraud) evaluates in lit.vert, Phong shading in lit.frag: both paths are covered for every BRDF.
 #include "gl_suite.h"
+#include "probes.h"
 #include "core/lighting.h"
 #include "platform/headless_gl.h"
 #include "render/renderer.h"
@@ -77,40 +78,12 @@ class GpuParity : public GlSuite<testing::TestWithParam<Variant>> {};
 TEST_P(GpuParity, ShadersMatchTheCpuWithinOneLevel) {
     ASSERT_NE(renderer_, nullptr);
     const Preset preset = probePreset(GetParam());
-    const Transforms t = computeTransforms(preset, 1.0f);
-    const ShadingInputs inputs = packShading(preset, t.view);
-    const glm::mat4 toObject = glm::inverse(t.modelView);
-    const glm::mat3 normalToObject = glm::inverse(t.normalMatrix);
-    const float tanHalf = std::tan(glm::radians(preset.camera.fovyDeg) / 2.0f);
-
     std::mt19937 random(1234);
-    std::uniform_real_distribution<float> depth(2.5f, 6.5f), unit(-1.0f, 1.0f);
-    std::vector<FlatVertex> probes;
-    std::vector<glm::vec3> expected;
-    for (int py = 0; py < kSize; ++py) {
-        for (int px = 0; px < kSize; ++px) {
-            // The eye-space point on the ray through this pixel's centre, at a random depth.
-            float z = -depth(random);
-            glm::vec2 ndc(2.0f * (px + 0.5f) / kSize - 1.0f, 2.0f * (py + 0.5f) / kSize - 1.0f);
-            glm::vec3 eye(ndc.x * -z * tanHalf, ndc.y * -z * tanHalf, z);
-            // A random normal, mostly towards the viewer, some grazing or turned away.
-            glm::vec3 N = glm::normalize(glm::vec3(unit(random), unit(random), unit(random)) + 0.6f * glm::normalize(-eye));
-            glm::vec3 position = glm::vec3(toObject * glm::vec4(eye, 1.0f));
-            glm::vec3 normal = normalToObject * N;
-            probes.push_back({position, normal, position});
-            // The C++ face, from the same object-space data through the same matrices.
-            glm::vec3 p = glm::vec3(t.modelView * glm::vec4(position, 1.0f));
-            expected.push_back(shade(inputs, p, glm::normalize(t.normalMatrix * normal)));
-        }
-    }
-
-    Framebuffer target(kSize, kSize);
-    ASSERT_TRUE(target.complete());
-    target.bind();
-    glClearColor(0, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    renderer_->drawPoints(preset, probes, kSize, kSize);
-    Image image = target.readRgb(); // top row first
+    std::uniform_real_distribution<float> depth(2.5f, 6.5f);
+    const test::Probes probes = test::makeProbes(preset, kSize, random, [&] { return depth(random); });
+    const std::vector<glm::vec3>& expected = probes.expected;
+    Image image = test::drawProbes(*renderer_, preset, probes, kSize); // top row first
+    ASSERT_EQ(image.width, kSize) << "no framebuffer";
 
     int lit = 0, worstLevel = 0;
     float worst = 0.0f;

@@ -1,0 +1,69 @@
+// probes.h — single-pixel probes that compare the shaders with the C++ face of the lighting model
+// (gpu_parity_test.cpp, finite_test.cpp).
+//
+// One probe per pixel centre of a size × size view: an eye-space point on that pixel's ray at a
+// depth the caller draws, with a random normal, mostly towards the viewer, some grazing or turned
+// away. Each probe is moved into object space so that the real shaders, uniforms and matrices
+// draw it (Renderer::drawPoints), and its C++ colour is computed from the same object-space data
+// through the same matrices.
+#pragma once
+
+#include "core/lighting.h"
+#include "core/image.h"
+#include "core/mesh.h"
+#include "render/offscreen.h"
+#include "render/renderer.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <functional>
+#include <random>
+#include <vector>
+
+namespace lab::test {
+
+struct Probes {
+    std::vector<FlatVertex> vertices; // object space, as drawPoints takes them
+    std::vector<glm::vec3> expected;  // the C++ colour of each, row by row from the bottom
+};
+
+// `eyeDepth` gives each probe's distance from the eye along -z; `random` the normals.
+inline Probes makeProbes(const Preset& preset, int size, std::mt19937& random, const std::function<float()>& eyeDepth) {
+    const Transforms t = computeTransforms(preset, 1.0f);
+    const ShadingInputs inputs = packShading(preset, t.view);
+    const glm::mat4 toObject = glm::inverse(t.modelView);
+    const glm::mat3 normalToObject = glm::inverse(t.normalMatrix);
+    const float tanHalf = std::tan(glm::radians(preset.camera.fovyDeg) / 2.0f);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    Probes probes;
+    for (int py = 0; py < size; ++py) {
+        for (int px = 0; px < size; ++px) {
+            float z = -eyeDepth();
+            glm::vec2 ndc(2.0f * (px + 0.5f) / size - 1.0f, 2.0f * (py + 0.5f) / size - 1.0f);
+            glm::vec3 eye(ndc.x * -z * tanHalf, ndc.y * -z * tanHalf, z);
+            glm::vec3 N = glm::normalize(glm::vec3(unit(random), unit(random), unit(random)) + 0.6f * glm::normalize(-eye));
+            glm::vec3 position = glm::vec3(toObject * glm::vec4(eye, 1.0f));
+            glm::vec3 normal = normalToObject * N;
+            probes.vertices.push_back({position, normal, position});
+            glm::vec3 p = glm::vec3(t.modelView * glm::vec4(position, 1.0f));
+            probes.expected.push_back(shade(inputs, p, glm::normalize(t.normalMatrix * normal)));
+        }
+    }
+    return probes;
+}
+
+// The probes drawn by `renderer` into a size × size framebuffer: the image, top row first (so
+// probe (px, py) is at row size - 1 - py); an empty image when no framebuffer could be made.
+inline Image drawProbes(Renderer& renderer, const Preset& preset, const Probes& probes, int size) {
+    Framebuffer target(size, size);
+    if (!target.complete()) {
+        return {};
+    }
+    target.bind();
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    renderer.drawPoints(preset, probes.vertices, size, size);
+    return target.readRgb();
+}
+
+} // namespace lab::test
