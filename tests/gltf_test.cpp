@@ -673,6 +673,24 @@ TEST(GltfDataUri, AnEmbeddedBufferGivesTheSameMeshAsTheBinFile) {
     EXPECT_TRUE(longer.load(dir.path(), d)) << toString(d);
 }
 
+// A duplicate "uri" key: the parser keeps the last one, so the decoded first one must not be used.
+TEST(GltfDataUri, ADuplicateUriKeyLeavesTheBufferToTheParser) {
+    TempFolder dir;
+    Fixture f;
+    f.write(dir.path());
+    std::string text = f.gltf.dump();
+    const std::string external = R"("uri":"quad.bin")";
+    ASSERT_NE(text.find(external), std::string::npos);
+    text.replace(text.find(external), external.size(),
+                 R"("uri":"data:application/octet-stream;base64,)" + base64Of(std::string(60, '\x7f')) + R"(",)" + external);
+    writeText(dir.path() / "model" / "quad.gltf", text);
+    Diagnostics d;
+    std::optional<GltfResult> r = loadGltf(dir.path() / "model" / "quad.gltf", "quad.gltf", d);
+    ASSERT_TRUE(r) << toString(d);
+    EXPECT_EQ(r->mesh.positions.size(), 4u);
+    EXPECT_EQ(r->mesh.positions[2], glm::vec3(1, 1, 0)) << "quad.bin's vertices, not the decoded bytes";
+}
+
 TEST(GltfDataUri, BrokenBase64AndShortBuffersAreRefusedWithTheirPlace) {
     TempFolder dir;
     Fixture bad;
@@ -683,7 +701,7 @@ TEST(GltfDataUri, BrokenBase64AndShortBuffersAreRefusedWithTheirPlace) {
     EXPECT_FALSE(bad.load(dir.path(), d));
     ASSERT_EQ(d.size(), 1u);
     EXPECT_EQ(d[0].where, "buffers[0].uri");
-    EXPECT_EQ(d[0].message, "not valid base64 at character 47 of the URI");
+    EXPECT_EQ(d[0].message, "not valid base64 at character 48 of the URI"); // counted from 1
     Fixture shorter;
     shorter.gltf["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64Of(shorter.bin.substr(0, 30));
     d.clear();
@@ -721,12 +739,17 @@ TEST(GltfDataUri, TextThePassDoesNotFollowIsLeftAsItWas) {
                              R"({"buffers": [{"uri": "data:application\/octet-stream;base64,AAAA"}]})",
                              R"({"buffers": [{"uri": "quad.bin"}]})", R"({"buffers": [{"uri": "data:,plain"}]})",
                              R"({"buffers": [{"uri": "data:;base64,AAAA"})", R"([1, 2, 3])"}) {
-        EXPECT_FALSE(gltf_detail::decodeDataUriBuffers(json, "x.gltf", d, failed)) << json;
+        EXPECT_FALSE(gltf_detail::decodeDataUriBuffers(json, 128, 100, "x.gltf", d, failed)) << json;
         EXPECT_FALSE(failed) << json;
     }
+    // Deeper than the loader reads, or a buffer index past its count: nothing decoded, nothing held.
+    const std::string deep = std::string(200, '[') + std::string(200, ']');
+    EXPECT_FALSE(gltf_detail::decodeDataUriBuffers(deep, 128, 100, "x.gltf", d, failed));
+    EXPECT_FALSE(gltf_detail::decodeDataUriBuffers(R"({"buffers": [0, 0, 0, {"uri": "data:;base64,AAAA"}]})", 128, 3,
+                                                   "x.gltf", d, failed));
     std::optional<gltf_detail::DataUriBuffers> r = gltf_detail::decodeDataUriBuffers(
         R"({"asset": {"uri": "data:;base64,AAAA"}, "buffers": [{"uri": "a.bin"}, {"byteLength": 2, "uri": "data:;base64,AAA="}]})",
-        "x.gltf", d, failed);
+        128, 100, "x.gltf", d, failed);
     ASSERT_TRUE(r);
     EXPECT_EQ(r->json, std::string(R"({"asset": {"uri": "data:;base64,AAAA"}, "buffers": [{"uri": "a.bin"}, {"byteLength": 2, "uri": ")") +
                            gltf_detail::kDecodedPlaceholder + R"("}]})");

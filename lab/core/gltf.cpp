@@ -503,7 +503,10 @@ bool useDecodedBuffers(nlohmann::json& doc, ParsedModel& parsed, const std::stri
     parsed.inDataUri.resize(buffers->size());
     for (std::size_t i = 0; i < buffers->size() && i < parsed.dataUris.decoded.size(); ++i) {
         nlohmann::json& buffer = (*buffers)[i];
-        if (!parsed.dataUris.decoded[i] || !buffer.is_object()) {
+        // The parser must see the placeholder where the pass put it (a duplicate "uri" key, or
+        // one written with escapes, would make them disagree): else the buffer is tinygltf's.
+        if (!parsed.dataUris.decoded[i] || !buffer.is_object() || !buffer.contains("uri") ||
+            buffer["uri"] != gltf_detail::kDecodedPlaceholder) {
             continue;
         }
         auto length = buffer.find("byteLength");
@@ -553,7 +556,7 @@ std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, 
     // copies them (gltf_data_uri.h).
     bool badDataUri = false;
     std::optional<gltf_detail::DataUriBuffers> dataUris =
-        gltf_detail::decodeDataUriBuffers(json, displayName, diagnostics, badDataUri);
+        gltf_detail::decodeDataUriBuffers(json, limits.maxJsonDepth, limits.maxOtherObjects, displayName, diagnostics, badDataUri);
     if (badDataUri) {
         return std::nullopt;
     }

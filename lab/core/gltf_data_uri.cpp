@@ -24,7 +24,7 @@ struct Frame {
 
 // The spans of every buffers[i].uri string, in text order; nullopt for text this scanner does not
 // follow (it then changes nothing). Iterative: its depth costs a vector, not the stack.
-std::optional<std::vector<UriSpan>> findBufferUris(std::string_view s) {
+std::optional<std::vector<UriSpan>> findBufferUris(std::string_view s, int maxDepth) {
     std::vector<UriSpan> spans;
     std::vector<Frame> stack;
     bool expectKey = false, sawBuffers = false;
@@ -79,15 +79,12 @@ std::optional<std::vector<UriSpan>> findBufferUris(std::string_view s) {
             continue;
         }
         if (c == '{' || c == '[') {
+            if (stack.size() >= static_cast<std::size_t>(maxDepth)) {
+                return std::nullopt; // deeper than the loader reads at all
+            }
             stack.push_back({c == '{', {}, 0});
             expectKey = c == '{';
             ++i;
-            if (c == '[') {
-                skipSpace();
-                if (i < s.size() && s[i] == ']') { // an empty array
-                    continue;
-                }
-            }
             continue;
         }
         if (c == '}' || c == ']') {
@@ -183,10 +180,10 @@ bool decodeBase64(std::string_view text, std::vector<unsigned char>& out, std::s
     return true;
 }
 
-std::optional<DataUriBuffers> decodeDataUriBuffers(std::string_view json, const std::string& displayName,
-                                                   Diagnostics& diagnostics, bool& failed) {
+std::optional<DataUriBuffers> decodeDataUriBuffers(std::string_view json, int maxDepth, std::size_t maxBuffers,
+                                                   const std::string& displayName, Diagnostics& diagnostics, bool& failed) {
     failed = false;
-    std::optional<std::vector<UriSpan>> spans = findBufferUris(json);
+    std::optional<std::vector<UriSpan>> spans = findBufferUris(json, maxDepth);
     if (!spans) {
         return std::nullopt;
     }
@@ -198,6 +195,9 @@ std::optional<DataUriBuffers> decodeDataUriBuffers(std::string_view json, const 
         if (!uri.starts_with("data:") || comma == std::string_view::npos || !uri.substr(0, comma).ends_with(";base64")) {
             continue; // a file name, or a data: URI that is not base64: tinygltf's as before
         }
+        if (span.index >= maxBuffers) {
+            continue; // more buffers than the loader reads: refused by its count check
+        }
         if (span.index >= out.bytes.size()) {
             out.bytes.resize(span.index + 1);
             out.decoded.resize(span.index + 1, false);
@@ -205,7 +205,7 @@ std::optional<DataUriBuffers> decodeDataUriBuffers(std::string_view json, const 
         std::size_t at = 0;
         if (!decodeBase64(uri.substr(comma + 1), out.bytes[span.index], at)) {
             diagnostics.push_back({displayName, "buffers[" + std::to_string(span.index) + "].uri",
-                                   "not valid base64 at character " + std::to_string(comma + 1 + at) + " of the URI"});
+                                   "not valid base64 at character " + std::to_string(comma + 2 + at) + " of the URI"});
             failed = true;
             return std::nullopt;
         }

@@ -31,11 +31,13 @@ inline constexpr const char* kDecodedPlaceholder = "data:application/octet-strea
 
 // Nullopt when nothing was decoded (no such URI, or JSON this pass does not follow); the
 // diagnostics name the buffer when a URI's base64 is broken (then `failed` is set).
-std::optional<DataUriBuffers> decodeDataUriBuffers(std::string_view json, const std::string& displayName,
-                                                   Diagnostics& diagnostics, bool& failed);
+// The pass follows JSON no deeper than `maxDepth` and buffers below `maxBuffers` (the loader's
+// limits, GltfLimits): beyond them it changes nothing, and the parsers' own checks refuse the file.
+std::optional<DataUriBuffers> decodeDataUriBuffers(std::string_view json, int maxDepth, std::size_t maxBuffers,
+                                                   const std::string& displayName, Diagnostics& diagnostics, bool& failed);
 
 // Standard base64 (RFC 4648, '=' padding only at the end) into `out`; false at the first byte
-// that is not, with its offset in `at`.
+// that is not, with its offset (from 0) in `at`.
 bool decodeBase64(std::string_view text, std::vector<unsigned char>& out, std::size_t& at);
 
 } // namespace lab::gltf_detail
