@@ -1,5 +1,7 @@
 // camera_test.cpp — orbit keeps the distance and never flips, zoom and pan move as documented.
 #include "core/camera.h"
+#include "core/preset.h"
+#include "core/limits.h"
 
 #include <gtest/gtest.h>
 
@@ -45,6 +47,26 @@ TEST(Camera, PanDragsTheSceneWithTheMouse) {
     EXPECT_NEAR(c.target.x, -0.5f * viewHeight, 1e-5f);
     panCamera(c, 0.0f, 0.25f); // and up
     EXPECT_NEAR(c.target.y, -0.25f * viewHeight, 1e-5f);
+}
+
+// Issue 14: a gesture never makes the camera one a preset may not hold (the validator's ranges).
+TEST(Camera, GesturesKeepTheCameraValidAndItsDirection) {
+    Preset p;
+    p.camera.near = limits::kNear.min;
+    p.camera.eye = {1.0f, 1.0f, 1.0f};
+    zoomCamera(p.camera, 1e-9f); // all the way in: near * 2 is below the validator's minimum distance
+    glm::vec3 offset = p.camera.eye - p.camera.target;
+    EXPECT_GE(glm::length(offset), limits::kMinDirectionLength);
+    EXPECT_NEAR(glm::dot(glm::normalize(offset), glm::normalize(glm::vec3(1.0f))), 1.0f, 1e-4f) << "the same direction";
+    p.camera.eye = {0.0f, 0.0f, 9999.9999f};
+    p.camera.target = {0.0f, 0.0f, 9999.9995f};
+    for (int i = 0; i < 50; ++i) {
+        panCamera(p.camera, 0.0f, 1e3f);
+        zoomCamera(p.camera, 1e3f);
+    }
+    Diagnostics d;
+    std::optional<Preset> back = parsePreset(presetToJson(p), "camera.json", std::nullopt, d);
+    EXPECT_TRUE(back) << toString(d);
 }
 
 } // namespace

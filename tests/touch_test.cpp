@@ -141,5 +141,25 @@ TEST(Touch, AThirdFingerAndUnknownFingersAreIgnored) {
     EXPECT_EQ(clicksOf(out, pending).size(), 1u);
 }
 
+// A cancelled touch (a system gesture took it) presses nothing that it had not pressed already.
+TEST(Touch, ACancelledTouchIsNoClick) {
+    TouchGestures t;
+    std::vector<InputEvent> out;
+    t.start(1, 100, 100, out);
+    t.cancel(1, out);
+    EXPECT_TRUE(out.empty()) << "a finger that had not moved pressed nothing";
+    t.start(2, 100, 100, out);
+    t.move(2, 140, 100, out);
+    t.cancel(2, out);
+    EXPECT_EQ(count(out, Kind::Button, 0, 1), 1);
+    EXPECT_EQ(count(out, Kind::Button, 0, 0), 1) << "a drag in progress is released";
+    std::optional<InputEvent> pending;
+    EXPECT_TRUE(clicksOf(out, pending).empty());
+    out.clear();
+    t.start(3, 10, 10, out); // and the next tap is a tap
+    t.end(3, 10, 10, out);
+    EXPECT_EQ(clicksOf(out, pending).size(), 1u);
+}
+
 } // namespace
 } // namespace lab

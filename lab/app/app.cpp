@@ -186,11 +186,7 @@ void App::Impl::carryOut(const Request& r) {
     case Command::Screenshot: screenshotRequested = true; break;
     case Command::FocusOpenPath: panel.focusOpenPath = true; break;
     case Command::PickFile: pickFile = true; break;
-    case Command::CopyLink:
-        copyLink = true;
-        toast = "Link copied: it opens this scene for anyone who follows it";
-        toastLeft = kToastSeconds;
-        break;
+    case Command::CopyLink: copyLink = true; break; // the page says whether the browser allowed it
     case Command::ToggleShaderEditor: shaderEditor.open = !shaderEditor.open; break;
     case Command::CompileShaders:
         if (shaderEditor.open) {

@@ -109,4 +109,17 @@ void TouchGestures::end(long id, float x, float y, std::vector<InputEvent>& out)
     }
 }
 
+void TouchGestures::cancel(long id, std::vector<InputEvent>& out) {
+    Finger* f = find(id);
+    if (!f) {
+        return;
+    }
+    if (mode_ == Mode::Pending) {
+        fingers_.clear(); // nothing was sent for it
+        mode_ = Mode::Idle;
+        return;
+    }
+    end(id, f->x, f->y, out);
+}
+
 } // namespace lab

@@ -27,6 +27,9 @@ public:
     void start(long id, float x, float y, std::vector<InputEvent>& out);
     void move(long id, float x, float y, std::vector<InputEvent>& out);
     void end(long id, float x, float y, std::vector<InputEvent>& out);
+    // The browser took the finger away (a system gesture, palm rejection): like end(), but a
+    // finger that had not moved yet presses nothing.
+    void cancel(long id, std::vector<InputEvent>& out);
 
     static constexpr float kSlop = 8.0f;         // window units a finger may move and still tap
     static constexpr float kWheelPerDoubling = 6.58f; // wheel steps (0.9 each) for a distance doubling: ln 2 / -ln 0.9

@@ -105,7 +105,8 @@ int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size si
     if (toFolder) {
         std::error_code ec;
         fs::create_directories(out, ec);
-        if (!fs::is_directory(out)) {
+        std::error_code isFolder;
+        if (!fs::is_directory(out, isFolder)) {
             print(stderr, "lab render: --out %s: with several presets --out must be a folder (%s)\n",
                          out.string().c_str(), ec ? ec.message().c_str() : "it is a file");
             return kExitBadInput;
@@ -262,7 +263,7 @@ void checkPreset(Gpu& gpu, const LoadedPreset& preset, const std::string& name, 
     fs::path goldenFile = options.golden / (name + ".png");
     std::string error;
     std::optional<Image> golden;
-    if (fs::exists(goldenFile)) {
+    if (std::error_code exists; fs::exists(goldenFile, exists)) {
         golden = readPng(goldenFile, error);
         if (!golden) {
             log.fail("ERROR    " + name + ": golden " + goldenFile.string() + ": " + error);
@@ -288,11 +289,11 @@ void checkPreset(Gpu& gpu, const LoadedPreset& preset, const std::string& name, 
 } // namespace
 
 int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) {
-    if (!options.update && !fs::is_directory(options.golden)) {
+    std::error_code ec;
+    if (!options.update && !fs::is_directory(options.golden, ec)) {
         print(stderr, "lab check: --golden %s: no such folder\n", options.golden.string().c_str());
         return kExitBadInput;
     }
-    std::error_code ec;
     // Every folder check writes to must be one (a file in its place would fail each write later,
     // as a check failure instead of the bad argument it is).
     for (const auto& [flag, folder] : {std::pair{"--golden", &options.golden}, std::pair{"--report", &options.report}}) {
@@ -300,7 +301,8 @@ int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) 
             continue; // --update writes goldens only; a comparison writes the report only
         }
         fs::create_directories(*folder, ec);
-        if (!fs::is_directory(*folder)) {
+        std::error_code isFolder; // (the throwing form would end the program on a name too long or a folder not allowed)
+        if (!fs::is_directory(*folder, isFolder)) {
             print(stderr, "lab check: " + std::string(flag) + " " + folder->string() + ": cannot be used as a folder (" +
                               (ec ? ec.message() : "it is a file") + ")\n");
             return kExitBadInput;
@@ -324,7 +326,6 @@ int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) 
     log.line(std::to_string(log.passed) + " passed, " + std::to_string(log.failed) + " failed");
     if (!options.update) {
         std::string error;
-        fs::create_directories(options.report, ec);
         if (!writeFileAtomic(options.report / "report.txt", log.text, error)) {
             print(stderr, "lab check: " + error + "\n");
         }

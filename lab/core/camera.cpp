@@ -13,20 +13,19 @@
 
 namespace lab {
 
-namespace {
-
-// A gesture never takes the camera outside what a preset may hold (core/limits.h): a valid scene
-// stays valid, whatever was dragged.
-void keepInRange(Camera& camera) {
-    const glm::vec3 lo(limits::kCoordinate.min), hi(limits::kCoordinate.max);
-    camera.eye = glm::clamp(camera.eye, lo, hi);
-    camera.target = glm::clamp(camera.target, lo, hi);
-    if (glm::length(camera.eye - camera.target) < 2.0f * limits::kMinDirectionLength) {
-        camera.eye = camera.target + glm::vec3(0.0f, 0.0f, 2.0f * limits::kMinDirectionLength);
+void keepCameraValid(Camera& camera) {
+    constexpr float kMinDistance = 2.0f * limits::kMinDirectionLength; // twice the validator's, for rounding
+    const glm::vec3 margin(kMinDistance);
+    camera.target = glm::clamp(camera.target, glm::vec3(limits::kCoordinate.min) + margin,
+                               glm::vec3(limits::kCoordinate.max) - margin);
+    glm::vec3 offset = camera.eye - camera.target;
+    float distance = glm::length(offset);
+    if (!(distance >= kMinDistance)) { // too close (or not a number): the same direction, farther
+        offset = distance > 0.0f ? offset / distance : glm::vec3(0.0f, 0.0f, 1.0f);
+        camera.eye = camera.target + offset * kMinDistance;
     }
+    camera.eye = glm::clamp(camera.eye, glm::vec3(limits::kCoordinate.min), glm::vec3(limits::kCoordinate.max));
 }
-
-} // namespace
 
 void orbitCamera(Camera& camera, float yawDeg, float pitchDeg) {
     glm::vec3 up = glm::normalize(camera.up);
@@ -44,7 +43,7 @@ void orbitCamera(Camera& camera, float yawDeg, float pitchDeg) {
         dir = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(current - target), right) * glm::vec4(dir, 0.0f));
     }
     camera.eye = camera.target + glm::normalize(dir) * distance;
-    keepInRange(camera);
+    keepCameraValid(camera);
 }
 
 void zoomCamera(Camera& camera, float factor) {
@@ -52,7 +51,7 @@ void zoomCamera(Camera& camera, float factor) {
     float distance = glm::length(offset);
     float next = std::clamp(distance * factor, camera.near * 2.0f, camera.far / 2.0f);
     camera.eye = camera.target + offset * (next / distance);
-    keepInRange(camera);
+    keepCameraValid(camera);
 }
 
 void panCamera(Camera& camera, float dx, float dy) {
@@ -65,7 +64,7 @@ void panCamera(Camera& camera, float dx, float dy) {
     glm::vec3 move = (-dx * right - dy * up) * viewHeight;
     camera.eye += move;
     camera.target += move;
-    keepInRange(camera);
+    keepCameraValid(camera);
 }
 
 } // namespace lab

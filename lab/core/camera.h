@@ -5,6 +5,11 @@
 
 namespace lab {
 
+// Keeps the camera what a preset may hold (core/limits.h): eye and target inside the coordinate
+// range and at least twice the validator's minimum apart, in the direction they had. Every
+// gesture and the panel call it, so a valid scene stays valid whatever was dragged.
+void keepCameraValid(Camera& camera);
+
 // Turns the eye around the target: `yawDeg` about the up vector (counter-clockwise seen from
 // above), `pitchDeg` upwards (positive raises the eye), stopping 1° short of the poles so the
 // view never flips. The distance is kept.

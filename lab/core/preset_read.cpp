@@ -413,7 +413,9 @@ void readCamera(Reader& r, Camera& camera) {
         r.error("far", "must be greater than near");
     }
     glm::vec3 forward = camera.target - camera.eye;
-    if (glm::length(forward) < limits::kMinDirectionLength) {
+    if (glm::length(camera.up) < limits::kMinDirectionLength) {
+        r.error("up", "must be at least 0.001 long (it is normalized)");
+    } else if (glm::length(forward) < limits::kMinDirectionLength) {
         r.error("target", "must be at least 0.001 from eye");
     } else {
         glm::vec3 side = glm::cross(forward, camera.up);

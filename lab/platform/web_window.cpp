@@ -242,7 +242,7 @@ EMSCRIPTEN_KEEPALIVE void lab_open_file(const char* path) {
         gState->changed = true;
     }
 }
-// A finger (CSS pixels from the canvas's corner): phase 0 down, 1 moved, 2 up or cancelled.
+// A finger (CSS pixels from the canvas's corner): phase 0 down, 1 moved, 2 up, 3 cancelled.
 EMSCRIPTEN_KEEPALIVE void lab_touch(int phase, int id, float x, float y) {
     if (!gState) {
         return;
@@ -252,8 +252,10 @@ EMSCRIPTEN_KEEPALIVE void lab_touch(int phase, int id, float x, float y) {
         gState->touch.start(id, x, y, events);
     } else if (phase == 1) {
         gState->touch.move(id, x, y, events);
-    } else {
+    } else if (phase == 2) {
         gState->touch.end(id, x, y, events);
+    } else {
+        gState->touch.cancel(id, events);
     }
     for (const InputEvent& e : events) {
         gState->queue.push(e);

@@ -1,9 +1,11 @@
 // panel.cpp — the control panel's sections.
 #include "ui/panel.h"
 
+#include "core/camera.h"
 #include "core/enums.h"
 #include "core/lighting.h"
 #include "core/limits.h"
+#include "core/safe_text.h"
 #include "ui/widgets.h"
 
 #include <glm/glm.hpp>
@@ -109,7 +111,9 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
     if (ImGui::BeginListBox("##presets", ImVec2(-1, height))) {
         for (std::size_t i = 0; i < files.size(); ++i) {
             bool selected = static_cast<int>(i) == info.currentPreset;
-            if (ImGui::Selectable(files[i].stem().string().c_str(), selected)) {
+            // The file's name as a label (escaped: dropped files land in this list), its place as the ID.
+            std::string label = printable(files[i].stem().string(), true) + "###preset" + std::to_string(i);
+            if (ImGui::Selectable(label.c_str(), selected)) {
                 requests.push_back({Command::OpenPresetAt, {}, static_cast<int>(i)});
             }
             if (selected && (ImGui::IsWindowAppearing() || state.listScrolledTo != info.currentPreset)) {
@@ -369,9 +373,7 @@ void cameraSection(Preset& p, std::vector<Request>& requests) {
     commandButton(Command::ResetCamera, requests);
     disabledWrapped("Left drag: orbit  Right drag: pan  Wheel: zoom (a finger orbits, two pan and pinch)");
     // Keep the camera valid whatever was dragged.
-    if (glm::length(p.camera.eye - p.camera.target) < 2.0f * limits::kMinDirectionLength) {
-        p.camera.eye = p.camera.target + glm::vec3(0, 0, 2.0f * limits::kMinDirectionLength);
-    }
+    keepCameraValid(p.camera);
 }
 
 // Compare mode's switch, and which set the panel edits.

@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "core/file_io.h"
 #include "core/gltf.h"
+#include "core/image.h"
 #include "core/lighting.h"
 #include "core/plot.h"
 #include "core/preset.h"
@@ -18,14 +19,11 @@
 #include "platform/headless_gl.h"
 #include "render/offscreen.h" // kMaxRenderSide
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -158,7 +156,9 @@ inline std::string checkGltf(std::string_view bytes, const std::filesystem::path
 }
 
 // Where the command-line check runs commands: a scratch folder with a valid preset (a.json), a
-// broken one (b.json), a golden for a.json (golden/a.png) and a file where a folder is wanted.
+// broken one (b.json), a golden for a.json (golden/a.png, black: a comparison that fails) and a
+// file where a folder is wanted. writeCommandFixtures() puts them back before each command, so a
+// command that overwrote one (`--out a.json`) does not change what the next input meets.
 inline const std::filesystem::path& commandScratch() {
     // Removed when the process ends.
     struct Scratch {
@@ -168,17 +168,69 @@ inline const std::filesystem::path& commandScratch() {
             std::filesystem::remove_all(path, ec);
         }
     };
-    static const Scratch scratch{[] {
-        std::filesystem::path f = std::filesystem::temp_directory_path() / ("lab-fuzz-cli-" + std::to_string(::getpid()));
-        std::filesystem::create_directories(f / "golden");
-        std::string error;
-        writeFileAtomic(f / "a.json", R"({"format": "lighting-lab-preset", "version": 1, "name": "a"})", error);
-        writeFileAtomic(f / "b.json", "{\"format\": \"lighting-lab-preset\", \"version\": 1, \"\x1b[2J\": 1}", error);
-        writeFileAtomic(f / "file", "not a folder", error);
-        return f;
-    }()};
+    static const Scratch scratch{std::filesystem::temp_directory_path() / ("lab-fuzz-cli-" + std::to_string(::getpid()))};
     return scratch.path;
 }
+
+inline void writeCommandFixtures() {
+    const std::filesystem::path& f = commandScratch();
+    std::error_code ec;
+    std::filesystem::remove_all(f, ec);
+    std::filesystem::create_directories(f / "golden", ec);
+    std::string error;
+    writeFileAtomic(f / "a.json", R"({"format": "lighting-lab-preset", "version": 1, "name": "a"})", error);
+    writeFileAtomic(f / "b.json", "{\"format\": \"lighting-lab-preset\", \"version\": 1, \"\x1b[2J\": 1}", error);
+    writeFileAtomic(f / "file", "not a folder", error);
+    Image black{16, 16, std::vector<std::uint8_t>(16 * 16 * 3, 0)};
+    writePng(black, f / "golden" / "a.png", error);
+}
+
+// Standard output and error into a temporary file (outside the scratch folder, which commands
+// write to) for as long as it lives; restored whatever happens.
+class CapturedOutput {
+public:
+    CapturedOutput() : file_(std::tmpfile()) {
+        std::fflush(stdout);
+        std::fflush(stderr);
+        if (file_) {
+            savedOut_ = ::dup(1);
+            savedErr_ = ::dup(2);
+            ::dup2(::fileno(file_), 1);
+            ::dup2(::fileno(file_), 2);
+        }
+    }
+    ~CapturedOutput() {
+        std::fflush(stdout);
+        std::fflush(stderr);
+        for (auto [saved, fd] : {std::pair{savedOut_, 1}, std::pair{savedErr_, 2}}) {
+            if (saved >= 0) {
+                ::dup2(saved, fd);
+                ::close(saved);
+            }
+        }
+        if (file_) {
+            std::fclose(file_);
+        }
+    }
+    CapturedOutput(const CapturedOutput&) = delete;
+    CapturedOutput& operator=(const CapturedOutput&) = delete;
+    bool ok() const { return file_ != nullptr; }
+    std::string text() {
+        std::fflush(stdout);
+        std::fflush(stderr);
+        std::string out;
+        std::rewind(file_);
+        char buf[4096];
+        for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, file_)) > 0;) {
+            out.append(buf, n);
+        }
+        return out;
+    }
+
+private:
+    std::FILE* file_;
+    int savedOut_ = -1, savedErr_ = -1;
+};
 
 // A path the fuzzed command may use: relative, inside the scratch folder (no "..", no root).
 inline std::optional<std::filesystem::path> inScratch(const std::filesystem::path& p) {
@@ -215,40 +267,27 @@ inline std::string runParsedCommand(CommandLine line) {
         s->width = std::min(s->width, 16);
         s->height = std::min(s->height, 16);
     }
-    const std::filesystem::path captured = commandScratch() / ".output";
-    std::fflush(stdout);
-    std::fflush(stderr);
-    int file = ::open(captured.c_str(), O_RDWR | O_CREAT | O_TRUNC, 0600);
-    if (file < 0) {
-        return "";
-    }
-    int savedOut = ::dup(1), savedErr = ::dup(2);
-    ::dup2(file, 1);
-    ::dup2(file, 2);
+    writeCommandFixtures();
     int status = kExitOk;
-    switch (line.command) {
-    case CommandLine::Command::Render: status = runRender(line.presets, line.out, line.size); break;
-    case CommandLine::Command::Plot: status = runPlot(line.presets.front(), line.out, line.incidentDeg); break;
-    case CommandLine::Command::Check: status = runCheck(line.presets, line.check); break;
-    case CommandLine::Command::Lab: break;
-    }
-    std::fflush(stdout);
-    std::fflush(stderr);
-    for (auto [saved, fd] : {std::pair{savedOut, 1}, std::pair{savedErr, 2}}) {
-        if (saved >= 0) {
-            ::dup2(saved, fd);
-            ::close(saved);
+    std::string text;
+    {
+        CapturedOutput output;
+        if (!output.ok()) {
+            return "";
         }
+        switch (line.command) {
+        case CommandLine::Command::Render: status = runRender(line.presets, line.out, line.size); break;
+        case CommandLine::Command::Plot: status = runPlot(line.presets.front(), line.out, line.incidentDeg); break;
+        case CommandLine::Command::Check: status = runCheck(line.presets, line.check); break;
+        case CommandLine::Command::Lab: break;
+        }
+        text = output.text();
     }
-    ::close(file);
-    std::ifstream in(captured, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
     if (status != kExitOk && status != kExitFailure && status != kExitBadInput) {
         return "an exit status other than 0, 1 or 2";
     }
-    if (printable(text.str()) != text.str()) {
-        return "output that is not terminal-safe: " + printable(text.str());
+    if (printable(text) != text) {
+        return "output that is not terminal-safe: " + printable(text);
     }
     return "";
 }

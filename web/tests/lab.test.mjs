@@ -455,11 +455,15 @@ test('touch: one finger orbits, two fingers pinch to zoom and pan, and a drag th
 
 test('Copy link puts the scene\'s address on the clipboard, and the link opens the same scene', async () => {
   const { page, context } = await openLab('#preset=05-full-phong');
+  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: base });
   const button = (await widgets(page))['file.copy-link'];
   await page.mouse.click(...centre(button));
   await settle(page);
+  await page.waitForFunction(() => window.labCopiedLink !== undefined, null, { timeout: 10000 });
   const link = await page.evaluate(() => window.labCopiedLink);
-  assert.match(link, /#preset=05-full-phong|#p=/);
+  assert.match(link ?? 'copy refused', /#preset=05-full-phong|#p=/);
+  assert.match(await page.textContent('#notice'), /Link copied/);
+  assert.equal(await page.evaluate(() => navigator.clipboard.readText()), link, 'the clipboard holds the link');
   const second = await openLab(link.substring(link.indexOf('#')));
   assert.match(await second.page.title(), /05-full-phong/);
   await second.context.close();
