@@ -118,7 +118,8 @@ ui::ScreenModel App::Impl::screenModel() {
     m.b = workspace.view.compare ? &workspace.b() : nullptr;
     m.edited = &workspace.edited();
     m.view = &workspace.view;
-    m.panelInfo = {&workspace.presetFiles(), workspace.currentPreset(), printable(doc.displayName(), true), doc.dirty(),
+    const std::string name = printable(doc.displayName(), true); // the file's name, shown in three places
+    m.panelInfo = {&workspace.presetFiles(), workspace.currentPreset(), name, doc.dirty(),
                    doc.canUndo(), doc.canRedo(), false, options.saveByDownload};
     m.panel = &panel;
     m.plots = &plots;
@@ -130,7 +131,7 @@ ui::ScreenModel App::Impl::screenModel() {
     m.showHelp = &showHelp;
     m.problem = problem ? &*problem : nullptr;
     m.unsavedQuestion = workspace.question() ? &*workspace.question() : nullptr;
-    m.overlay = {printable(doc.displayName(), true), doc.dirty(), m.a, m.b, workspace.view.mode, frameMs,
+    m.overlay = {name, doc.dirty(), m.a, m.b, workspace.view.mode, frameMs,
                  toastLeft > 0.0f ? toast.c_str() : nullptr, caption,
                  probe && probeOpen ? std::optional<glm::vec3>(probe->positionWorld) : std::nullopt};
     m.lightShapes = lightShapes;

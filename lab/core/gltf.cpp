@@ -432,8 +432,7 @@ bool checkCounts(const nlohmann::json& doc, const GltfLimits& limits, const std:
         std::size_t limit = key == "nodes" ? limits.maxNodes : key == "meshes" ? limits.maxMeshes
                           : key == "accessors" ? limits.maxAccessors : limits.maxOtherObjects;
         if (value.size() > limit) {
-            const bool plain = key.size() <= 40 && std::all_of(key.begin(), key.end(), [](unsigned char c) { return std::isalnum(c); });
-            diagnostics.push_back({displayName, plain ? key : inQuotes(key, 40),
+            diagnostics.push_back({displayName, keyInPath(key, 40),
                                    std::to_string(value.size()) + " objects; the lab reads at most " + std::to_string(limit)});
             return false;
         }

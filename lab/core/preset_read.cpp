@@ -91,10 +91,7 @@ public:
     void finish(Keys known) {
         for (const auto& [key, value] : object_.items()) {
             if (!consumed_.contains(key)) {
-                bool plain = key.size() <= 64 && std::all_of(key.begin(), key.end(), [](unsigned char c) {
-                                 return std::isalnum(c) || c == '_' || c == '-';
-                             });
-                error(plain ? key : inQuotes(key, 60),
+                error(keyInPath(key),
                       "unknown key" + std::string(hasNul(key) ? " (it holds a NUL byte)" : "") + suggestion(key, known));
             }
         }

@@ -1,6 +1,7 @@
 // safe_text.cpp — escaping for messages (see safe_text.h).
 #include "core/safe_text.h"
 
+#include <cctype>
 #include <cstdio>
 
 namespace lab {
@@ -91,6 +92,15 @@ std::string inQuotes(std::string_view value, std::size_t maxBytes) {
         return "\"" + printable(value, true) + "\"";
     }
     return "\"" + printable(cutAt(value, maxBytes), true) + "\u2026\" (" + std::to_string(value.size()) + " bytes)";
+}
+
+std::string keyInPath(std::string_view key, std::size_t maxBytes) {
+    bool plain = key.size() <= maxBytes;
+    for (char c : key) {
+        unsigned char u = static_cast<unsigned char>(c);
+        plain = plain && (std::isalnum(u) || c == '_' || c == '-');
+    }
+    return plain ? std::string(key) : inQuotes(key, maxBytes);
 }
 
 std::string shortened(std::string_view text, std::size_t maxBytes) {

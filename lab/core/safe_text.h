@@ -30,6 +30,10 @@ std::string inQuotes(std::string_view value, std::size_t maxBytes = 120);
 // messages that other libraries wrote and that may quote a whole input (tinygltf, nlohmann-json).
 std::string shortened(std::string_view text, std::size_t maxBytes = 1000);
 
+// A key from a file as it goes into a JSON path: itself when a plain name (letters, digits, '_'
+// and '-', at most `maxBytes`), else inQuotes(key, maxBytes).
+std::string keyInPath(std::string_view key, std::size_t maxBytes = 60);
+
 // True when `text` holds a NUL byte (paths and keys with one are refused as such).
 inline bool hasNul(std::string_view text) { return text.find('\0') != std::string_view::npos; }
 
