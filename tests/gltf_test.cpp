@@ -177,8 +177,8 @@ INSTANTIATE_TEST_SUITE_P(
                  [](Fixture& f, const fs::path&) { f.bin[48 + 10] = 9; }, "accessors[1]",
                  "index 9 at element 5 is beyond the 4 vertices"},
         Mutation{"bad component type for POSITION",
-                 [](Fixture& f, const fs::path&) { f.gltf["accessors"][0]["componentType"] = 5123; }, "accessors[0]",
-                 "expected FLOAT VEC3"},
+                 [](Fixture& f, const fs::path&) { f.gltf["accessors"][0]["componentType"] = 5125; }, "accessors[0]",
+                 "expected VEC3 of FLOAT, or of BYTE"},
         Mutation{"bad component type for indices",
                  [](Fixture& f, const fs::path&) { f.gltf["accessors"][1]["componentType"] = 5126; }, "accessors[1]",
                  "expected UNSIGNED_BYTE"},
@@ -237,14 +237,14 @@ INSTANTIATE_TEST_SUITE_P(
                      fs::create_directories(dir / "model" / "sub");
                      f.gltf["buffers"][0]["uri"] = "sub";
                  },
-                 "", "not a regular file"},
+                 "buffers[0].uri", "not a regular file"},
         Mutation{"URI naming a missing file", [](Fixture& f, const fs::path&) { f.gltf["buffers"][0]["uri"] = "nope.bin"; },
-                 "", "file not found"},
+                 "buffers[0].uri", "file not found"},
         Mutation{"shell expansion in a URI is not performed",
-                 [](Fixture& f, const fs::path&) { f.gltf["buffers"][0]["uri"] = "$(touch%20pwned).bin"; }, "",
+                 [](Fixture& f, const fs::path&) { f.gltf["buffers"][0]["uri"] = "$(touch%20pwned).bin"; }, "buffers[0].uri",
                  "file not found"},
         Mutation{"buffer shorter than declared", [](Fixture& f, const fs::path&) { f.gltf["buffers"][0]["byteLength"] = 600; },
-                 "", "size mismatch"},
+                 "buffers[0].byteLength", "600 bytes, more than \"quad.bin\" holds (60)"},
         Mutation{"non-finite position",
                  [](Fixture& f, const fs::path&) {
                      float inf = std::numeric_limits<float>::infinity();

@@ -12,7 +12,9 @@
 
 #include "core/file_io.h"
 #include "core/gltf_accessors.h"
+#include "core/gltf_compression.h"
 #include "core/gltf_data_uri.h"
+#include "core/gltf_extensions.h"
 #include "core/gltf_glb.h"
 #include "core/json_text.h"
 #include "core/paths.h"
@@ -31,6 +33,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <limits>
 
 namespace lab {
@@ -155,7 +158,8 @@ class Loader {
 public:
     Loader(const tinygltf::Model& model, std::vector<BufferBytes> buffers, const std::string& file, Diagnostics& out,
            const GltfLimits& limits)
-        : model_(model), accessors_(model, std::move(buffers), file, out), limits_(limits) {}
+        : model_(model), accessors_(model, std::move(buffers), file, out, std::max(limits.maxVertices, 3 * limits.maxTriangles)),
+          limits_(limits) {}
 
     bool error(const std::string& where, const std::string& message) { return accessors_.error(where, message); }
 
@@ -272,7 +276,7 @@ public:
         return true;
     }
 
-    int computedNormals() const { return computedNormals_; }
+    std::size_t computedNormals() const { return computedNormals_; }
 
 private:
     // POSITION and NORMAL (when present) of the primitive, validated and within the vertex limit.
@@ -283,7 +287,7 @@ private:
             return error(where, "has no POSITION attribute");
         }
         attributes.positionAccessor = pos->second;
-        if (!accessors_.view(pos->second, where + ".attributes.POSITION", AccessorUse::FloatVec3,
+        if (!accessors_.view(pos->second, where + ".attributes.POSITION", AccessorUse::Position,
                              attributes.positions)) {
             return false;
         }
@@ -295,7 +299,7 @@ private:
             return true;
         }
         attributes.normalAccessor = nrm->second;
-        if (!accessors_.view(nrm->second, where + ".attributes.NORMAL", AccessorUse::FloatVec3, attributes.normals)) {
+        if (!accessors_.view(nrm->second, where + ".attributes.NORMAL", AccessorUse::Normal, attributes.normals)) {
             return false;
         }
         if (attributes.normals.count != attributes.positions.count) {
@@ -332,28 +336,36 @@ private:
                          Mesh& out) {
         const auto base = static_cast<std::uint32_t>(out.positions.size());
         const bool identity = world == glm::mat4(1.0f);
-        if (!accessors_.appendVec3s(attributes.positions, attributes.positionAccessor, glm::mat3(world),
-                                    glm::vec3(world[3]), identity, false, out.positions)) {
+        if (!accessors_.appendPositions(attributes.positions, attributes.positionAccessor, glm::mat3(world),
+                                        glm::vec3(world[3]), identity, out.positions)) {
             return false;
         }
-        if (attributes.normalAccessor >= 0) {
-            glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
-            if (!accessors_.appendVec3s(attributes.normals, attributes.normalAccessor, normalMatrix, glm::vec3(0.0f),
-                                        identity, true, out.normals)) {
-                out.positions.resize(base);
-                return false;
-            }
-        } else {
-            // Computed after the node transform, so the area weights are those of the model as drawn.
-            // (A view of its own vertices, not a copy: a large model's peak memory counts, issue 14.)
-            std::vector<glm::vec3> computed =
-                computeVertexNormals(std::span<const glm::vec3>(out.positions).subspan(base), triangles);
+        // Normals that are missing, zero or not finite (some exporters write NaN for a degenerate
+        // face's vertices) are computed, after the node transform, so the area weights are those of
+        // the model as drawn. (A view of its own vertices, not a copy: a large model's peak memory
+        // counts, issue 14.)
+        const std::span<const glm::vec3> positions = std::span<const glm::vec3>(out.positions).subspan(base);
+        if (attributes.normalAccessor < 0) {
+            std::vector<glm::vec3> computed = computeVertexNormals(positions, triangles);
             if (out.normals.empty()) {
                 out.normals = std::move(computed);
             } else {
                 out.normals.insert(out.normals.end(), computed.begin(), computed.end());
             }
-            ++computedNormals_;
+            computedNormals_ += positions.size();
+        } else {
+            glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
+            const std::size_t missing = accessors_.appendNormals(attributes.normals, normalMatrix, identity, out.normals);
+            if (missing > 0) {
+                std::vector<glm::vec3> computed = computeVertexNormals(positions, triangles);
+                glm::vec3* normals = out.normals.data() + base;
+                for (std::size_t i = 0; i < computed.size(); ++i) {
+                    if (normals[i] == glm::vec3(0.0f)) {
+                        normals[i] = computed[i];
+                    }
+                }
+                computedNormals_ += missing;
+            }
         }
         if (base == 0 && out.indices.empty()) {
             out.indices = std::move(triangles);
@@ -370,7 +382,7 @@ private:
     const tinygltf::Model& model_;
     Accessors accessors_;
     const GltfLimits& limits_;
-    int computedNormals_ = 0;
+    std::size_t computedNormals_ = 0; // vertices whose normal the loader computed
 };
 
 // Refuses, with the URI and its JSON path, every buffer or image URI that is absolute, has a
@@ -466,30 +478,16 @@ bool checkJson(std::string_view json, const GltfLimits& limits, const std::strin
     return !doc.is_object() || (checkCounts(doc, limits, displayName, diagnostics) && checkUris(doc, displayName, diagnostics));
 }
 
-// What tinygltf parsed, and where a GLB's buffers stored in its BIN chunk are.
+// What tinygltf parsed, and where each buffer's bytes are.
 struct ParsedModel {
     tinygltf::Model model;
-    std::optional<std::string_view> bin;           // the GLB's BIN chunk, in the mapped file
-    std::vector<std::optional<std::size_t>> inBin; // per buffer: its byteLength when stored in `bin`
+    std::optional<std::string_view> bin;            // the GLB's BIN chunk, in the mapped file
     gltf_detail::DataUriBuffers dataUris;           // buffers decoded from base64 data: URIs (gltf_data_uri.h)
-    std::vector<std::optional<std::size_t>> inDataUri; // per buffer: its byteLength when decoded there
+    std::deque<MappedFile> external;                // .bin files the loader read itself
+    gltf_detail::ModelBuffers buffers;              // per buffer index: its bytes (then decoded ones appended)
+    std::vector<char> tinygltfReads;                // per buffer index: left to tinygltf (a data: URI our pass did not follow)
+    std::vector<std::string> notes;
 };
-
-// The bytes of each buffer: from the BIN chunk in place, or tinygltf's copy.
-std::vector<BufferBytes> bufferBytes(const ParsedModel& parsed) {
-    std::vector<BufferBytes> out;
-    for (std::size_t i = 0; i < parsed.model.buffers.size(); ++i) {
-        if (i < parsed.inDataUri.size() && parsed.inDataUri[i]) {
-            out.push_back({parsed.dataUris.bytes[i].data(), *parsed.inDataUri[i]});
-        } else if (i < parsed.inBin.size() && parsed.inBin[i] && parsed.bin) {
-            out.push_back({reinterpret_cast<const unsigned char*>(parsed.bin->data()), *parsed.inBin[i]});
-        } else {
-            const std::vector<unsigned char>& data = parsed.model.buffers[i].data;
-            out.push_back({data.data(), data.size()});
-        }
-    }
-    return out;
-}
 
 // The buffers decoded from data: URIs: each must hold its byteLength (a longer one is read up
 // to it, as a .bin file is); its JSON then says 1 byte, as the placeholder holds. False after a
@@ -499,7 +497,6 @@ bool useDecodedBuffers(nlohmann::json& doc, ParsedModel& parsed, const std::stri
     if (buffers == doc.end() || !buffers->is_array()) {
         return true;
     }
-    parsed.inDataUri.resize(buffers->size());
     for (std::size_t i = 0; i < buffers->size() && i < parsed.dataUris.decoded.size(); ++i) {
         nlohmann::json& buffer = (*buffers)[i];
         // The parser must see the placeholder where the pass put it (a duplicate "uri" key, or
@@ -519,16 +516,110 @@ bool useDecodedBuffers(nlohmann::json& doc, ParsedModel& parsed, const std::stri
                                    std::to_string(byteLength) + " bytes, more than its data: URI holds (" + std::to_string(held) + ")"});
             return false;
         }
-        parsed.inDataUri[i] = static_cast<std::size_t>(byteLength);
+        parsed.buffers.bytes[i] = {parsed.dataUris.bytes[i].data(), static_cast<std::size_t>(byteLength)};
+        buffer["byteLength"] = 1;
+    }
+    return true;
+}
+
+// A URI's %XX escapes decoded (glTF URIs are URI-encoded: Blender writes a space as %20).
+// Nullopt for a broken escape or one that decodes to NUL.
+std::optional<std::string> percentDecoded(const std::string& uri) {
+    std::string out;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] != '%') {
+            out += uri[i];
+            continue;
+        }
+        auto hex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) ? std::stoi(std::string(1, c), nullptr, 16) : -1; };
+        int hi = i + 2 < uri.size() ? hex(uri[i + 1]) : -1, lo = i + 2 < uri.size() ? hex(uri[i + 2]) : -1;
+        if (hi < 0 || lo < 0 || (hi == 0 && lo == 0)) {
+            return std::nullopt;
+        }
+        out += static_cast<char>(hi * 16 + lo);
+        i += 2;
+    }
+    return out;
+}
+
+// Buffers in files beside the model, read (mapped) by the loader through `guard`, not by
+// tinygltf: a file longer than its buffer's byteLength is allowed (the specification allows
+// it; tinygltf refuses it), a shorter one refused. Buffers without a uri that are
+// EXT_meshopt_compression fallbacks hold nothing: the compressed views are decoded instead.
+// Each becomes a placeholder for tinygltf. False after a diagnostic.
+bool readOtherBuffers(nlohmann::json& doc, bool isGlb, FileGuard& guard, std::size_t maxBytes, ParsedModel& parsed,
+                      const std::string& displayName, Diagnostics& diagnostics) {
+    auto buffers = doc.find("buffers");
+    if (buffers == doc.end() || !buffers->is_array()) {
+        return true;
+    }
+    for (std::size_t i = 0; i < buffers->size(); ++i) {
+        nlohmann::json& buffer = (*buffers)[i];
+        const std::string where = "buffers[" + std::to_string(i) + "]";
+        auto length = buffer.is_object() ? buffer.find("byteLength") : buffer.end();
+        if (!buffer.is_object() || length == buffer.end() || !length->is_number_unsigned() || parsed.buffers.bytes[i].data) {
+            continue; // resolved already, or refused by tinygltf in its own words
+        }
+        const auto byteLength = length->get<std::uint64_t>();
+        auto uri = buffer.find("uri");
+        if (uri == buffer.end()) {
+            auto ext = buffer.find("extensions");
+            const bool fallback = ext != buffer.end() && ext->is_object() && ext->contains("EXT_meshopt_compression") &&
+                                  (*ext)["EXT_meshopt_compression"].is_object() &&
+                                  (*ext)["EXT_meshopt_compression"].value("fallback", false);
+            if (fallback) {
+                static const unsigned char kNothing = 0;
+                parsed.buffers.bytes[i] = {&kNothing, 0};
+                buffer["uri"] = gltf_detail::kDecodedPlaceholder;
+                buffer["byteLength"] = 1;
+            } else if (!isGlb) {
+                diagnostics.push_back({displayName, where, "has no uri: a .gltf's buffers are files or data: URIs"});
+                return false;
+            }
+            continue;
+        }
+        if (!uri->is_string() || uri->get<std::string>().rfind("data:", 0) == 0) {
+            if (uri->is_string()) {
+                parsed.tinygltfReads[i] = 1; // a data: URI the decoding pass did not follow
+            }
+            continue;
+        }
+        std::optional<std::string> name = percentDecoded(uri->get<std::string>());
+        if (!name) {
+            diagnostics.push_back({displayName, where + ".uri", inQuotes(uri->get<std::string>()) + " has a broken %-escape"});
+            return false;
+        }
+        const std::string path = (guard.folder / *name).string();
+        std::string error;
+        if (!guardedFileExists(path, &guard)) {
+            diagnostics.push_back({displayName, where + ".uri", inQuotes(uri->get<std::string>()) + ": " + guard.refusal});
+            return false;
+        }
+        std::optional<MappedFile> file = MappedFile::open(path, maxBytes, error);
+        if (!file) {
+            diagnostics.push_back({displayName, where + ".uri", inQuotes(uri->get<std::string>()) + ": " + error});
+            return false;
+        }
+        if (file->bytes().size() < byteLength) {
+            diagnostics.push_back({displayName, where + ".byteLength",
+                                   std::to_string(byteLength) + " bytes, more than " + inQuotes(*name) + " holds (" +
+                                       std::to_string(file->bytes().size()) + ")"});
+            return false;
+        }
+        parsed.external.push_back(std::move(*file));
+        parsed.buffers.bytes[i] = {reinterpret_cast<const unsigned char*>(parsed.external.back().bytes().data()),
+                                   static_cast<std::size_t>(byteLength)};
+        buffer["uri"] = gltf_detail::kDecodedPlaceholder;
         buffer["byteLength"] = 1;
     }
     return true;
 }
 
 // The file parsed by tinygltf behind the guards: the GLB's chunks and the JSON checked first,
-// files opened only through `guard`, images skipped and counted in `skippedImages`. A GLB's
-// buffers in its BIN chunk stay there (gltf_glb.h): tinygltf parses only the JSON. Nullopt after
-// a diagnostic.
+// the glTF version and required extensions, then every buffer resolved by the loader (a GLB's
+// BIN chunk in place, data: URIs decoded, files beside the model mapped) and compressed
+// geometry decoded (gltf_compression.h); tinygltf then parses only the JSON, with placeholders
+// for the buffers. Images are skipped and counted in `skippedImages`. Nullopt after a diagnostic.
 std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, int& skippedImages,
                                       const GltfLimits& limits, const std::string& displayName,
                                       Diagnostics& diagnostics) {
@@ -566,22 +657,39 @@ std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, 
     if (!checkJson(json, limits, displayName, diagnostics, doc)) {
         return std::nullopt;
     }
-    if (dataUris && doc.is_object() && !useDecodedBuffers(doc, parsed, displayName, diagnostics)) {
-        return std::nullopt;
-    }
-    if (dataUris && doc.is_object() && !isGlb) {
-        rewritten = doc.dump();
-        json = rewritten;
-    }
-    if (isGlb && doc.is_object()) { // (malformed JSON goes to tinygltf as it is, to be refused in its words)
-        std::optional<gltf_detail::GlbBuffers> inPlace =
-            gltf_detail::glbBuffersInPlace(std::move(doc), parsed.bin, displayName, diagnostics);
-        if (!inPlace) {
+    if (doc.is_object()) { // (malformed JSON goes to tinygltf as it is, to be refused in its words)
+        if (!gltf_detail::checkVersionAndExtensions(doc, displayName, diagnostics, parsed.notes)) {
             return std::nullopt;
         }
-        rewritten = std::move(inPlace->json);
-        parsed.inBin = std::move(inPlace->inBin);
+        const std::size_t bufferCount = doc.contains("buffers") && doc["buffers"].is_array() ? doc["buffers"].size() : 0;
+        parsed.buffers.bytes.resize(bufferCount);
+        parsed.tinygltfReads.resize(bufferCount);
+        if (dataUris && !useDecodedBuffers(doc, parsed, displayName, diagnostics)) {
+            return std::nullopt;
+        }
+        if (!readOtherBuffers(doc, isGlb, guard, limits.maxFileBytes, parsed, displayName, diagnostics)) {
+            return std::nullopt;
+        }
+        if (isGlb) {
+            std::optional<std::vector<std::optional<std::size_t>>> inBin =
+                gltf_detail::glbBuffersInPlace(doc, parsed.bin, displayName, diagnostics);
+            if (!inBin) {
+                return std::nullopt;
+            }
+            for (std::size_t i = 0; i < inBin->size() && i < bufferCount; ++i) {
+                if ((*inBin)[i]) {
+                    parsed.buffers.bytes[i] = {reinterpret_cast<const unsigned char*>(parsed.bin->data()), *(*inBin)[i]};
+                }
+            }
+        }
+        const gltf_detail::DecodeLimits decodeLimits{limits.maxVertices, limits.maxTriangles, limits.maxFileBytes};
+        if (!gltf_detail::decodeMeshopt(doc, parsed.buffers, decodeLimits, displayName, diagnostics) ||
+            !gltf_detail::decodeDraco(doc, parsed.buffers, decodeLimits, displayName, diagnostics)) {
+            return std::nullopt;
+        }
+        rewritten = doc.dump();
         json = rewritten;
+        doc = nullptr; // its memory back before tinygltf builds its own
     }
     bool ok = gltf.LoadASCIIFromString(&parsed.model, &err, &warn, json.data(), static_cast<unsigned>(json.size()),
                                        guard.folder.string());
@@ -595,6 +703,13 @@ std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, 
         }
         diagnostics.push_back({displayName, "", message});
         return std::nullopt;
+    }
+    // The buffers tinygltf decoded itself, and any the JSON pass above did not see (malformed JSON never gets here).
+    for (std::size_t i = 0; i < parsed.model.buffers.size() && i < parsed.buffers.bytes.size(); ++i) {
+        if (parsed.tinygltfReads[i] || !parsed.buffers.bytes[i].data) {
+            const std::vector<unsigned char>& data = parsed.model.buffers[i].data;
+            parsed.buffers.bytes[i] = {data.data(), data.size()};
+        }
     }
     return parsed;
 }
@@ -642,8 +757,9 @@ std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& disp
     }
 
     Diagnostics out;
-    Loader loader(model, bufferBytes(*parsed), displayName, out, limits);
+    Loader loader(model, std::move(parsed->buffers.bytes), displayName, out, limits);
     GltfResult result;
+    result.notes = std::move(parsed->notes);
     std::vector<char> onPath(model.nodes.size(), 0);
     for (int root : *roots) {
         if (!loader.visit(root, glm::mat4(1.0f), onPath, 0, result.mesh, result)) {
@@ -660,7 +776,8 @@ std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& disp
                                " image(s) not loaded: the lab uses the preset's material, not glTF textures");
     }
     if (loader.computedNormals() > 0) {
-        result.notes.push_back("normals computed for " + std::to_string(loader.computedNormals()) + " primitive(s)");
+        result.notes.push_back("normals computed for " + std::to_string(loader.computedNormals()) +
+                               " vertices (missing, zero or not finite in the file)");
     }
     return result;
 }

@@ -40,17 +40,63 @@ std::size_t componentCount(int type) {
     }
 }
 
+bool isInteger8or16(int t) {
+    return t == TINYGLTF_COMPONENT_TYPE_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+           t == TINYGLTF_COMPONENT_TYPE_SHORT || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+}
+
 bool holds(const tinygltf::Accessor& a, AccessorUse use) {
-    if (use == AccessorUse::FloatVec3) {
-        return a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT && a.type == TINYGLTF_TYPE_VEC3;
+    const int t = a.componentType;
+    const bool isFloat = t == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    const bool signedNormalized = a.normalized && (t == TINYGLTF_COMPONENT_TYPE_BYTE || t == TINYGLTF_COMPONENT_TYPE_SHORT);
+    switch (use) {
+    case AccessorUse::Position: return a.type == TINYGLTF_TYPE_VEC3 && (isFloat || isInteger8or16(t));
+    case AccessorUse::Normal: return a.type == TINYGLTF_TYPE_VEC3 && (isFloat || signedNormalized);
+    case AccessorUse::Rotation: return a.type == TINYGLTF_TYPE_VEC4 && (isFloat || signedNormalized);
+    case AccessorUse::Index:
+        return a.type == TINYGLTF_TYPE_SCALAR && !a.normalized &&
+               (t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+                t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
     }
-    return a.type == TINYGLTF_TYPE_SCALAR && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                              a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-                                              a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+    return false;
 }
 
 const char* expectedFor(AccessorUse use) {
-    return use == AccessorUse::FloatVec3 ? "FLOAT VEC3" : "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT SCALAR";
+    switch (use) {
+    case AccessorUse::Position: return "VEC3 of FLOAT, or of BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT (KHR_mesh_quantization)";
+    case AccessorUse::Normal: return "VEC3 of FLOAT, or of normalized BYTE or SHORT (KHR_mesh_quantization)";
+    case AccessorUse::Rotation: return "VEC4 of FLOAT, or of normalized BYTE or SHORT";
+    case AccessorUse::Index: return "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT SCALAR";
+    }
+    return "";
+}
+
+// One component as a float, as glTF defines it: normalized integers map to [0, 1] (unsigned)
+// or [-1, 1] (signed, the lowest value clamped), others are their value.
+float component(const unsigned char* p, int type, bool normalized) {
+    switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        std::int8_t c;
+        std::memcpy(&c, p, 1);
+        return normalized ? std::max(c / 127.0f, -1.0f) : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.0f : *p;
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        std::int16_t c;
+        std::memcpy(&c, p, 2);
+        return normalized ? std::max(c / 32767.0f, -1.0f) : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        std::uint16_t c;
+        std::memcpy(&c, p, 2);
+        return normalized ? c / 65535.0f : c;
+    }
+    default: {
+        float f;
+        std::memcpy(&f, p, 4);
+        return f;
+    }
+    }
 }
 
 // The elements of a validated view as an iterator (each read with memcpy, at any alignment), so
@@ -184,63 +230,157 @@ bool Accessors::error(const std::string& where, const std::string& message) {
     return false;
 }
 
+const unsigned char* Accessors::range(int viewIndex, std::size_t byteOffset, std::size_t count, std::size_t element,
+                                      std::size_t& stride, const std::string& where) {
+    if (viewIndex < 0 || static_cast<std::size_t>(viewIndex) >= model_.bufferViews.size()) {
+        error(where, "bufferView " + std::to_string(viewIndex) + " does not exist");
+        return nullptr;
+    }
+    const tinygltf::BufferView& bv = model_.bufferViews[static_cast<std::size_t>(viewIndex)];
+    std::string bvWhere = "bufferViews[" + std::to_string(viewIndex) + "]";
+    if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= buffers_.size()) {
+        error(bvWhere, "buffer " + std::to_string(bv.buffer) + " does not exist");
+        return nullptr;
+    }
+    const BufferBytes& buffer = buffers_[static_cast<std::size_t>(bv.buffer)];
+    if (bv.byteOffset > buffer.size || bv.byteLength > buffer.size - bv.byteOffset) {
+        error(bvWhere, "byte range [" + std::to_string(bv.byteOffset) + ", +" + std::to_string(bv.byteLength) +
+                           ") lies beyond its buffer of " + std::to_string(buffer.size) + " bytes");
+        return nullptr;
+    }
+    if (stride != 0 && bv.byteStride) {
+        stride = bv.byteStride;
+        if (bv.byteStride < element || bv.byteStride > 252 || bv.byteStride % 4 != 0) {
+            error(bvWhere, "byteStride " + std::to_string(bv.byteStride) + " is invalid for elements of " +
+                               std::to_string(element) + " bytes");
+            return nullptr;
+        }
+    } else {
+        stride = element;
+    }
+    // The last element ends at byteOffset + stride * (count - 1) + element; compute it without overflow.
+    std::size_t span = 0;
+    if (count == 0 || __builtin_mul_overflow(stride, count - 1, &span) || __builtin_add_overflow(span, element, &span) ||
+        __builtin_add_overflow(span, byteOffset, &span) || span > bv.byteLength) {
+        error(where, "reads beyond its bufferView (" + std::to_string(count) + " elements from byte " +
+                         std::to_string(byteOffset) + " need more than the view's " + std::to_string(bv.byteLength) +
+                         " bytes)");
+        return nullptr;
+    }
+    return buffer.data + bv.byteOffset + byteOffset;
+}
+
+bool Accessors::materialize(const tinygltf::Accessor& a, const std::string& where, std::size_t element, View& v) {
+    if (a.count > maxElements_) {
+        return error(where, std::to_string(a.count) + " elements: the lab makes at most " + std::to_string(maxElements_) +
+                                " for a sparse accessor or one without a bufferView");
+    }
+    std::vector<unsigned char> bytes(a.count * element); // zeros, when there is no bufferView
+    if (a.bufferView >= 0) {
+        std::size_t stride = 1; // the view's own
+        const unsigned char* base = range(a.bufferView, a.byteOffset, a.count, element, stride, where);
+        if (!base) {
+            return false;
+        }
+        for (std::size_t i = 0; i < a.count; ++i) {
+            std::memcpy(bytes.data() + i * element, base + i * stride, element);
+        }
+    }
+    if (a.sparse.isSparse) {
+        const std::string sparseWhere = where + ".sparse";
+        const auto& s = a.sparse;
+        const int it = s.indices.componentType;
+        const std::size_t indexSize = it == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                                      : it == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                                      : it == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4 : 0;
+        if (indexSize == 0) {
+            return error(sparseWhere + ".indices", "componentType " + std::to_string(it) +
+                                                       " is not UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+        }
+        if (s.count < 1 || static_cast<std::size_t>(s.count) > a.count) {
+            return error(sparseWhere, "count " + std::to_string(s.count) + " is not between 1 and the accessor's " +
+                                          std::to_string(a.count) + " elements");
+        }
+        const auto n = static_cast<std::size_t>(s.count);
+        std::size_t packed = 0; // sparse arrays are tightly packed
+        const unsigned char* indices = s.indices.byteOffset < 0 ? nullptr
+            : range(s.indices.bufferView, static_cast<std::size_t>(s.indices.byteOffset), n, indexSize, packed, sparseWhere + ".indices");
+        packed = 0;
+        const unsigned char* values = s.values.byteOffset < 0 ? nullptr
+            : range(s.values.bufferView, static_cast<std::size_t>(s.values.byteOffset), n, element, packed, sparseWhere + ".values");
+        if (!indices || !values) {
+            return out_.empty() ? error(sparseWhere, "negative byteOffset") : false;
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            std::uint32_t target = 0;
+            std::memcpy(&target, indices + i * indexSize, indexSize); // little-endian, as glTF
+            if (target >= a.count) {
+                return error(sparseWhere + ".indices", "index " + std::to_string(target) + " at element " + std::to_string(i) +
+                                                           " is beyond the accessor's " + std::to_string(a.count) + " elements");
+            }
+            std::memcpy(bytes.data() + target * element, values + i * element, element);
+        }
+    }
+    made_.push_back(std::move(bytes));
+    v.data = made_.back().data();
+    v.stride = element;
+    return true;
+}
+
 bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, View& v) {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) {
         return error(usedBy, "accessor " + std::to_string(index) + " does not exist");
     }
     const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
     std::string where = "accessors[" + std::to_string(index) + "]";
-    if (a.sparse.isSparse) {
-        return error(where, "sparse accessors are not supported");
-    }
     if (!holds(a, use)) {
         return error(where, std::string("bad component type or type for ") + usedBy + ": expected " + expectedFor(use));
     }
     if (a.count == 0) {
         return error(where, "count is 0");
     }
-    if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= model_.bufferViews.size()) {
-        return error(where, "bufferView " + std::to_string(a.bufferView) + " does not exist");
-    }
-    const tinygltf::BufferView& bv = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
-    std::string bvWhere = "bufferViews[" + std::to_string(a.bufferView) + "]";
-    if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= buffers_.size()) {
-        return error(bvWhere, "buffer " + std::to_string(bv.buffer) + " does not exist");
-    }
-    const BufferBytes& buffer = buffers_[static_cast<std::size_t>(bv.buffer)];
-    if (bv.byteOffset > buffer.size || bv.byteLength > buffer.size - bv.byteOffset) {
-        return error(bvWhere, "byte range [" + std::to_string(bv.byteOffset) + ", +" +
-                                  std::to_string(bv.byteLength) + ") lies beyond its buffer of " +
-                                  std::to_string(buffer.size) + " bytes");
-    }
-    std::size_t element = componentSize(a.componentType) * componentCount(a.type);
-    std::size_t stride = bv.byteStride ? bv.byteStride : element;
-    if (bv.byteStride && (bv.byteStride < element || bv.byteStride > 252 || bv.byteStride % 4 != 0)) {
-        return error(bvWhere, "byteStride " + std::to_string(bv.byteStride) + " is invalid for elements of " +
-                                  std::to_string(element) + " bytes");
-    }
-    // The last element ends at byteOffset + stride * (count - 1) + element; compute it without overflow.
-    std::size_t span = 0;
-    if (__builtin_mul_overflow(stride, a.count - 1, &span) || __builtin_add_overflow(span, element, &span) ||
-        __builtin_add_overflow(span, a.byteOffset, &span) || span > bv.byteLength) {
-        return error(where, "reads beyond its bufferView (" + std::to_string(a.count) + " elements from byte " +
-                                std::to_string(a.byteOffset) + " need more than the view's " +
-                                std::to_string(bv.byteLength) + " bytes)");
-    }
-    v.data = buffer.data + bv.byteOffset + a.byteOffset;
-    v.stride = stride;
+    const std::size_t element = componentSize(a.componentType) * componentCount(a.type);
     v.count = a.count;
     v.componentType = a.componentType;
-    return true;
+    v.components = static_cast<int>(componentCount(a.type));
+    v.normalized = a.normalized;
+    if (a.sparse.isSparse || a.bufferView < 0) {
+        return materialize(a, where, element, v);
+    }
+    std::size_t stride = 1; // the view's own
+    v.data = range(a.bufferView, a.byteOffset, a.count, element, stride, where);
+    v.stride = stride;
+    return v.data != nullptr;
 }
 
-
 // The loops are written to vectorize: a model of a million triangles is mostly this copy.
-bool Accessors::appendVec3s(const View& v, int accessor, const glm::mat3& m, const glm::vec3& offset, bool identity,
-                            bool normalize, std::vector<glm::vec3>& out) {
+std::vector<float> Accessors::floats(const View& v) {
+    const auto n = static_cast<std::size_t>(v.components);
+    const std::size_t size = componentSize(v.componentType);
+    std::vector<float> out(v.count * n);
+    for (std::size_t i = 0; i < v.count; ++i) {
+        for (std::size_t k = 0; k < n; ++k) {
+            out[i * n + k] = component(v.data + i * v.stride + k * size, v.componentType, v.normalized);
+        }
+    }
+    return out;
+}
+
+bool Accessors::appendPositions(const View& v, int accessor, const glm::mat3& m, const glm::vec3& offset,
+                                bool identity, std::vector<glm::vec3>& out) {
     const std::string where = "accessors[" + std::to_string(accessor) + "]";
     std::size_t first = out.size();
-    append<glm::vec3>(v, out);
+    if (v.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        append<glm::vec3>(v, out);
+    } else { // quantized (KHR_mesh_quantization): every integer is a finite float
+        out.reserve(first + v.count);
+        const std::size_t size = componentSize(v.componentType);
+        for (std::size_t i = 0; i < v.count; ++i) {
+            const unsigned char* p = v.data + i * v.stride;
+            out.emplace_back(component(p, v.componentType, v.normalized), component(p + size, v.componentType, v.normalized),
+                             component(p + 2 * size, v.componentType, v.normalized));
+        }
+    }
     glm::vec3* dst = out.data() + first;
     // Infinity and NaN are the values whose exponent bits are all ones.
     if (anyNonFinite(dst, 3 * v.count)) {
@@ -255,10 +395,6 @@ bool Accessors::appendVec3s(const View& v, int accessor, const glm::mat3& m, con
         bool finite = true;
         for (std::size_t i = 0; i < v.count; ++i) {
             glm::vec3 p = m * dst[i] + offset;
-            if (normalize) {
-                float len = glm::length(p);
-                p = len > 0.0f ? p / len : glm::vec3(0, 0, 1);
-            }
             finite &= std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
             dst[i] = p;
         }
@@ -269,6 +405,43 @@ bool Accessors::appendVec3s(const View& v, int accessor, const glm::mat3& m, con
         }
     }
     return true;
+}
+
+std::size_t Accessors::appendNormals(const View& v, const glm::mat3& m, bool identity, std::vector<glm::vec3>& out) {
+    std::size_t first = out.size();
+    if (v.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        append<glm::vec3>(v, out);
+    } else {
+        out.reserve(first + v.count);
+        const std::size_t size = componentSize(v.componentType);
+        for (std::size_t i = 0; i < v.count; ++i) {
+            const unsigned char* p = v.data + i * v.stride;
+            out.emplace_back(component(p, v.componentType, true), component(p + size, v.componentType, true),
+                             component(p + 2 * size, v.componentType, true));
+        }
+    }
+    glm::vec3* dst = out.data() + first;
+    const bool anyBad = anyNonFinite(dst, 3 * v.count);
+    if (identity && !anyBad && v.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        // The common case, at memory speed: only zero normals are left to find.
+        std::size_t zero = 0;
+        for (std::size_t i = 0; i < v.count; ++i) {
+            zero += dst[i] == glm::vec3(0.0f);
+        }
+        return zero;
+    }
+    std::size_t bad = 0;
+    for (std::size_t i = 0; i < v.count; ++i) {
+        glm::vec3 n = identity ? dst[i] : m * dst[i];
+        float len = glm::length(n);
+        if (!std::isfinite(len) || !(len > 0.0f)) {
+            dst[i] = glm::vec3(0.0f);
+            ++bad;
+        } else {
+            dst[i] = identity ? n : n / len;
+        }
+    }
+    return bad;
 }
 
 

@@ -39,7 +39,7 @@ std::optional<GlbChunks> readGlbChunks(std::string_view bytes, std::string& erro
         return std::nullopt;
     }
     if (u32(bytes, 4) != 2) {
-        error = "GLB version " + std::to_string(u32(bytes, 4)) + " (expected 2)";
+        error = u32(bytes, 4) == 1 ? std::string("a binary glTF 1.0 file (GLB version 1); the lab reads glTF 2.0: export or convert the model to glTF 2.0") : "GLB version " + std::to_string(u32(bytes, 4)) + " (expected 2)";
         return std::nullopt;
     }
     if (u32(bytes, 8) != size) {
@@ -89,9 +89,13 @@ std::optional<GlbChunks> readGlbChunks(std::string_view bytes, std::string& erro
     return chunks;
 }
 
-std::optional<GlbBuffers> glbBuffersInPlace(nlohmann::json doc, const std::optional<std::string_view>& bin,
-                                            const std::string& displayName, Diagnostics& diagnostics) {
-    GlbBuffers out;
+std::optional<std::vector<std::optional<std::size_t>>> glbBuffersInPlace(nlohmann::json& doc,
+                                                                         const std::optional<std::string_view>& bin,
+                                                                         const std::string& displayName,
+                                                                         Diagnostics& diagnostics) {
+    struct {
+        std::vector<std::optional<std::size_t>> inBin;
+    } out;
     auto buffers = doc.find("buffers");
     if (buffers != doc.end() && buffers->is_array()) {
         out.inBin.resize(buffers->size());
@@ -140,8 +144,7 @@ std::optional<GlbBuffers> glbBuffersInPlace(nlohmann::json doc, const std::optio
             }
         }
     }
-    out.json = doc.dump();
-    return out;
+    return std::move(out.inBin);
 }
 
 } // namespace lab::gltf_detail

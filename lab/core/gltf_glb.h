@@ -36,17 +36,14 @@ struct GlbChunks {
 // length or field is wrong otherwise.
 std::optional<GlbChunks> readGlbChunks(std::string_view bytes, std::string& error);
 
-// Where each buffer's bytes come from once the JSON has been rewritten for tinygltf.
-struct GlbBuffers {
-    std::string json;                                // what tinygltf parses
-    std::vector<std::optional<std::size_t>> inBin;  // per buffer: its byteLength when it is stored in the BIN chunk
-};
-
-// The GLB's parsed JSON `doc` (a JSON object) rewritten for tinygltf as described above, with
-// each buffer stored in the BIN chunk checked against it: it must exist and hold the buffer's
-// byteLength. Buffers with a uri and everything else are left to tinygltf as they were.
-// Nullopt after a diagnostic naming the buffer.
-std::optional<GlbBuffers> glbBuffersInPlace(nlohmann::json doc, const std::optional<std::string_view>& bin,
-                                            const std::string& displayName, Diagnostics& diagnostics);
+// The GLB's parsed JSON `doc` (a JSON object) rewritten in place for tinygltf as described
+// above, with each buffer stored in the BIN chunk checked against it: it must exist and hold the
+// buffer's byteLength. Returns, per buffer, its byteLength when it is stored in the BIN chunk.
+// Buffers with a uri and everything else are left to the loader as they were. Nullopt after a
+// diagnostic naming the buffer.
+std::optional<std::vector<std::optional<std::size_t>>> glbBuffersInPlace(nlohmann::json& doc,
+                                                                         const std::optional<std::string_view>& bin,
+                                                                         const std::string& displayName,
+                                                                         Diagnostics& diagnostics);
 
 } // namespace lab::gltf_detail
