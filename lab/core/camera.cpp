@@ -1,4 +1,4 @@
-// camera.cpp — orbit, zoom and pan.
+// camera.cpp — orbit, zoom, pan and framing.
 #include "core/camera.h"
 
 #include "core/limits.h"
@@ -65,6 +65,74 @@ void panCamera(Camera& camera, float dx, float dy) {
     camera.eye += move;
     camera.target += move;
     keepCameraValid(camera);
+}
+
+//----------------------------------------------------------------------------------------
+// Framing
+//----------------------------------------------------------------------------------------
+
+namespace {
+
+constexpr float kFramedShare = 0.8f;      // of the view's smaller side that the sphere spans
+constexpr float kMinFramedRadius = 1.0e-3f; // smaller spheres are framed as this (near stays in range)
+constexpr float kMaxFramedRadius = 1.0e7f;  // (a finite bound for the arithmetic; such a model cannot be framed anyway)
+
+// The distance at which a sphere of `radius` spans kFramedShare of a view whose smaller half
+// angle has tangent `tanHalf`: its silhouette's half angle a has tan a = kFramedShare · tanHalf
+// and sin a = radius / distance.
+float framingDistance(float radius, float tanHalf) {
+    return radius / std::sin(std::atan(kFramedShare * tanHalf));
+}
+
+} // namespace
+
+Sphere sphereAround(glm::vec3 boundsMin, glm::vec3 boundsMax) {
+    return {(boundsMin + boundsMax) * 0.5f, glm::length(boundsMax - boundsMin) * 0.5f};
+}
+
+Camera framedCamera(const Camera& base, glm::vec3 boundsMin, glm::vec3 boundsMax, float aspect) {
+    return framedCamera(base, sphereAround(boundsMin, boundsMax), aspect);
+}
+
+Camera framedCamera(const Camera& base, const Sphere& sphere, float aspect) {
+    Camera c = base;
+    glm::vec3 dir = base.eye - base.target;
+    float length = glm::length(dir);
+    dir = length > 0.0f && std::isfinite(length) ? dir / length : glm::vec3(0.0f, 0.0f, 1.0f);
+    float radius = std::isfinite(sphere.radius) ? std::clamp(sphere.radius, kMinFramedRadius, kMaxFramedRadius)
+                                                : kMinFramedRadius;
+    aspect = aspect > 0.0f && std::isfinite(aspect) ? aspect : 1.0f;
+
+    // The smaller of the vertical and horizontal half angles decides (tan halfX = tan halfY · aspect).
+    float tanHalfY = std::tan(glm::radians(limits::clamp(limits::kFovyDeg, base.fovyDeg)) * 0.5f);
+    float tanHalf = tanHalfY * std::min(1.0f, aspect);
+    float distance = framingDistance(radius, tanHalf);
+
+    // The target inside the coordinate range, as keepCameraValid keeps it; the eye as far back as
+    // the range allows along the direction.
+    c.target = sphere.center;
+    keepCameraValid(c); // (only the target matters here; the eye is set below)
+    float room = limits::kUnbounded;
+    for (int i = 0; i < 3; ++i) {
+        if (dir[i] > 0.0f) {
+            room = std::min(room, (limits::kCoordinate.max - c.target[i]) / dir[i]);
+        } else if (dir[i] < 0.0f) {
+            room = std::min(room, (limits::kCoordinate.min - c.target[i]) / dir[i]);
+        }
+    }
+    if (distance > room) { // too far for the range: nearer, with a wider view
+        distance = room;
+        float sinA = std::min(radius / distance, 0.999f);
+        float tanA = sinA / std::sqrt(1.0f - sinA * sinA);
+        float fovy = glm::degrees(2.0f * std::atan(tanA / kFramedShare / std::min(1.0f, aspect)));
+        c.fovyDeg = limits::clamp(limits::kFovyDeg, std::max(base.fovyDeg, fovy));
+    }
+    c.eye = c.target + dir * distance;
+    // The default camera's ratios: near 0.1 and far 100 at a distance of 4.
+    c.near = limits::clamp(limits::kNear, distance / 40.0f);
+    c.far = std::max(limits::clamp(limits::kFar, distance * 25.0f), limits::nextUp(c.near));
+    keepCameraValid(c);
+    return c;
 }
 
 } // namespace lab

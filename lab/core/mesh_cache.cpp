@@ -27,4 +27,13 @@ std::shared_ptr<const Mesh> MeshCache::get(const Model& model, const std::filesy
     return entries_.back().mesh;
 }
 
+std::shared_ptr<const Mesh> MeshCache::get(LoadedPreset& preset, Diagnostics& diagnostics,
+                                           std::vector<std::string>* notes) {
+    std::shared_ptr<const Mesh> mesh = get(preset.preset.model, preset.folder(), diagnostics, notes);
+    if (mesh) {
+        frameOmitted(preset, *mesh);
+    }
+    return mesh;
+}
+
 } // namespace lab

@@ -27,6 +27,14 @@ public:
     std::shared_ptr<const Mesh> get(const Model& model, const std::filesystem::path& folder,
                                     Diagnostics& diagnostics, std::vector<std::string>* notes = nullptr);
 
+    // The mesh of a loaded preset, which meets it here: a glTF model whose file left out
+    // `camera` (and `lights`) is framed (frameOmitted, core/model_loader.h), so that from then
+    // on the preset holds an ordinary camera. Every consumer of a preset file loads its mesh
+    // through this: `lab render` and `lab check` (OffscreenRenderer), the GUI and the page
+    // (Workspace::open).
+    std::shared_ptr<const Mesh> get(LoadedPreset& preset, Diagnostics& diagnostics,
+                                    std::vector<std::string>* notes = nullptr);
+
     std::size_t size() const { return entries_.size(); }
 
 private:

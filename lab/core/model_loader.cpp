@@ -1,7 +1,16 @@
-// model_loader.cpp — builtin or glTF, through the same checks as preset loading.
+// model_loader.cpp — builtin or glTF, through the same checks as preset loading; framing.
 #include "core/model_loader.h"
 
 #include "core/gltf.h"
+#include "core/lighting.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace lab {
 
@@ -39,6 +48,48 @@ std::optional<Mesh> loadModel(const Model& model, const std::filesystem::path& f
         }
     }
     return std::move(result->mesh);
+}
+
+std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model) {
+    if (mesh.positions.empty()) {
+        return std::nullopt;
+    }
+    const glm::mat4 m = modelMatrix(model);
+    auto drawn = [&](const glm::vec3& p) { return glm::vec3(m * glm::vec4(p, 1.0f)); };
+    glm::vec3 lo(limits::kUnbounded), hi(-limits::kUnbounded);
+    for (const glm::vec3& p : mesh.positions) {
+        glm::vec3 q = drawn(p);
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
+    }
+    Sphere s{(lo + hi) * 0.5f, 0.0f};
+    float farthest2 = 0.0f;
+    for (const glm::vec3& p : mesh.positions) {
+        glm::vec3 d = drawn(p) - s.center;
+        farthest2 = std::max(farthest2, glm::dot(d, d));
+    }
+    s.radius = std::sqrt(farthest2);
+    return s;
+}
+
+void frameOmitted(LoadedPreset& loaded, const Mesh& mesh) {
+    OmittedKeys omitted = std::exchange(loaded.omitted, OmittedKeys{});
+    Preset& p = loaded.preset;
+    if (p.model.gltf.empty() || !omitted.camera) {
+        return;
+    }
+    std::optional<Sphere> bounds = drawnBounds(mesh, p.model);
+    if (!bounds) {
+        return;
+    }
+    p.camera = framedCamera(Camera{}, *bounds);
+    if (omitted.lights) {
+        p.lights = Preset{}.lights;
+        for (LightDesc& light : p.lights) {
+            light.position = glm::clamp(bounds->center + light.position * std::max(bounds->radius, 1.0e-3f),
+                                        glm::vec3(limits::kCoordinate.min), glm::vec3(limits::kCoordinate.max));
+        }
+    }
 }
 
 } // namespace lab

@@ -1,6 +1,7 @@
 // model_loader.h — the mesh a preset's `model` names: a built-in shape or a glTF file.
 #pragma once
 
+#include "core/camera.h"
 #include "core/diagnostics.h"
 #include "core/mesh.h"
 #include "core/preset.h"
@@ -21,5 +22,18 @@ std::string modelCacheKey(const Model& model, const std::filesystem::path& folde
 
 std::optional<Mesh> loadModel(const Model& model, const std::filesystem::path& folder, Diagnostics& diagnostics,
                               std::vector<std::string>* notes = nullptr);
+
+// The bounding sphere of `mesh` as `model` draws it (after its scale, rotation and translation):
+// centred on the box around the transformed positions, through the farthest of them. nullopt
+// for a mesh without positions.
+std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model);
+
+// Framing, for a preset met with its mesh (MeshCache::get does it for every consumer). A glTF
+// model whose file had no `camera` gets framedCamera(default camera, drawnBounds), at aspect 1:
+// it looks along -z, as the default camera does. Without `lights` either, the default light
+// stands where it stands for a unit sphere, scaled to the model: centre + (2, 2, 2) · radius
+// (inside the coordinate range). Built-in models and keys the file had are left as they are.
+// Clears `preset.omitted`: the camera and lights are then the preset's own, and saved as such.
+void frameOmitted(LoadedPreset& preset, const Mesh& mesh);
 
 } // namespace lab

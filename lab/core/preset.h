@@ -116,19 +116,31 @@ struct Preset {
 // Default subdivisions of each built-in when the preset does not give them.
 glm::ivec2 defaultSubdivisions(Builtin builtin);
 
+// The keys a preset file left out whose defaults only suit a unit-size model. A glTF model in
+// a file without `camera` is framed, and without `lights` either it is lit relative to its
+// bounds (frameOmitted, core/model_loader.h), by whoever meets the preset with its mesh. That
+// consumer clears these: from then on the preset holds an ordinary camera and lights.
+struct OmittedKeys {
+    bool camera = false;
+    bool lights = false;
+    bool operator==(const OmittedKeys&) const = default;
+};
+
 // A preset together with where it came from; the folder is what glTF paths are relative to.
 struct LoadedPreset {
     Preset preset;
     std::filesystem::path file; // empty when parsed from memory
+    OmittedKeys omitted = {};   // what the file left out (all false once framed)
     std::filesystem::path folder() const { return file.empty() ? std::filesystem::path{} : file.parent_path(); }
 };
 
 // Parses and validates preset JSON text. `displayName` prefixes every diagnostic ("red.json").
 // `folder`, when given, is where a glTF model path is resolved and must stay inside; when
-// absent, a glTF model is refused (nothing to resolve it against).
+// absent, a glTF model is refused (nothing to resolve it against). `omitted`, when given,
+// receives which of `camera` and `lights` the text left out.
 std::optional<Preset> parsePreset(std::string_view text, const std::string& displayName,
                                   const std::optional<std::filesystem::path>& folder,
-                                  Diagnostics& diagnostics);
+                                  Diagnostics& diagnostics, OmittedKeys* omitted = nullptr);
 
 // Reads, parses and validates a preset file (at most kMaxPresetBytes).
 std::optional<LoadedPreset> loadPreset(const std::filesystem::path& file, Diagnostics& diagnostics);

@@ -547,7 +547,8 @@ std::optional<fs::path> resolveModelPath(const std::string& gltf, const fs::path
 }
 
 std::optional<Preset> parsePreset(std::string_view text, const std::string& displayName,
-                                  const std::optional<fs::path>& folder, Diagnostics& diagnostics) {
+                                  const std::optional<fs::path>& folder, Diagnostics& diagnostics,
+                                  OmittedKeys* omitted) {
     std::optional<Json> json = parseObject(text, displayName, diagnostics);
     if (!json) {
         return std::nullopt;
@@ -562,6 +563,9 @@ std::optional<Preset> parsePreset(std::string_view text, const std::string& disp
         diagnostics.insert(diagnostics.end(), out.begin(), out.end());
         return std::nullopt;
     }
+    if (omitted) {
+        *omitted = {!r.has("camera"), !r.has("lights")};
+    }
     return preset;
 }
 
@@ -573,11 +577,12 @@ std::optional<LoadedPreset> loadPreset(const fs::path& file, Diagnostics& diagno
         return std::nullopt;
     }
     fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-    std::optional<Preset> preset = parsePreset(*text, file.string(), folder, diagnostics);
+    OmittedKeys omitted;
+    std::optional<Preset> preset = parsePreset(*text, file.string(), folder, diagnostics, &omitted);
     if (!preset) {
         return std::nullopt;
     }
-    return LoadedPreset{std::move(*preset), file};
+    return LoadedPreset{std::move(*preset), file, omitted};
 }
 
 } // namespace lab

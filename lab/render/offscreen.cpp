@@ -9,7 +9,8 @@ bool OffscreenRenderer::init(Diagnostics& diagnostics) { return renderer_.init(d
 std::optional<Image> OffscreenRenderer::render(const LoadedPreset& preset, int width, int height,
                                                Diagnostics& diagnostics, std::vector<std::string>* notes) {
     Diagnostics problems;
-    std::shared_ptr<const Mesh> mesh = meshes_.get(preset.preset.model, preset.folder(), problems, notes);
+    LoadedPreset framed = preset; // a glTF model without a camera in its file is framed here (mesh_cache.h)
+    std::shared_ptr<const Mesh> mesh = meshes_.get(framed, problems, notes);
     if (!mesh) {
         for (Diagnostic& d : problems) {
             d.file = d.file.empty() ? preset.file.string() : preset.file.string() + ": " + d.file;
@@ -24,7 +25,7 @@ std::optional<Image> OffscreenRenderer::render(const LoadedPreset& preset, int w
         return std::nullopt;
     }
     target.bind();
-    renderer_.draw(preset.preset, mesh, Viewport{0, 0, width, height});
+    renderer_.draw(framed.preset, mesh, Viewport{0, 0, width, height});
     return target.readRgb();
 }
 

@@ -23,7 +23,8 @@ public:
     bool init(Diagnostics& diagnostics);
 
     // Renders at width × height. Problems with the preset's model are reported with the
-    // preset's file name; `notes` gets what the model loader skipped.
+    // preset's file name; `notes` gets what the model loader skipped. A glTF model whose file
+    // has no camera is framed first (MeshCache::get), the same way whatever the size.
     std::optional<Image> render(const LoadedPreset& preset, int width, int height, Diagnostics& diagnostics,
                                 std::vector<std::string>* notes = nullptr);
 

@@ -1,0 +1,269 @@
+// framing_test.cpp — a glTF model in a preset without a camera is framed, whatever its size.
+//
+// Real files written at test time: a box as .gltf + .bin, 0.01, 1 and 1000 units across, in a
+// preset with no `camera` (and no `lights`) key, loaded with loadPreset and rendered with the
+// OffscreenRenderer that `lab render` and `lab check` use. The model must cover a similar share
+// of each image and touch no border; an explicit camera, a `lights` key and built-in models are
+// left as they are. The unit tests of framedCamera itself are in camera_test.cpp.
+#include "core/camera.h"
+#include "core/mesh_cache.h"
+#include "core/model_loader.h"
+#include "core/preset.h"
+#include "platform/headless_gl.h"
+#include "render/offscreen.h"
+#include "test_files.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+
+namespace lab {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kSize = 96;
+
+// An axis-aligned box `size` units long (x), 0.6 · size high and 0.4 · size deep, centred on
+// size · (3, -2, 1), as `name`.gltf with its buffer in `name`.bin (positions and indices, no
+// normals: the lab computes them). Counter-clockwise faces seen from outside.
+void writeBox(const fs::path& folder, const std::string& name, float size) {
+    const glm::vec3 center = size * glm::vec3(3.0f, -2.0f, 1.0f);
+    const glm::vec3 half = size * glm::vec3(0.5f, 0.3f, 0.2f);
+    std::array<glm::vec3, 8> corners;
+    for (int i = 0; i < 8; ++i) { // bit 0: +x, bit 1: +y, bit 2: +z
+        corners[static_cast<std::size_t>(i)] =
+            center + half * glm::vec3(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f, i & 4 ? 1.0f : -1.0f);
+    }
+    const std::array<std::uint16_t, 36> indices = {0, 2, 1, 1, 2, 3,  4, 5, 6, 5, 7, 6,  0, 4, 2, 2, 4, 6,
+                                                   1, 3, 5, 3, 7, 5,  0, 1, 4, 1, 5, 4,  2, 6, 3, 3, 6, 7};
+    std::string bin(sizeof corners + sizeof indices, '\0');
+    std::memcpy(bin.data(), corners.data(), sizeof corners);
+    std::memcpy(bin.data() + sizeof corners, indices.data(), sizeof indices);
+    writeText(folder / (name + ".bin"), bin);
+    glm::vec3 lo = center - half, hi = center + half;
+    auto vec = [](glm::vec3 v) {
+        return "[" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + "]";
+    };
+    writeText(folder / (name + ".gltf"),
+              R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "buffers": [{"uri": ")" + name + R"(.bin", "byteLength": )" + std::to_string(bin.size()) + R"(}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 72}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3", "min": )" +
+                  vec(lo) + R"(, "max": )" + vec(hi) + R"(},
+                {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}]})");
+}
+
+// A preset naming `gltf`, turned and moved in proportion to `size` (so that every size is the
+// same scene at another scale), with `extra` keys ("" for none).
+fs::path writePreset(const fs::path& folder, const std::string& name, const std::string& gltf, float size,
+                     const std::string& extra = "", float scale = 1.0f) {
+    fs::path file = folder / (name + ".json");
+    std::string t = std::to_string(size);
+    std::string s = std::to_string(scale);
+    writeText(file, R"({"format": "lighting-lab-preset", "version": 1,
+  "model": {"gltf": ")" + gltf + R"(", "rotate_deg": [20, 30, 0], "translate": [)" + t + ", " + t +
+                        R"(, 0], "scale": [)" + s + ", " + s + ", " + s + "]}" + extra + "}");
+    return file;
+}
+
+LoadedPreset load(const fs::path& file) {
+    Diagnostics d;
+    std::optional<LoadedPreset> p = loadPreset(file, d);
+    EXPECT_TRUE(p) << toString(d);
+    return p ? *p : LoadedPreset{};
+}
+
+// The preset as its consumers see it once it met its mesh.
+Preset framed(const fs::path& file) {
+    LoadedPreset p = load(file);
+    MeshCache cache;
+    Diagnostics d;
+    EXPECT_TRUE(cache.get(p, d)) << toString(d);
+    EXPECT_EQ(p.omitted, OmittedKeys{}) << "framing is done once: the preset then holds its camera";
+    return p.preset;
+}
+
+// What an image of a preset shows: the share of pixels that are not the background, and
+// whether any of them lies on the border.
+struct Coverage {
+    double share = 0.0;
+    bool onBorder = false;
+};
+
+Coverage coverage(const Image& image, glm::vec3 background) {
+    Coverage c;
+    const glm::ivec3 bg = glm::ivec3(glm::round(background * 255.0f));
+    int model = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const std::uint8_t* p = &image.rgb[3 * static_cast<std::size_t>(y * image.width + x)];
+            glm::ivec3 d = glm::abs(glm::ivec3(p[0], p[1], p[2]) - bg);
+            if (std::max({d.x, d.y, d.z}) > 2) {
+                ++model;
+                c.onBorder = c.onBorder || x == 0 || y == 0 || x == image.width - 1 || y == image.height - 1;
+            }
+        }
+    }
+    c.share = static_cast<double>(model) / (image.width * image.height);
+    return c;
+}
+
+class Framing : public testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        gl_ = new HeadlessGl;
+        std::string error;
+        ASSERT_TRUE(gl_->create(error)) << error;
+        renderer_ = new OffscreenRenderer;
+        Diagnostics d;
+        ASSERT_TRUE(renderer_->init(d)) << toString(d);
+    }
+    static void TearDownTestSuite() {
+        delete renderer_;
+        delete gl_;
+        renderer_ = nullptr;
+        gl_ = nullptr;
+    }
+    static Image render(const fs::path& preset) {
+        Diagnostics d;
+        std::optional<Image> image = renderer_->render(load(preset), kSize, kSize, d);
+        EXPECT_TRUE(image) << toString(d);
+        return image ? *image : Image{};
+    }
+    static inline HeadlessGl* gl_ = nullptr;
+    static inline OffscreenRenderer* renderer_ = nullptr;
+    TempFolder dir;
+};
+
+TEST_F(Framing, AModelOfAnySizeFillsASimilarShareAndTouchesNoBorder) {
+    ASSERT_NE(renderer_, nullptr);
+    std::vector<Image> images;
+    std::vector<double> shares;
+    for (float size : {0.01f, 1.0f, 1000.0f}) {
+        std::string name = "box-" + std::to_string(size);
+        writeBox(dir.path(), name, size);
+        Image image = render(writePreset(dir.path(), name, name + ".gltf", size));
+        Coverage c = coverage(image, Preset{}.background);
+        EXPECT_GT(c.share, 0.08) << "size " << size << ": the model should fill a fair share of the view";
+        EXPECT_FALSE(c.onBorder) << "size " << size << ": the model touches the image's border";
+        shares.push_back(c.share);
+        images.push_back(std::move(image));
+    }
+    double lo = *std::min_element(shares.begin(), shares.end()), hi = *std::max_element(shares.begin(), shares.end());
+    EXPECT_LT(hi / lo, 1.5) << "shares " << shares[0] << ", " << shares[1] << ", " << shares[2];
+    // Camera and light scale with the model, so each size is the same picture.
+    for (std::size_t i : {0u, 2u}) {
+        Comparison cmp = compareImages(images[i], images[1], Tolerance{});
+        EXPECT_TRUE(cmp.passes(Tolerance{})) << "size " << (i == 0 ? 0.01 : 1000.0) << " vs 1: max "
+                                             << cmp.maxDifference << ", over tolerance " << cmp.failingShare;
+    }
+}
+
+TEST_F(Framing, TheModelIsFramedAsDrawnAfterItsScale) {
+    ASSERT_NE(renderer_, nullptr);
+    writeBox(dir.path(), "unit", 1.0f);
+    writeBox(dir.path(), "large", 1000.0f);
+    // The unit box scaled by 1000 in the preset is the 1000-unit box.
+    Image scaled = render(writePreset(dir.path(), "scaled", "unit.gltf", 1000.0f, "", 1000.0f));
+    Image large = render(writePreset(dir.path(), "large", "large.gltf", 1000.0f));
+    Comparison cmp = compareImages(scaled, large, Tolerance{});
+    EXPECT_TRUE(cmp.passes(Tolerance{})) << "max " << cmp.maxDifference << ", over tolerance " << cmp.failingShare;
+    EXPECT_FALSE(coverage(scaled, Preset{}.background).onBorder);
+}
+
+TEST_F(Framing, TheDefaultCameraDoesNotShowALargeModel) {
+    // The test above can fail: the same 1000-unit model with the default camera written out.
+    ASSERT_NE(renderer_, nullptr);
+    writeBox(dir.path(), "large", 1000.0f);
+    Image image = render(writePreset(dir.path(), "large", "large.gltf", 1000.0f, R"(, "camera": {})"));
+    Coverage c = coverage(image, Preset{}.background);
+    EXPECT_TRUE(c.share < 0.08 || c.onBorder) << c.share;
+}
+
+//----------------------------------------------------------------------------------------
+// What the preset holds after framing (no GL)
+//----------------------------------------------------------------------------------------
+
+TEST(FramingPreset, TheFileSaysWhichKeysItLeftOut) {
+    TempFolder dir;
+    writeBox(dir.path(), "box", 1.0f);
+    EXPECT_EQ(load(writePreset(dir.path(), "bare", "box.gltf", 1.0f)).omitted, (OmittedKeys{true, true}));
+    EXPECT_EQ(load(writePreset(dir.path(), "cam", "box.gltf", 1.0f, R"(, "camera": {})")).omitted,
+              (OmittedKeys{false, true}));
+    EXPECT_EQ(load(writePreset(dir.path(), "lit", "box.gltf", 1.0f, R"(, "lights": [])")).omitted,
+              (OmittedKeys{true, false}));
+}
+
+TEST(FramingPreset, AnExplicitCameraIsUsedAsItIs) {
+    TempFolder dir;
+    writeBox(dir.path(), "box", 1000.0f);
+    Preset p = framed(writePreset(dir.path(), "cam", "box.gltf", 1000.0f,
+                                  R"(, "camera": {"eye": [1, 2, 30], "fovy_deg": 30})"));
+    Camera expected;
+    expected.eye = {1, 2, 30};
+    expected.fovyDeg = 30;
+    EXPECT_EQ(p.camera, expected);
+    EXPECT_EQ(p.lights, Preset{}.lights) << "a camera given: the default light stays where it is";
+}
+
+TEST(FramingPreset, WithoutLightsTheDefaultLightStandsRelativeToTheBounds) {
+    TempFolder dir;
+    writeBox(dir.path(), "box", 1000.0f);
+    fs::path file = writePreset(dir.path(), "bare", "box.gltf", 1000.0f);
+    Preset p = framed(file);
+
+    MeshCache cache;
+    Diagnostics d;
+    std::shared_ptr<const Mesh> mesh = cache.get(p.model, dir.path(), d);
+    ASSERT_TRUE(mesh) << toString(d);
+    std::optional<Sphere> bounds = drawnBounds(*mesh, p.model);
+    ASSERT_TRUE(bounds);
+    // The box's half diagonal is 1000 · |(0.5, 0.3, 0.2)|, wherever it was turned.
+    EXPECT_NEAR(bounds->radius, 1000.0f * glm::length(glm::vec3(0.5f, 0.3f, 0.2f)), 0.5f);
+    ASSERT_EQ(p.lights.size(), 1u);
+    glm::vec3 expected = bounds->center + glm::vec3(2.0f) * bounds->radius;
+    EXPECT_LT(glm::distance(p.lights[0].position, expected), 1e-3f * bounds->radius);
+    LightDesc rest = p.lights[0];
+    rest.position = LightDesc{}.position;
+    EXPECT_EQ(rest, LightDesc{}) << "only the position moves";
+    EXPECT_EQ(p.camera, framedCamera(Camera{}, *bounds)) << "the default camera's direction, aspect 1";
+    EXPECT_LT(glm::distance(p.camera.target, bounds->center), 1e-3f * bounds->radius);
+
+    // A `lights` key is kept as it is.
+    Preset lit = framed(writePreset(dir.path(), "lit", "box.gltf", 1000.0f,
+                                    R"(, "lights": [{"type": "directional", "direction": [0, 0, -1]}])"));
+    ASSERT_EQ(lit.lights.size(), 1u);
+    EXPECT_EQ(lit.lights[0].type, LightType::Directional);
+    EXPECT_EQ(lit.lights[0].position, LightDesc{}.position);
+    EXPECT_EQ(lit.camera, p.camera) << "framed all the same";
+}
+
+TEST(FramingPreset, BuiltInModelsAreNeverFramed) {
+    TempFolder dir;
+    fs::path file = dir.path() / "cube.json";
+    writeText(file, R"({"format": "lighting-lab-preset", "version": 1, "model": {"builtin": "cube", "scale": [50, 50, 50]}})");
+    Preset p = framed(file);
+    EXPECT_EQ(p.camera, Camera{});
+    EXPECT_EQ(p.lights, Preset{}.lights);
+}
+
+TEST(FramingPreset, SavedAfterFramingTheCameraIsWrittenOut) {
+    TempFolder dir;
+    writeBox(dir.path(), "box", 0.01f);
+    Preset p = framed(writePreset(dir.path(), "bare", "box.gltf", 0.01f));
+    Diagnostics d;
+    ASSERT_TRUE(savePreset(p, dir.path() / "saved.json", d)) << toString(d);
+    LoadedPreset back = load(dir.path() / "saved.json");
+    EXPECT_EQ(back.omitted, OmittedKeys{}) << "a saved preset has every key";
+    EXPECT_EQ(back.preset, p);
+}
+
+} // namespace
+} // namespace lab
