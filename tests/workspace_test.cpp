@@ -3,7 +3,9 @@
 // says why.
 #include "app/workspace.h"
 
+#include "core/camera.h"
 #include "core/link.h"
+#include "core/model_loader.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>
@@ -254,6 +256,71 @@ TEST(Workspace, ADroppedModelInsideTheFolderBecomesTheModelAndOneOutsideIsRefuse
 
     f.ws.drop({(f.dir.path() / "notes.txt").string()});
     EXPECT_EQ(f.ws.takeProblems().size(), 1u);
+}
+
+// Framing (README: Presets, Framing): a dropped model is framed at the view's aspect in the same
+// undo step as the model change; F frames the current model; a preset without a camera opens framed.
+TEST(Workspace, ADroppedModelIsFramedInOneUndoStepWithTheModel) {
+    Fixture f;
+    fs::copy_file(kModel, f.dir.path() / "trefoil.glb");
+    f.ws.a().camera.eye = {1.0f, 2.0f, 30.0f}; // looking from somewhere else, far away
+    f.ws.endFrame(false);
+    Preset before = f.ws.a();
+    f.ws.setViewAspect(2.0f);
+    f.ws.drop({(f.dir.path() / "trefoil.glb").string()});
+    f.ws.endFrame(false);
+    EXPECT_TRUE(f.ws.takeProblems().empty());
+    ASSERT_EQ(f.ws.a().model.gltf, "trefoil.glb");
+    std::optional<Sphere> bounds = drawnBounds(*f.ws.meshA(), f.ws.a().model);
+    ASSERT_TRUE(bounds);
+    EXPECT_EQ(f.ws.a().camera, framedCamera(before.camera, *bounds, 2.0f)) << "along the current direction";
+    EXPECT_EQ(f.ws.b().camera, f.ws.a().camera);
+    f.ws.run({Command::Undo});
+    EXPECT_EQ(f.ws.a(), before) << "one undo restores the model and the camera together";
+    f.ws.run({Command::Redo});
+    EXPECT_EQ(f.ws.a().model.gltf, "trefoil.glb");
+    EXPECT_EQ(f.ws.a().camera, framedCamera(before.camera, *bounds, 2.0f));
+}
+
+TEST(Workspace, FFramesTheModelAndIsUndoable) {
+    EXPECT_EQ(commandForKey('F', kNoModifier, false), Command::FrameModel);
+    Fixture f;
+    f.ws.a().camera.eye = {0.0f, 0.0f, 50.0f};
+    f.ws.endFrame(false);
+    f.ws.setViewAspect(0.5f);
+    f.ws.run({Command::FrameModel});
+    f.ws.endFrame(false);
+    // The unit sphere (radius 1) in a view half as wide as high: the width decides.
+    EXPECT_EQ(f.ws.a().camera, framedCamera(Camera{}, Sphere{glm::vec3(0.0f), 1.0f}, 0.5f));
+    EXPECT_FALSE(f.ws.document().dirty()) << "a camera move, like the gestures";
+    f.ws.run({Command::Undo});
+    EXPECT_EQ(f.ws.a().camera.eye, glm::vec3(0.0f, 0.0f, 50.0f));
+}
+
+TEST(Workspace, APresetWithoutACameraOpensFramedAndKeepsThatCamera) {
+    Fixture f;
+    fs::copy_file(kModel, f.dir.path() / "trefoil.glb");
+    fs::path bare = f.dir.path() / "bare.json";
+    writeText(bare, R"({"format": "lighting-lab-preset", "version": 1, "model": {"gltf": "trefoil.glb", "scale": [100, 100, 100]}})");
+    f.ws.open(bare);
+    ASSERT_TRUE(f.ws.takeProblems().empty());
+    ASSERT_EQ(f.ws.document().file(), bare);
+    std::optional<Sphere> bounds = drawnBounds(*f.ws.meshA(), f.ws.a().model);
+    ASSERT_TRUE(bounds);
+    Camera framed = framedCamera(Camera{}, *bounds);
+    EXPECT_EQ(f.ws.a().camera, framed);
+    EXPECT_FALSE(f.ws.document().dirty());
+    EXPECT_EQ(f.ws.a().lights[0].position, bounds->center + glm::vec3(2.0f) * bounds->radius);
+    f.ws.a().camera.eye.x += 5.0f; // look around, then R: back to the framed camera, the preset's own
+    f.ws.endFrame(false);
+    f.ws.run({Command::ResetCamera});
+    EXPECT_EQ(f.ws.a().camera, framed);
+    ASSERT_TRUE(f.ws.saveTo(f.dir.path() / "saved.json"));
+    Diagnostics d;
+    std::optional<LoadedPreset> saved = loadPreset(f.dir.path() / "saved.json", d);
+    ASSERT_TRUE(saved) << toString(d);
+    EXPECT_EQ(saved->preset.camera, framed) << "saved as an ordinary camera";
+    EXPECT_EQ(saved->omitted, OmittedKeys{});
 }
 
 TEST(Workspace, SavingElsewhereRebasesTheModelPath) {

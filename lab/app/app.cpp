@@ -375,6 +375,8 @@ FrameOutput App::frame(const FrameInput& in) {
     //--- layout -> UI -> requests ---------------------------------------------------------
     ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.panels == Impl::Panels::All,
                                            m.panels != Impl::Panels::None, m.panel.tab});
+    const ui::Rect& viewA = ws.view.compare ? layout.viewA : layout.view;
+    ws.setViewAspect(viewA.h > 0.0f ? viewA.w / viewA.h : 1.0f); // what F and a dropped model are framed for
     ui::ScreenModel model = m.screenModel();
     model.clicks = clicksOf(in.events, m.pressed);
     model.panelInfo.compareStacked = layout.compareStacked;

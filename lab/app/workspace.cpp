@@ -2,7 +2,9 @@
 #include "app/workspace.h"
 
 #include "core/enums.h"
+#include "core/camera.h"
 #include "core/link.h"
+#include "core/model_loader.h"
 #include "core/paths.h"
 #include "core/safe_text.h"
 
@@ -147,6 +149,7 @@ bool Workspace::runEdit(Command command) {
     case Command::ToggleNormalMatrix: e.normalMatrix = nextOf(kNormalMatrixModes, e.normalMatrix); return true;
     case Command::NextViewMode: view.mode = nextOf(kViewModes, view.mode); return true;
     case Command::ResetCamera: doc_.preset.camera = doc_.saved().camera; return true;
+    case Command::FrameModel: frameModel(); return true;
     case Command::ToggleCompare:
         view.compare = !view.compare;
         view.editingB = false;
@@ -204,7 +207,7 @@ void Workspace::open(const fs::path& file) {
         problem("Cannot open " + file.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }
-    if (!meshes_.get(loaded->preset.model, loaded->folder(), d)) {
+    if (!meshes_.get(*loaded, d)) { // (a glTF model without a camera in the file is framed here)
         problem("Cannot load the model of " + file.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }
@@ -319,7 +322,16 @@ void Workspace::useModel(const fs::path& path) {
         return;
     }
     doc_.preset.model = candidate;
+    frameModel(); // in the same frame as the model: one undo step
     notes_.push_back(notes.empty() ? "Model " + candidate.gltf : notes.front());
+}
+
+// A's camera moved to show all of A's model, looking the way it looks now (B follows A's camera).
+void Workspace::frameModel() {
+    std::shared_ptr<const Mesh> mesh = meshA();
+    if (std::optional<Sphere> bounds = mesh ? drawnBounds(*mesh, doc_.preset.model) : std::nullopt) {
+        doc_.preset.camera = framedCamera(doc_.preset.camera, *bounds, viewAspect_);
+    }
 }
 
 void Workspace::drop(const std::vector<std::string>& files) {

@@ -71,7 +71,11 @@ public:
     void open(const std::filesystem::path& file);
     void openLink(const std::string& fragment); // "preset=name" or "p=..." (core/link.h)
     bool saveTo(const std::filesystem::path& file);
-    void useModel(const std::filesystem::path& file); // a .gltf/.glb becomes the model
+    void useModel(const std::filesystem::path& file); // a .gltf/.glb becomes the model, framed
+    // The camera frames A's model (core/camera.h framedCamera) at the view's aspect (setViewAspect).
+    void frameModel();
+    // The 3D view's width / height (A's half in compare mode), for framing; the app sets it each frame.
+    void setViewAspect(float aspect) { viewAspect_ = aspect; }
     void drop(const std::vector<std::string>& files);
     void requestQuit();
     // A PNG of the view into the screenshot folder (a download in the browser).
@@ -128,6 +132,7 @@ private:
     Resolved resolvedA_, resolvedB_;
     std::vector<std::filesystem::path> presetFiles_;
     int currentPreset_ = -1;
+    float viewAspect_ = 1.0f;
     std::optional<std::string> question_;
     std::function<void()> pending_;
     bool quit_ = false;

@@ -33,6 +33,7 @@ constexpr std::array kRows = {
     CommandRow{C::PresenterSmaller,   keys::KeypadSubtract, kCtrl,        "Smaller",          "",                                                      true},
     CommandRow{C::ToggleFullscreen,   keys::F11,           kNoModifier,   "Fullscreen",       "fullscreen",                                            true},
     CommandRow{C::ResetCamera,        'R',                 kNoModifier,   "Reset camera (R)", "reset the camera to the preset's"},
+    CommandRow{C::FrameModel,         'F',                 kNoModifier,   "Frame model (F)",  "frame the model: the camera moves to show all of it"},
     CommandRow{C::Screenshot,         keys::F12,           kNoModifier,   "Screenshot",       "screenshot of the 3D view to PNG",                      true},
     CommandRow{C::Undo,               'Z',                 kCtrl,         "Undo",             "undo"},
     CommandRow{C::Redo,               'Y',                 kCtrl,         "Redo",             "redo"},

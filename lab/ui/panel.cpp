@@ -371,6 +371,8 @@ void cameraSection(Preset& p, std::vector<Request>& requests) {
     dragVec3("target", p.camera.target, 0.02f, limits::kCoordinate.min, limits::kCoordinate.max);
     limitedSlider("fovy (deg)", p.camera.fovyDeg, limits::kFovyDeg, "%.1f");
     commandButton(Command::ResetCamera, requests);
+    sameLineIfFits(commandRow(Command::FrameModel).label);
+    commandButton(Command::FrameModel, requests);
     disabledWrapped("Left drag: orbit  Right drag: pan  Wheel: zoom (a finger orbits, two pan and pinch)");
     // Keep the camera valid whatever was dragged.
     keepCameraValid(p.camera);

@@ -139,6 +139,21 @@ TEST(Gui, DroppedGltfModelIsLoaded) {
     lab.settle();
     EXPECT_FALSE(lab.has("error"));
     EXPECT_GT(changedShare(lab.viewShot(), sphere), 0.05) << "the knot should replace the sphere";
+    // The drop framed the knot in the same undo step: one Ctrl+Z brings back the sphere and its camera.
+    lab.moveTo(view.cx(), view.cy());
+    lab.press("z", "Control_L");
+    EXPECT_EQ(compareImages(lab.viewShot(), sphere, Tolerance{}).maxDifference, 0);
+}
+
+TEST(Gui, FFramesTheModelAndCtrlZUndoesIt) {
+    START_LAB(lab, "--preset", preset("05-full-phong"));
+    Rect view = lab.widget("view");
+    lab.moveTo(view.cx(), view.cy());
+    Image before = lab.viewShot();
+    lab.press("f");
+    EXPECT_GT(changedShare(lab.viewShot(), before), 0.02) << "framed, the sphere fills more of the view";
+    lab.press("z", "Control_L");
+    EXPECT_EQ(compareImages(lab.viewShot(), before, Tolerance{}).maxDifference, 0);
 }
 
 // An idle lab draws nothing (issue 12: it used to redraw continuously, 150% CPU under llvmpipe),
