@@ -255,12 +255,19 @@ public:
             if (static_cast<std::size_t>(node.mesh) >= model_.meshes.size()) {
                 return error(where, "mesh " + std::to_string(node.mesh) + " does not exist");
             }
-            if (std::abs(glm::determinant(glm::mat3(world))) < 1e-20f) {
-                result.notes.push_back(where + ": skipped (its transform collapses the mesh)");
-            } else {
-                auto mi = static_cast<std::size_t>(node.mesh);
+            std::vector<glm::mat4> placements{world}; // the node's, or one per EXT_mesh_gpu_instancing instance
+            if (!instances(node, where, world, placements)) {
+                return false;
+            }
+            auto mi = static_cast<std::size_t>(node.mesh);
+            for (const glm::mat4& placement : placements) {
+                if (std::abs(glm::determinant(glm::mat3(placement))) < 1e-20f) {
+                    result.notes.push_back(where + ": skipped" + (placements.size() > 1 ? " an instance" : "") +
+                                           " (its transform collapses the mesh)");
+                    continue;
+                }
                 for (std::size_t pi = 0; pi < model_.meshes[mi].primitives.size(); ++pi) {
-                    if (!addPrimitive(mi, pi, world, out, result)) {
+                    if (!addPrimitive(mi, pi, placement, out, result)) {
                         return false;
                     }
                 }
@@ -279,6 +286,73 @@ public:
     std::size_t computedNormals() const { return computedNormals_; }
 
 private:
+    // EXT_mesh_gpu_instancing: the node's mesh drawn once per instance, each placed by its
+    // TRANSLATION, ROTATION and SCALE (T * R * S, as a node's own) under the node's world matrix.
+    // `placements` is left as it is for a node without the extension. False after a diagnostic.
+    bool instances(const tinygltf::Node& node, const std::string& where, const glm::mat4& world,
+                   std::vector<glm::mat4>& placements) {
+        auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
+        if (ext == node.extensions.end() || !ext->second.IsObject() || !ext->second.Has("attributes") ||
+            !ext->second.Get("attributes").IsObject()) {
+            return true;
+        }
+        const tinygltf::Value& attributes = ext->second.Get("attributes");
+        const std::string extWhere = where + ".extensions.EXT_mesh_gpu_instancing.attributes";
+        std::size_t count = 0;
+        std::vector<float> values[3]; // translation, rotation, scale
+        const char* names[3] = {"TRANSLATION", "ROTATION", "SCALE"};
+        for (int k = 0; k < 3; ++k) {
+            if (!attributes.Has(names[k])) {
+                continue;
+            }
+            const tinygltf::Value& index = attributes.Get(names[k]);
+            View v;
+            if (!index.IsInt() || !accessors_.view(index.GetNumberAsInt(), extWhere + "." + names[k],
+                                                   k == 1 ? AccessorUse::Rotation : AccessorUse::Position, v)) {
+                return index.IsInt() ? false : error(extWhere + "." + names[k], "not an accessor index");
+            }
+            if (count != 0 && v.count != count) {
+                return error(extWhere + "." + names[k], std::to_string(v.count) + " instances, but another attribute has " +
+                                                            std::to_string(count));
+            }
+            count = v.count;
+            if (instanceCount_ + count > limits_.maxInstances) {
+                return error(extWhere, "more than " + std::to_string(limits_.maxInstances) + " instances in the model");
+            }
+            values[k] = accessors_.floats(v);
+        }
+        if (count == 0) {
+            return true;
+        }
+        instanceCount_ += count;
+        placements.clear();
+        placements.reserve(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+            if (!values[0].empty()) {
+                t[3] = glm::vec4(values[0][3 * i], values[0][3 * i + 1], values[0][3 * i + 2], 1.0f);
+            }
+            if (!values[1].empty()) {
+                glm::quat q(values[1][4 * i + 3], values[1][4 * i], values[1][4 * i + 1], values[1][4 * i + 2]);
+                const float len = glm::length(q);
+                r = len > 0.0f && std::isfinite(len) ? glm::mat4_cast(q / len) : glm::mat4(1.0f);
+            }
+            if (!values[2].empty()) {
+                s = glm::scale(glm::mat4(1.0f), glm::vec3(values[2][3 * i], values[2][3 * i + 1], values[2][3 * i + 2]));
+            }
+            const glm::mat4 m = world * t * r * s;
+            for (int c = 0; c < 4; ++c) {
+                for (int k = 0; k < 4; ++k) {
+                    if (!std::isfinite(m[c][k])) {
+                        return error(extWhere, "instance " + std::to_string(i) + " has a transform that is not finite");
+                    }
+                }
+            }
+            placements.push_back(m);
+        }
+        return true;
+    }
+
     // POSITION and NORMAL (when present) of the primitive, validated and within the vertex limit.
     bool readAttributes(const tinygltf::Primitive& prim, const std::string& where, const Mesh& out,
                         Attributes& attributes) {
@@ -383,6 +457,7 @@ private:
     Accessors accessors_;
     const GltfLimits& limits_;
     std::size_t computedNormals_ = 0; // vertices whose normal the loader computed
+    std::size_t instanceCount_ = 0;   // EXT_mesh_gpu_instancing instances, all nodes together
 };
 
 // Refuses, with the URI and its JSON path, every buffer or image URI that is absolute, has a
@@ -706,7 +781,7 @@ std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, 
     }
     // The buffers tinygltf decoded itself, and any the JSON pass above did not see (malformed JSON never gets here).
     for (std::size_t i = 0; i < parsed.model.buffers.size() && i < parsed.buffers.bytes.size(); ++i) {
-        if (parsed.tinygltfReads[i] || !parsed.buffers.bytes[i].data) {
+        if (i < parsed.tinygltfReads.size() && (parsed.tinygltfReads[i] || !parsed.buffers.bytes[i].data)) {
             const std::vector<unsigned char>& data = parsed.model.buffers[i].data;
             parsed.buffers.bytes[i] = {data.data(), data.size()};
         }

@@ -8,7 +8,13 @@
 //   * bounds vertex, index and triangle counts before allocating,
 //   * skips images (the lab uses the preset's material, not glTF materials or textures).
 // Every triangle primitive (triangles, strips, fans) of the default scene contributes, with
-// the node transforms applied; missing normals are computed (area-weighted). No rescaling.
+// the node transforms applied (and once per instance of EXT_mesh_gpu_instancing); normals that
+// are missing, zero or not finite are computed (area-weighted). No rescaling: a preset without
+// a camera frames the model instead (core/camera.h).
+//
+// Besides core glTF 2.0 (sparse accessors too), it reads KHR_mesh_quantization,
+// EXT_mesh_gpu_instancing, KHR_draco_mesh_compression and EXT_meshopt_compression
+// (gltf_compression.h); extensionsRequired and the version are checked first (gltf_extensions.h).
 #pragma once
 
 #include "core/diagnostics.h"
@@ -33,6 +39,7 @@ struct GltfLimits {
     std::size_t maxPrimitives = 200'000; // all meshes' together
     std::size_t maxAccessors = 1'000'000;
     std::size_t maxOtherObjects = 100'000; // bufferViews, buffers, materials, images, ..., each
+    std::size_t maxInstances = 100'000;    // EXT_mesh_gpu_instancing instances, all nodes together
 };
 
 struct GltfResult {

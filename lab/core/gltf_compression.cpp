@@ -294,15 +294,10 @@ bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits&
                 return fail(diagnostics, displayName, where, "the Draco data decodes to " + std::to_string(points) + " points and " +
                                                                  std::to_string(faces) + " triangles, more than the lab reads");
             }
-            // The accessors the primitive names must describe what was decoded.
+            // The accessors' own counts are not checked against what was decoded: the new accessors
+            // below take the decoded counts (Draco may split or merge points; readers such as
+            // three.js go by the decoded data too).
             nlohmann::json& accessors = doc["accessors"];
-            auto accessorCount = [&](const nlohmann::json& index) -> std::optional<std::uint64_t> {
-                if (!index.is_number_unsigned() || !accessors.is_array() || index.get<std::uint64_t>() >= accessors.size() ||
-                    !accessors[index.get<std::size_t>()].is_object()) {
-                    return std::nullopt;
-                }
-                return unsignedField(accessors[index.get<std::size_t>()], "count");
-            };
             std::vector<unsigned char> data;
             nlohmann::json newAttributes = nlohmann::json::object();
             for (const char* name : {"POSITION", "NORMAL"}) {
@@ -327,12 +322,6 @@ bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits&
                 if (!prim.contains("attributes") || !prim["attributes"].is_object() || !prim["attributes"].contains(name)) {
                     continue; // the primitive does not use it
                 }
-                std::optional<std::uint64_t> count = accessorCount(prim["attributes"][name]);
-                if (!count || *count != points) {
-                    return fail(diagnostics, displayName, primWhere + ".attributes." + name,
-                                "its accessor's count " + (count ? std::to_string(*count) : std::string("(missing)")) +
-                                    " is not the " + std::to_string(points) + " points the Draco data decodes to");
-                }
                 const std::size_t at = data.size();
                 data.resize(at + points * 12);
                 for (std::size_t p = 0; p < points; ++p) {
@@ -344,14 +333,6 @@ bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits&
                     std::memcpy(data.data() + at + p * 12, xyz, 12);
                 }
                 newAttributes[name] = at; // byte offset, turned into an accessor below
-            }
-            if (prim.contains("indices")) {
-                std::optional<std::uint64_t> count = accessorCount(prim["indices"]);
-                if (!count || *count != 3 * faces) {
-                    return fail(diagnostics, displayName, primWhere + ".indices",
-                                "its accessor's count " + (count ? std::to_string(*count) : std::string("(missing)")) +
-                                    " is not the " + std::to_string(3 * faces) + " indices the Draco data decodes to");
-                }
             }
             const std::size_t indicesAt = data.size();
             data.resize(indicesAt + faces * 12);
