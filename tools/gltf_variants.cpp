@@ -425,9 +425,9 @@ GltfVariant instancing(const Mesh& torus, const fs::path& folder) {
 
 } // namespace
 
-std::vector<GltfVariant> writeGltfVariants(const fs::path& folder) {
+std::vector<GltfVariant> writeGltfVariants(const fs::path& folder, int major, int minor) {
     fs::create_directories(folder);
-    const Mesh torus = makeTorus(24, 12);
+    const Mesh torus = makeTorus(major, minor);
     std::vector<GltfVariant> out;
     writePlain(torus, kOneNode, folder / "plain.glb");
 

@@ -31,6 +31,7 @@ struct GltfVariant {
 };
 
 // Writes every variant (and its twin) into `folder` (created), returns them in a fixed order.
-std::vector<GltfVariant> writeGltfVariants(const std::filesystem::path& folder);
+// The torus has `major` × `minor` segments (small ones make small fuzzer seeds).
+std::vector<GltfVariant> writeGltfVariants(const std::filesystem::path& folder, int major = 24, int minor = 12);
 
 } // namespace lab::tools
