@@ -185,8 +185,11 @@ TEST(Camera, FramingStaysInsideTheRanges) {
         expectValid(tiny);
         EXPECT_TRUE(reach(tiny, Sphere{glm::vec3(1.0f), 1e-3f}, 1.0f).betweenNearAndFar);
     }
-    // Far outside the range: the target at its edge, the camera still valid.
+    // Far outside the range, or not finite: the target at its edge or the base's, the camera still valid.
     expectValid(framedCamera(Camera{}, Sphere{glm::vec3(5e4f, 0.0f, -5e4f), 10.0f}, 1.0f));
+    Camera lost = framedCamera(Camera{}, Sphere{glm::vec3(std::nanf(""), INFINITY, 0.0f), INFINITY}, 1.0f);
+    expectValid(lost);
+    EXPECT_EQ(lost.target, Camera{}.target);
 }
 
 } // namespace

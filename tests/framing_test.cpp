@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -243,6 +244,21 @@ TEST(FramingPreset, WithoutLightsTheDefaultLightStandsRelativeToTheBounds) {
     EXPECT_EQ(lit.lights[0].type, LightType::Directional);
     EXPECT_EQ(lit.lights[0].position, LightDesc{}.position);
     EXPECT_EQ(lit.camera, p.camera) << "framed all the same";
+}
+
+TEST(FramingPreset, DrawnBoundsAreTheSphereOfTheTransformedPositions) {
+    Mesh m;
+    EXPECT_FALSE(drawnBounds(m, Model{})) << "nothing to frame";
+    m.positions = {{1.0f, 2.0f, 3.0f}, {3.0f, 2.0f, 1.0f}, {2.0f, 2.0f, 2.0f}};
+    Model model;
+    model.scale = glm::vec3(2.0f);
+    model.translate = {0.0f, 0.0f, -10.0f};
+    std::optional<Sphere> s = drawnBounds(m, model);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->center, glm::vec3(4.0f, 4.0f, -6.0f));
+    EXPECT_FLOAT_EQ(s->radius, 2.0f * std::sqrt(2.0f));
+    m.positions = {{3e38f, 0.0f, 0.0f}, {-3e38f, 0.0f, 0.0f}}; // beyond float once scaled
+    EXPECT_FALSE(drawnBounds(m, model));
 }
 
 TEST(FramingPreset, BuiltInModelsAreNeverFramed) {

@@ -110,7 +110,8 @@ Camera framedCamera(const Camera& base, const Sphere& sphere, float aspect) {
 
     // The target inside the coordinate range, as keepCameraValid keeps it; the eye as far back as
     // the range allows along the direction.
-    c.target = sphere.center;
+    bool finite = std::isfinite(sphere.center.x) && std::isfinite(sphere.center.y) && std::isfinite(sphere.center.z);
+    c.target = finite ? sphere.center : base.target;
     keepCameraValid(c); // (only the target matters here; the eye is set below)
     float room = limits::kUnbounded;
     for (int i = 0; i < 3; ++i) {

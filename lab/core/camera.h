@@ -22,8 +22,9 @@ Sphere sphereAround(glm::vec3 boundsMin, glm::vec3 boundsMax);
 // (width / height), touching no border. Near and far stand in the default camera's ratio to the
 // distance (0.1 and 100 at 4): the sphere lies well between them, and zooming in or out by the
 // gestures' limits keeps it there. Everything stays inside core/limits.h: a radius below 0.001
-// is framed as 0.001, and where the eye would leave the coordinate range it stays at the edge
-// and the field of view widens (up to 179°) to fit the sphere.
+// is framed as 0.001 (as is one that is not a number; a centre that is not finite is `base`'s
+// target), and where the eye would leave the coordinate range it stays at the edge and the field
+// of view widens (up to 179°) to fit the sphere.
 Camera framedCamera(const Camera& base, const Sphere& sphere, float aspect = 1.0f);
 Camera framedCamera(const Camera& base, glm::vec3 boundsMin, glm::vec3 boundsMax, float aspect = 1.0f);
 

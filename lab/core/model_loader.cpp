@@ -69,6 +69,10 @@ std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model) {
         farthest2 = std::max(farthest2, glm::dot(d, d));
     }
     s.radius = std::sqrt(farthest2);
+    if (!std::isfinite(s.radius) || !std::isfinite(s.center.x) || !std::isfinite(s.center.y) ||
+        !std::isfinite(s.center.z)) {
+        return std::nullopt; // coordinates that overflow float once scaled: nothing to frame
+    }
     return s;
 }
 

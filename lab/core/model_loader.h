@@ -25,7 +25,7 @@ std::optional<Mesh> loadModel(const Model& model, const std::filesystem::path& f
 
 // The bounding sphere of `mesh` as `model` draws it (after its scale, rotation and translation):
 // centred on the box around the transformed positions, through the farthest of them. nullopt
-// for a mesh without positions.
+// for a mesh without positions, or one whose drawn coordinates overflow float.
 std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model);
 
 // Framing, for a preset met with its mesh (MeshCache::get does it for every consumer). A glTF
