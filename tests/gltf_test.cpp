@@ -414,7 +414,7 @@ INSTANTIATE_TEST_SUITE_P(
                         b = f.bytes();
                         put(b, 4, 1);
                     },
-                    "", "GLB version 1 (expected 2)"},
+                    "", "a binary glTF 1.0 file (GLB version 1)"},
         GlbMutation{"total length shorter than the file",
                     [](GlbFixture& f, std::string& b) {
                         b = f.bytes();

@@ -50,9 +50,11 @@ std::string trefoilGlb() {
     auto at = [&](int i, int j) { return static_cast<std::uint32_t>((i % kAround) * kTube + (j % kTube)); };
     for (int i = 0; i < kAround; ++i) {
         for (int j = 0; j < kTube; ++j) {
-            // Counter-clockwise seen from outside the tube.
-            indices.insert(indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            indices.insert(indices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+            // Counter-clockwise seen from outside the tube: j turns from N towards B = T x N, so
+            // (along j) x (along i) points out. (The first version had them the other way round, and
+            // the lab computed normals that pointed into the tube: the knot looked lit from behind.)
+            indices.insert(indices.end(), {at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+            indices.insert(indices.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1)});
         }
     }
     using Json = nlohmann::ordered_json;

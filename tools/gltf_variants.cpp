@@ -453,6 +453,21 @@ std::vector<GltfVariant> writeGltfVariants(const fs::path& folder, int major, in
     out.push_back(meshopt(torus, folder));
     out.push_back(instancing(torus, folder));
 
+    { // A mirroring node (negative determinant): glTF winds its triangles clockwise; computed
+      // normals must still point out. The twin is the mirrored torus stored counter-clockwise.
+        Mesh noNormals = torus;
+        noNormals.normals.clear();
+        writePlain(noNormals, Json::array({{{"mesh", 0}, {"scale", {-1.0, 1.0, 1.0}}}}), folder / "mirrored.glb");
+        Mesh twin = noNormals;
+        for (glm::vec3& p : twin.positions) {
+            p.x = -p.x;
+        }
+        for (std::size_t t = 0; t + 2 < twin.indices.size(); t += 3) {
+            std::swap(twin.indices[t + 1], twin.indices[t + 2]);
+        }
+        writePlain(twin, kOneNode, folder / "mirrored-twin.glb");
+        out.emplace_back("a node that mirrors the mesh, normals computed", folder / "mirrored.glb", folder / "mirrored-twin.glb");
+    }
     { // Some normals NaN (as a Blender export of degenerate faces has): computed for those vertices only.
         Mesh nan = torus, twin = torus;
         const std::vector<glm::vec3> computed = computeVertexNormals(torus.positions, torus.indices);

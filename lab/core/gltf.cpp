@@ -187,6 +187,14 @@ public:
         if (sequence.size() / 3 > limits_.maxTriangles - std::min(limits_.maxTriangles, out.triangleCount())) {
             return error(where, "more than " + std::to_string(limits_.maxTriangles) + " triangles in the model");
         }
+        // glTF: a node whose world transform mirrors (negative determinant) has its triangles wound
+        // clockwise. The lab's meshes are counter-clockwise in model space, which is what computed
+        // normals and flat shading's face normals follow, so a mirrored primitive is turned round.
+        if (glm::determinant(glm::mat3(world)) < 0.0f) {
+            for (std::size_t t = 0; t + 2 < sequence.size(); t += 3) {
+                std::swap(sequence[t + 1], sequence[t + 2]);
+            }
+        }
         return appendPrimitive(attributes, std::move(sequence), world, out);
     }
 
