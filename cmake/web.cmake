@@ -1,7 +1,8 @@
 # web.cmake — what the browser build (emcmake cmake, Debian's Emscripten 3.1.6) needs instead of
 # find_package: Debian's header-only libraries through a folder of links (never -I/usr/include,
 # which would bring glibc's headers), Dear ImGui compiled from Debian's source package, and the
-# link options of the page. Included from CMakeLists.txt when EMSCRIPTEN is set.
+# link options of the page, and the glTF decoders (meshoptimizer, Draco) compiled from Debian's
+# source packages. Included from CMakeLists.txt when EMSCRIPTEN is set.
 
 # GLM, nlohmann-json, stb and tinygltf headers, and nothing else from /usr/include.
 set(LAB_WEB_INCLUDE "${CMAKE_BINARY_DIR}/web-include")
@@ -19,17 +20,24 @@ target_include_directories(lab_web_headers SYSTEM INTERFACE "${LAB_WEB_INCLUDE}"
 target_compile_options(lab_web_headers INTERFACE -fwasm-exceptions)
 target_link_options(lab_web_headers INTERFACE -fwasm-exceptions)
 
-# Dear ImGui 1.86 from Debian's source package, cached in the build folder.
-set(LAB_IMGUI_SOURCE_DIR "" CACHE PATH "Dear ImGui sources (fetched from Debian's source package when empty)")
-if(NOT LAB_IMGUI_SOURCE_DIR)
-  execute_process(
-    COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/tools/fetch-imgui-source" "${CMAKE_BINARY_DIR}/_deps"
-    OUTPUT_VARIABLE fetched OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE failed)
-  if(failed OR NOT EXISTS "${fetched}/imgui.cpp")
-    message(FATAL_ERROR "could not fetch the Dear ImGui sources with apt-get source (see above)")
+# Sources that Debian ships only in source packages, fetched at the version of the installed -dev
+# package (tools/fetch-debian-source) and cached in the build folder: lab_fetch_source(VAR SOURCE
+# BINARY FILE) sets the cache path VAR unless it is set already, and checks FILE is in it.
+function(lab_fetch_source var source binary file)
+  set(${var} "" CACHE PATH "${source} sources (fetched from Debian's source package when empty)")
+  if(NOT ${var})
+    execute_process(
+      COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/tools/fetch-debian-source" ${source} ${binary} "${CMAKE_BINARY_DIR}/_deps"
+      OUTPUT_VARIABLE fetched OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE failed)
+    if(failed OR NOT EXISTS "${fetched}/${file}")
+      message(FATAL_ERROR "could not fetch the ${source} sources with apt-get source (see above)")
+    endif()
+    set(${var} "${fetched}" CACHE PATH "${source} sources" FORCE)
   endif()
-  set(LAB_IMGUI_SOURCE_DIR "${fetched}" CACHE PATH "Dear ImGui sources" FORCE)
-endif()
+endfunction()
+
+# Dear ImGui 1.86 from Debian's source package.
+lab_fetch_source(LAB_IMGUI_SOURCE_DIR imgui libimgui-dev imgui.cpp)
 set(imgui "${LAB_IMGUI_SOURCE_DIR}")
 add_library(lab_imgui STATIC
   "${imgui}/imgui.cpp" "${imgui}/imgui_draw.cpp" "${imgui}/imgui_tables.cpp" "${imgui}/imgui_widgets.cpp"
@@ -38,6 +46,76 @@ add_library(lab_imgui STATIC
 target_include_directories(lab_imgui SYSTEM PUBLIC "${imgui}" "${imgui}/misc/cpp")
 target_compile_definitions(lab_imgui PUBLIC IMGUI_IMPL_OPENGL_ES3 IMGUI_DISABLE_DEMO_WINDOWS)
 target_compile_options(lab_imgui PUBLIC -fwasm-exceptions) # GLFW's header is in Emscripten's sysroot
+
+# The glTF loader's decoders (lab/core/gltf*), as the native build has them from libmeshoptimizer-dev
+# and libdraco-dev: compiled from the same Debian source packages, decoders only. Each is a static
+# library with its headers and a PUBLIC definition (LAB_HAVE_MESHOPT, LAB_HAVE_DRACO) that lab_core
+# gets through lab_web_headers. Compiled with -fwasm-exceptions like the rest, so a std::bad_alloc
+# from a decoder's allocation (sizes come from the file) unwinds to the loader.
+# meshoptimizer 0.18 (EXT_meshopt_compression): the vertex and index codecs and the filters
+# (+6 KB of gzip in lab.wasm).
+lab_fetch_source(LAB_MESHOPT_SOURCE_DIR meshoptimizer libmeshoptimizer-dev src/meshoptimizer.h)
+set(meshopt "${LAB_MESHOPT_SOURCE_DIR}/src")
+add_library(lab_meshopt STATIC "${meshopt}/vertexcodec.cpp" "${meshopt}/indexcodec.cpp" "${meshopt}/vertexfilter.cpp")
+target_include_directories(lab_meshopt SYSTEM PUBLIC "${meshopt}")
+target_compile_definitions(lab_meshopt PUBLIC LAB_HAVE_MESHOPT=1)
+target_compile_options(lab_meshopt PRIVATE -fwasm-exceptions)
+target_link_libraries(lab_web_headers INTERFACE lab_meshopt)
+
+# Draco 1.5.5 (KHR_draco_mesh_compression): Decoder::DecodeMeshFromBuffer with the features of the
+# bitstream glTF names (2.2, as Draco's own DRACO_GLTF_BITSTREAM option: meshes, sequential and
+# edgebreaker connectivity, standard and valence, normal encoding), in its own draco_features.h;
+# Debian's also has point clouds, pre-2.2 bitstreams, and the transcoder, which needs Eigen. Only
+# the sources that decoding a mesh links: about 80 s of CPU to compile, +40 KB of gzip in lab.wasm.
+lab_fetch_source(LAB_DRACO_SOURCE_DIR draco libdraco-dev src/draco/compression/decode.cc)
+set(draco "${LAB_DRACO_SOURCE_DIR}/src/draco")
+set(LAB_DRACO_CONFIG "${CMAKE_BINARY_DIR}/draco-config")
+file(CONFIGURE OUTPUT "${LAB_DRACO_CONFIG}/draco/draco_features.h" CONTENT [[
+// The features of Draco's glTF bitstream, as its CMake option DRACO_GLTF_BITSTREAM has them.
+#ifndef DRACO_FEATURES_H_
+#define DRACO_FEATURES_H_
+#define DRACO_MESH_COMPRESSION_SUPPORTED
+#define DRACO_NORMAL_ENCODING_SUPPORTED
+#define DRACO_STANDARD_EDGEBREAKER_SUPPORTED
+#endif
+]])
+add_library(lab_draco STATIC
+  "${draco}/attributes/attribute_octahedron_transform.cc"
+  "${draco}/attributes/attribute_quantization_transform.cc"
+  "${draco}/attributes/attribute_transform.cc"
+  "${draco}/attributes/geometry_attribute.cc"
+  "${draco}/attributes/point_attribute.cc"
+  "${draco}/compression/attributes/attributes_decoder.cc"
+  "${draco}/compression/attributes/sequential_attribute_decoder.cc"
+  "${draco}/compression/attributes/sequential_attribute_decoders_controller.cc"
+  "${draco}/compression/attributes/sequential_integer_attribute_decoder.cc"
+  "${draco}/compression/attributes/sequential_normal_attribute_decoder.cc"
+  "${draco}/compression/attributes/sequential_quantization_attribute_decoder.cc"
+  "${draco}/compression/bit_coders/rans_bit_decoder.cc"
+  "${draco}/compression/decode.cc"
+  "${draco}/compression/entropy/symbol_decoding.cc"
+  "${draco}/compression/mesh/mesh_decoder.cc"
+  "${draco}/compression/mesh/mesh_edgebreaker_decoder.cc"
+  "${draco}/compression/mesh/mesh_edgebreaker_decoder_impl.cc"
+  "${draco}/compression/mesh/mesh_sequential_decoder.cc"
+  "${draco}/compression/point_cloud/point_cloud_decoder.cc"
+  "${draco}/core/bit_utils.cc"
+  "${draco}/core/data_buffer.cc"
+  "${draco}/core/decoder_buffer.cc"
+  "${draco}/core/draco_types.cc"
+  "${draco}/core/options.cc"
+  "${draco}/core/quantization_utils.cc"
+  "${draco}/mesh/corner_table.cc"
+  "${draco}/mesh/mesh.cc"
+  "${draco}/mesh/mesh_attribute_corner_table.cc"
+  "${draco}/metadata/geometry_metadata.cc"
+  "${draco}/metadata/metadata.cc"
+  "${draco}/metadata/metadata_decoder.cc"
+  "${draco}/point_cloud/point_cloud.cc")
+target_include_directories(lab_draco SYSTEM PUBLIC "${LAB_DRACO_CONFIG}" "${LAB_DRACO_SOURCE_DIR}/src")
+target_compile_definitions(lab_draco PUBLIC LAB_HAVE_DRACO=1)
+target_compile_options(lab_draco PRIVATE -fwasm-exceptions)
+target_link_libraries(lab_web_headers INTERFACE lab_draco)
 
 # The UI font, cut down to the characters the UI can show (the glyph ranges ImGuiHost asks for,
 # lab/platform/imgui_host.cpp: Latin-1, Greek, dashes and the ellipsis, arrows, minus, <= and >=)
