@@ -48,7 +48,7 @@ namespace {
 
 // The member `key` of `object` as an unsigned integer: `fallback` when absent, nullopt when
 // present but not one.
-std::optional<std::uint64_t> unsignedField(const nlohmann::json& object, const char* key,
+[[maybe_unused]] std::optional<std::uint64_t> unsignedField(const nlohmann::json& object, const char* key,
                                            std::optional<std::uint64_t> fallback = std::nullopt) {
     auto it = object.find(key);
     if (it == object.end()) {
@@ -58,7 +58,7 @@ std::optional<std::uint64_t> unsignedField(const nlohmann::json& object, const c
 }
 
 // The object at doc[list][i].extensions[name], or nullptr.
-nlohmann::json* extensionOf(nlohmann::json& object, const char* name) {
+[[maybe_unused]] nlohmann::json* extensionOf(nlohmann::json& object, const char* name) {
     auto extensions = object.find("extensions");
     if (extensions == object.end() || !extensions->is_object()) {
         return nullptr;
@@ -67,7 +67,7 @@ nlohmann::json* extensionOf(nlohmann::json& object, const char* name) {
     return ext != extensions->end() && ext->is_object() ? &*ext : nullptr;
 }
 
-void eraseExtension(nlohmann::json& object, const char* name) {
+[[maybe_unused]] void eraseExtension(nlohmann::json& object, const char* name) {
     nlohmann::json& extensions = object["extensions"];
     extensions.erase(name);
     if (extensions.empty()) {
@@ -76,7 +76,7 @@ void eraseExtension(nlohmann::json& object, const char* name) {
 }
 
 // bytes [offset, offset + length) of buffer `index`, when they exist.
-std::optional<BufferBytes> range(const ModelBuffers& buffers, std::uint64_t index, std::uint64_t offset,
+[[maybe_unused]] std::optional<BufferBytes> range(const ModelBuffers& buffers, std::uint64_t index, std::uint64_t offset,
                                  std::uint64_t length) {
     if (index >= buffers.bytes.size()) {
         return std::nullopt;
@@ -88,7 +88,7 @@ std::optional<BufferBytes> range(const ModelBuffers& buffers, std::uint64_t inde
     return BufferBytes{b.data + offset, static_cast<std::size_t>(length)};
 }
 
-bool fail(Diagnostics& diagnostics, const std::string& file, const std::string& where, const std::string& message) {
+[[maybe_unused]] bool fail(Diagnostics& diagnostics, const std::string& file, const std::string& where, const std::string& message) {
     diagnostics.push_back({file, where, message});
     return false;
 }
