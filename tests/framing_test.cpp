@@ -11,6 +11,7 @@
 #include "core/preset.h"
 #include "platform/headless_gl.h"
 #include "render/offscreen.h"
+#include "gl_suite.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>
@@ -116,30 +117,14 @@ Coverage coverage(const Image& image, glm::vec3 background) {
     return c;
 }
 
-class Framing : public testing::Test {
+class Framing : public GlSuite<testing::Test, OffscreenRenderer> {
 protected:
-    static void SetUpTestSuite() {
-        gl_ = new HeadlessGl;
-        std::string error;
-        ASSERT_TRUE(gl_->create(error)) << error;
-        renderer_ = new OffscreenRenderer;
-        Diagnostics d;
-        ASSERT_TRUE(renderer_->init(d)) << toString(d);
-    }
-    static void TearDownTestSuite() {
-        delete renderer_;
-        delete gl_;
-        renderer_ = nullptr;
-        gl_ = nullptr;
-    }
     static Image render(const fs::path& preset) {
         Diagnostics d;
         std::optional<Image> image = renderer_->render(load(preset), kSize, kSize, d);
         EXPECT_TRUE(image) << toString(d);
         return image ? *image : Image{};
     }
-    static inline HeadlessGl* gl_ = nullptr;
-    static inline OffscreenRenderer* renderer_ = nullptr;
     TempFolder dir;
 };
 

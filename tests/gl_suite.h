@@ -1,4 +1,6 @@
 // gl_suite.h — a test suite's headless GL context and renderer, made once for all its tests.
+// The renderer is the lab's Renderer, or the OffscreenRenderer that `lab render` uses (presets to
+// images: GlSuite<testing::Test, OffscreenRenderer>).
 #pragma once
 
 #include "platform/headless_gl.h"
@@ -8,14 +10,14 @@
 
 namespace lab {
 
-template <typename Base = testing::Test>
+template <typename Base = testing::Test, typename RendererType = Renderer>
 class GlSuite : public Base {
 protected:
     static void SetUpTestSuite() {
         gl_ = new HeadlessGl;
         std::string error;
         ASSERT_TRUE(gl_->create(error)) << error;
-        renderer_ = new Renderer;
+        renderer_ = new RendererType;
         Diagnostics d;
         ASSERT_TRUE(renderer_->init(d)) << toString(d);
     }
@@ -26,7 +28,7 @@ protected:
         gl_ = nullptr;
     }
     static inline HeadlessGl* gl_ = nullptr;
-    static inline Renderer* renderer_ = nullptr;
+    static inline RendererType* renderer_ = nullptr;
 };
 
 } // namespace lab

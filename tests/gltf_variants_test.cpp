@@ -9,9 +9,9 @@
 #include "core/image.h"
 #include "core/preset.h"
 #include "gltf_variants.h"
-#include "platform/headless_gl.h"
 #include "render/offscreen.h"
 
+#include "gl_suite.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>
@@ -86,21 +86,15 @@ struct Glb {
     }
 };
 
-class GltfVariants : public testing::Test {
+class GltfVariants : public GlSuite<testing::Test, OffscreenRenderer> {
 protected:
     static void SetUpTestSuite() {
         folder_ = new TempFolder;
         variants_ = new std::vector<GltfVariant>(tools::writeGltfVariants(folder_->path() / "models"));
-        gl_ = new HeadlessGl;
-        std::string error;
-        ASSERT_TRUE(gl_->create(error)) << error;
-        renderer_ = new OffscreenRenderer;
-        Diagnostics d;
-        ASSERT_TRUE(renderer_->init(d)) << toString(d);
+        GlSuite::SetUpTestSuite();
     }
     static void TearDownTestSuite() {
-        delete renderer_;
-        delete gl_;
+        GlSuite::TearDownTestSuite();
         delete variants_;
         delete folder_;
     }
@@ -128,8 +122,6 @@ protected:
 
     static inline TempFolder* folder_ = nullptr;
     static inline std::vector<GltfVariant>* variants_ = nullptr;
-    static inline HeadlessGl* gl_ = nullptr;
-    static inline OffscreenRenderer* renderer_ = nullptr;
 };
 
 TEST_F(GltfVariants, EachLoadsAsItsPlainTwinAndRendersTheSame) {

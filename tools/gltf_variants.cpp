@@ -124,9 +124,9 @@ Json minMax(const std::vector<glm::vec3>& positions) {
     return {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}};
 }
 
-// A plain file: float positions and normals (when there are any), 32-bit indices (when `indexed`).
-fs::path writePlain(const Mesh& mesh, const Json& nodes, const fs::path& file, bool indexed = true) {
-    Builder b;
+// Mesh 0 of `b` stored plainly: float positions and normals (when there are any), 32-bit indices
+// (when `indexed`).
+void addPlainMesh(Builder& b, const Mesh& mesh, bool indexed = true) {
     Json attributes;
     Json position = {{"bufferView", b.view(flat(mesh.positions))}, {"componentType", kFloat},
                      {"count", mesh.positions.size()}, {"type", "VEC3"}};
@@ -142,6 +142,12 @@ fs::path writePlain(const Mesh& mesh, const Json& nodes, const fs::path& file, b
                                            {"count", mesh.indices.size()}, {"type", "SCALAR"}});
     }
     b.doc["meshes"].push_back({{"primitives", {primitive}}});
+}
+
+// A plain file of `mesh` under `nodes`.
+fs::path writePlain(const Mesh& mesh, const Json& nodes, const fs::path& file, bool indexed = true) {
+    Builder b;
+    addPlainMesh(b, mesh, indexed);
     b.doc["nodes"] = nodes;
     save(file, b.glb());
     return file;
@@ -398,13 +404,7 @@ GltfVariant instancing(const Mesh& torus, const fs::path& folder) {
     const std::vector<float> rotations = {0, 0, 0, 1, 0.3826834f, 0, 0, 0.9238795f, 0, 0, 0.2588190f, 0.9659258f};
     const std::vector<glm::vec3> scales = {{0.5f, 0.5f, 0.5f}, {0.6f, 0.4f, 0.6f}, {0.45f, 0.45f, 0.45f}};
     Builder b;
-    Json position = {{"bufferView", b.view(flat(torus.positions))}, {"componentType", kFloat}, {"count", torus.positions.size()}, {"type", "VEC3"}};
-    position.update(minMax(torus.positions));
-    Json attributes = {{"POSITION", b.accessor(position)},
-                       {"NORMAL", b.accessor({{"bufferView", b.view(flat(torus.normals))}, {"componentType", kFloat},
-                                              {"count", torus.normals.size()}, {"type", "VEC3"}})}};
-    std::size_t ix = b.accessor({{"bufferView", b.view(torus.indices)}, {"componentType", kUint}, {"count", torus.indices.size()}, {"type", "SCALAR"}});
-    b.doc["meshes"].push_back({{"primitives", {{{"attributes", attributes}, {"indices", ix}}}}});
+    addPlainMesh(b, torus);
     Json instance = {{"TRANSLATION", b.accessor({{"bufferView", b.view(flat(translations))}, {"componentType", kFloat}, {"count", 3}, {"type", "VEC3"}})},
                      {"ROTATION", b.accessor({{"bufferView", b.view(rotations)}, {"componentType", kFloat}, {"count", 3}, {"type", "VEC4"}})},
                      {"SCALE", b.accessor({{"bufferView", b.view(flat(scales))}, {"componentType", kFloat}, {"count", 3}, {"type", "VEC3"}})}};
@@ -433,13 +433,7 @@ std::vector<GltfVariant> writeGltfVariants(const fs::path& folder, int major, in
 
     { // The same buffer in a .bin file longer than its byteLength (the specification allows it).
         Builder b;
-        Json position = {{"bufferView", b.view(flat(torus.positions))}, {"componentType", kFloat}, {"count", torus.positions.size()}, {"type", "VEC3"}};
-        position.update(minMax(torus.positions));
-        Json attributes = {{"POSITION", b.accessor(position)},
-                           {"NORMAL", b.accessor({{"bufferView", b.view(flat(torus.normals))}, {"componentType", kFloat},
-                                                  {"count", torus.normals.size()}, {"type", "VEC3"}})}};
-        std::size_t ix = b.accessor({{"bufferView", b.view(torus.indices)}, {"componentType", kUint}, {"count", torus.indices.size()}, {"type", "SCALAR"}});
-        b.doc["meshes"].push_back({{"primitives", {{{"attributes", attributes}, {"indices", ix}}}}});
+        addPlainMesh(b, torus);
         b.doc["nodes"] = kOneNode;
         out.push_back({"a .bin longer than its byteLength", b.gltf(folder, "longer-bin", 1001), folder / "plain.glb"});
     }
@@ -487,12 +481,7 @@ std::vector<GltfVariant> writeGltfVariants(const fs::path& folder, int major, in
     { // A required extension that only adds material data: ignored, with a note.
         Builder b;
         b.require("KHR_materials_unlit");
-        Json position = {{"bufferView", b.view(flat(torus.positions))}, {"componentType", kFloat}, {"count", torus.positions.size()}, {"type", "VEC3"}};
-        Json attributes = {{"POSITION", b.accessor(position)},
-                           {"NORMAL", b.accessor({{"bufferView", b.view(flat(torus.normals))}, {"componentType", kFloat},
-                                                  {"count", torus.normals.size()}, {"type", "VEC3"}})}};
-        std::size_t ix = b.accessor({{"bufferView", b.view(torus.indices)}, {"componentType", kUint}, {"count", torus.indices.size()}, {"type", "SCALAR"}});
-        b.doc["meshes"].push_back({{"primitives", {{{"attributes", attributes}, {"indices", ix}}}}});
+        addPlainMesh(b, torus);
         b.doc["nodes"] = kOneNode;
         save(folder / "material-extension-required.glb", b.glb());
         GltfVariant v{"a required material extension", folder / "material-extension-required.glb", folder / "plain.glb"};
