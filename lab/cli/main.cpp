@@ -24,14 +24,21 @@ int runInteractive(const lab::CommandLine& line) {
     options.screenshotFolder = line.screenshotFolder;
     options.layoutFile = line.layoutFile;
     options.frameBudgetSeconds = line.frameBudgetMs / 1000.0f;
-    // The preset list: the shipped presets beside the program, else those of the source tree.
+    // The shipped presets, one rule: those installed relative to the program (LAB_INSTALLED_PRESETS,
+    // cmake/package.cmake: bin/lab -> share/lighting-lab/presets) where that folder exists, else the
+    // source tree's presets/ this program was built from (a build tree).
+    std::filesystem::path shipped = LAB_SOURCE_PRESETS;
     char exe[4096];
     ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
     if (n > 0) {
         exe[n] = '\0';
-        options.presetFolders.push_back(std::filesystem::path(exe).parent_path().parent_path() / "presets");
+        std::filesystem::path installed = (std::filesystem::path(exe).parent_path() / LAB_INSTALLED_PRESETS).lexically_normal();
+        std::error_code ec;
+        if (std::filesystem::is_directory(installed, ec)) {
+            shipped = installed;
+        }
     }
-    options.presetFolders.push_back(LAB_SOURCE_PRESETS);
+    options.presetFolders.push_back(shipped);
     lab::WindowOptions window;
     window.fullscreen = line.fullscreen;
     if (line.windowSize) {
