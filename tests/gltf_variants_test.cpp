@@ -230,7 +230,19 @@ TEST_F(GltfVariants, BrokenCompressedSparseAndInstancedDataIsRefusedWithItsPlace
         {"sparse count above the accessor's", "sparse-no-view.glb",
          [](Glb& g) { g.json["accessors"][0]["count"] = 3; }, "accessors[0].sparse", "is not between 1 and the accessor's 3 elements"},
         {"an accessor without a view asking for too much", "sparse-no-view.glb",
-         [](Glb& g) { g.json["accessors"][0]["count"] = 3'000'000'000u; }, "accessors[0]", "the lab makes at most"},
+         [](Glb& g) { g.json["accessors"][0]["count"] = 3'000'000'000u; }, "accessors[0]", "the lab reads at most 20000000 there"},
+        {"a sparse accessor asking for more vertices than the lab reads", "sparse-over-view.glb",
+         [](Glb& g) { g.json["accessors"][0].erase("bufferView"); g.json["accessors"][0]["count"] = 50'000'000; },
+         "accessors[0]", "the lab reads at most 20000000 there"},
+        {"meshopt stride above glTF's 252", "meshopt.glb",
+         [](Glb& g) { g.json["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteStride"] = 256; },
+         "bufferViews[0].extensions.EXT_meshopt_compression.byteStride", "up to 252"},
+        {"meshopt views asking for more than the lab decodes", "meshopt.glb",
+         [](Glb& g) { g.json["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["count"] = 100'000'000; },
+         "bufferViews[0].extensions.EXT_meshopt_compression.count", "bytes the lab decodes for a file"},
+        {"a fallback flag that is not a boolean", "meshopt.glb",
+         [](Glb& g) { g.json["buffers"][1]["extensions"]["EXT_meshopt_compression"]["fallback"] = 1; }, "buffers[1].byteLength",
+         "more than the GLB's BIN chunk"},
         {"quantized normals not normalized", "quantized-short.glb",
          [](Glb& g) { g.json["accessors"][1]["normalized"] = false; }, "accessors[1]", "expected VEC3 of FLOAT, or of normalized BYTE or SHORT"},
         {"instances with different counts", "instanced.glb",
@@ -253,6 +265,33 @@ TEST_F(GltfVariants, BrokenCompressedSparseAndInstancedDataIsRefusedWithItsPlace
         EXPECT_EQ(d[0].where, c.where) << d[0].str();
         EXPECT_NE(d[0].message.find(c.message), std::string::npos) << d[0].str();
     }
+}
+
+TEST_F(GltfVariants, ADracoPrimitiveIsTrianglesWhateverModeItNames) {
+    Glb g = Glb::read(folder_->path() / "models" / "draco.glb");
+    g.json["meshes"][0]["primitives"][0]["mode"] = 5; // a strip: Draco decodes a list all the same
+    g.write(folder_->path() / "models" / "draco-strip.glb");
+    Diagnostics d;
+    std::optional<GltfResult> strip = loadGltf(folder_->path() / "models" / "draco-strip.glb", "draco-strip.glb", d);
+    std::optional<GltfResult> list = loadGltf(folder_->path() / "models" / "draco.glb", "draco.glb", d);
+    ASSERT_TRUE(strip && list) << toString(d);
+    EXPECT_EQ(strip->mesh.indices, list->mesh.indices);
+}
+
+TEST_F(GltfVariants, RequiredExtensionNotesAreOneLineEachNameOnce) {
+    Glb g = Glb::read(folder_->path() / "models" / "material-extension-required.glb");
+    g.json["extensionsRequired"] = {"KHR_materials_x\nlab: a line of its own", "KHR_materials_x\nlab: a line of its own",
+                                    "KHR_texture_transform"};
+    g.write(folder_->path() / "models" / "ext-newline.glb");
+    Diagnostics d;
+    std::optional<GltfResult> r = loadGltf(folder_->path() / "models" / "ext-newline.glb", "ext-newline.glb", d);
+    ASSERT_TRUE(r) << toString(d);
+    ASSERT_EQ(r->notes.size(), 1u) << testing::PrintToString(r->notes);
+    EXPECT_EQ(r->notes[0].find('\n'), std::string::npos) << r->notes[0];
+    EXPECT_NE(r->notes[0].find("KHR_texture_transform"), std::string::npos) << r->notes[0];
+    const std::size_t first = r->notes[0].find("KHR_materials_x");
+    ASSERT_NE(first, std::string::npos);
+    EXPECT_EQ(r->notes[0].find("KHR_materials_x", first + 1), std::string::npos) << "named twice: " << r->notes[0];
 }
 
 TEST_F(GltfVariants, DracoAndMeshoptAreRequiredAndLoadedWithoutNotes) {

@@ -67,6 +67,7 @@ struct App::Impl {
     float toastLeft = 0.0f;
     float frameMs = 0.0f;   // what the last frame that drew the 3D view cost
     bool viewDrawn = false; // by the last frame
+    bool started = false;   // the workspace opened its first preset (in the first frame, App::frame)
     CachedView viewA, viewB; // the 3D views kept between frames
     ViewResolution resolution;
     int viewSamples = 0;     // what the GL offers of AppOptions::viewSamples
@@ -352,7 +353,6 @@ bool App::init(Diagnostics& diagnostics) {
     m.shaderEditor.vertex = builtin.vertex;
     m.shaderEditor.fragment = builtin.fragment;
     m.shaderEditor.lighting = builtin.lighting;
-    m.workspace.start(fs::current_path(), m.options.preset);
     m.viewSamples = supportedSamples(m.options.viewSamples);
     return true;
 }
@@ -377,6 +377,13 @@ FrameOutput App::frame(const FrameInput& in) {
                                            m.panels != Impl::Panels::None, m.panel.tab});
     const ui::Rect& viewA = ws.view.compare ? layout.viewA : layout.view;
     ws.setViewAspect(viewA.h > 0.0f ? viewA.w / viewA.h : 1.0f); // what F and a dropped model are framed for
+    if (!m.started) {
+        // The first preset opens in the first frame, once the view's shape is known: a glTF model
+        // without a camera is framed for the view it is shown in (a 1024x768 projector's view is
+        // taller than wide; framed for a square, the model's sides were cut off).
+        ws.start(fs::current_path(), m.options.preset);
+        m.started = true;
+    }
     ui::ScreenModel model = m.screenModel();
     model.clicks = clicksOf(in.events, m.pressed);
     model.panelInfo.compareStacked = layout.compareStacked;

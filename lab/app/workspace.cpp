@@ -207,7 +207,7 @@ void Workspace::open(const fs::path& file) {
         problem("Cannot open " + file.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }
-    if (!meshes_.get(*loaded, d)) { // (a glTF model without a camera in the file is framed here)
+    if (!meshes_.get(*loaded, d, nullptr, viewAspect_)) { // (a glTF model without a camera in the file is framed here, for the view)
         problem("Cannot load the model of " + file.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }

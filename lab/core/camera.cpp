@@ -99,8 +99,8 @@ Camera framedCamera(const Camera& base, const Sphere& sphere, float aspect) {
     glm::vec3 dir = base.eye - base.target;
     float length = glm::length(dir);
     dir = length > 0.0f && std::isfinite(length) ? dir / length : glm::vec3(0.0f, 0.0f, 1.0f);
-    float radius = std::isfinite(sphere.radius) ? std::clamp(sphere.radius, kMinFramedRadius, kMaxFramedRadius)
-                                                : kMinFramedRadius;
+    // (An infinite radius, from bounds that overflow, is the largest; NaN the smallest.)
+    float radius = std::isnan(sphere.radius) ? kMinFramedRadius : std::clamp(sphere.radius, kMinFramedRadius, kMaxFramedRadius);
     aspect = aspect > 0.0f && std::isfinite(aspect) ? aspect : 1.0f;
 
     // The smaller of the vertical and horizontal half angles decides (tan halfX = tan halfY · aspect).

@@ -34,6 +34,7 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <unordered_map>
 #include <limits>
 
 namespace lab {
@@ -158,8 +159,7 @@ class Loader {
 public:
     Loader(const tinygltf::Model& model, std::vector<BufferBytes> buffers, const std::string& file, Diagnostics& out,
            const GltfLimits& limits)
-        : model_(model), accessors_(model, std::move(buffers), file, out, std::max(limits.maxVertices, 3 * limits.maxTriangles)),
-          limits_(limits) {}
+        : model_(model), accessors_(model, std::move(buffers), file, out), limits_(limits) {}
 
     bool error(const std::string& where, const std::string& message) { return accessors_.error(where, message); }
 
@@ -316,7 +316,8 @@ private:
             const tinygltf::Value& index = attributes.Get(names[k]);
             View v;
             if (!index.IsInt() || !accessors_.view(index.GetNumberAsInt(), extWhere + "." + names[k],
-                                                   k == 1 ? AccessorUse::Rotation : AccessorUse::Position, v)) {
+                                                   k == 1 ? AccessorUse::Rotation : AccessorUse::Position,
+                                                   limits_.maxInstances, v)) {
                 return index.IsInt() ? false : error(extWhere + "." + names[k], "not an accessor index");
             }
             if (count != 0 && v.count != count) {
@@ -369,7 +370,7 @@ private:
             return error(where, "has no POSITION attribute");
         }
         attributes.positionAccessor = pos->second;
-        if (!accessors_.view(pos->second, where + ".attributes.POSITION", AccessorUse::Position,
+        if (!accessors_.view(pos->second, where + ".attributes.POSITION", AccessorUse::Position, limits_.maxVertices,
                              attributes.positions)) {
             return false;
         }
@@ -381,7 +382,8 @@ private:
             return true;
         }
         attributes.normalAccessor = nrm->second;
-        if (!accessors_.view(nrm->second, where + ".attributes.NORMAL", AccessorUse::Normal, attributes.normals)) {
+        if (!accessors_.view(nrm->second, where + ".attributes.NORMAL", AccessorUse::Normal, limits_.maxVertices,
+                             attributes.normals)) {
             return false;
         }
         if (attributes.normals.count != attributes.positions.count) {
@@ -402,7 +404,7 @@ private:
             return true;
         }
         View indices;
-        if (!accessors_.view(prim.indices, where + ".indices", AccessorUse::Index, indices)) {
+        if (!accessors_.view(prim.indices, where + ".indices", AccessorUse::Index, 3 * limits_.maxTriangles, indices)) {
             return false;
         }
         if (indices.count > 3 * limits_.maxTriangles) {
@@ -647,9 +649,11 @@ bool readOtherBuffers(nlohmann::json& doc, bool isGlb, FileGuard& guard, std::si
         auto uri = buffer.find("uri");
         if (uri == buffer.end()) {
             auto ext = buffer.find("extensions");
-            const bool fallback = ext != buffer.end() && ext->is_object() && ext->contains("EXT_meshopt_compression") &&
-                                  (*ext)["EXT_meshopt_compression"].is_object() &&
-                                  (*ext)["EXT_meshopt_compression"].value("fallback", false);
+            // (Every level's type checked: nlohmann throws on a wrong one, e.g. "fallback": 1.)
+            const nlohmann::json* meshopt = ext != buffer.end() && ext->is_object() && ext->contains("EXT_meshopt_compression")
+                                                ? &(*ext)["EXT_meshopt_compression"] : nullptr;
+            const nlohmann::json* flag = meshopt && meshopt->is_object() && meshopt->contains("fallback") ? &(*meshopt)["fallback"] : nullptr;
+            const bool fallback = flag && flag->is_boolean() && flag->get<bool>();
             if (fallback) {
                 static const unsigned char kNothing = 0;
                 parsed.buffers.bytes[i] = {&kNothing, 0};
@@ -797,6 +801,28 @@ std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, 
     return parsed;
 }
 
+// The notes as the user reads them: a note repeated (the same primitive under many nodes or
+// instances) once with its count, and at most `most` lines (a file can have 200,000 primitives).
+std::vector<std::string> collapsed(const std::vector<std::string>& notes, std::size_t most = 12) {
+    std::vector<std::pair<std::string, std::size_t>> counted;
+    std::unordered_map<std::string, std::size_t> at;
+    for (const std::string& note : notes) {
+        auto [it, fresh] = at.try_emplace(note, counted.size());
+        if (fresh) {
+            counted.emplace_back(note, 0);
+        }
+        ++counted[it->second].second;
+    }
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < counted.size() && i < most; ++i) {
+        out.push_back(counted[i].first + (counted[i].second > 1 ? " (" + std::to_string(counted[i].second) + " times)" : ""));
+    }
+    if (counted.size() > most) {
+        out.push_back("... and " + std::to_string(counted.size() - most) + " more notes");
+    }
+    return out;
+}
+
 // The root nodes of the default scene (scene 0 when the file names none); nullopt after a
 // diagnostic.
 std::optional<std::vector<int>> sceneRoots(const tinygltf::Model& model, const std::string& displayName,
@@ -862,6 +888,7 @@ std::optional<GltfResult> loadGltf(const fs::path& file, const std::string& disp
         result.notes.push_back("normals computed for " + std::to_string(loader.computedNormals()) +
                                " vertices (missing, zero or not finite in the file)");
     }
+    result.notes = collapsed(result.notes);
     return result;
 }
 

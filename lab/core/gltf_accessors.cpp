@@ -271,10 +271,6 @@ const unsigned char* Accessors::range(int viewIndex, std::size_t byteOffset, std
 }
 
 bool Accessors::materialize(const tinygltf::Accessor& a, const std::string& where, std::size_t element, View& v) {
-    if (a.count > maxElements_) {
-        return error(where, std::to_string(a.count) + " elements: the lab makes at most " + std::to_string(maxElements_) +
-                                " for a sparse accessor or one without a bufferView");
-    }
     std::vector<unsigned char> bytes(a.count * element); // zeros, when there is no bufferView
     if (a.bufferView >= 0) {
         std::size_t stride = 1; // the view's own
@@ -302,14 +298,18 @@ bool Accessors::materialize(const tinygltf::Accessor& a, const std::string& wher
                                           std::to_string(a.count) + " elements");
         }
         const auto n = static_cast<std::size_t>(s.count);
+        if (s.indices.byteOffset < 0 || s.values.byteOffset < 0) {
+            return error(sparseWhere + (s.indices.byteOffset < 0 ? ".indices" : ".values"), "byteOffset is negative");
+        }
         std::size_t packed = 0; // sparse arrays are tightly packed
-        const unsigned char* indices = s.indices.byteOffset < 0 ? nullptr
-            : range(s.indices.bufferView, static_cast<std::size_t>(s.indices.byteOffset), n, indexSize, packed, sparseWhere + ".indices");
+        const unsigned char* indices =
+            range(s.indices.bufferView, static_cast<std::size_t>(s.indices.byteOffset), n, indexSize, packed, sparseWhere + ".indices");
         packed = 0;
-        const unsigned char* values = s.values.byteOffset < 0 ? nullptr
-            : range(s.values.bufferView, static_cast<std::size_t>(s.values.byteOffset), n, element, packed, sparseWhere + ".values");
+        const unsigned char* values = indices ? range(s.values.bufferView, static_cast<std::size_t>(s.values.byteOffset), n,
+                                                      element, packed, sparseWhere + ".values")
+                                              : nullptr;
         if (!indices || !values) {
-            return out_.empty() ? error(sparseWhere, "negative byteOffset") : false;
+            return false;
         }
         for (std::size_t i = 0; i < n; ++i) {
             std::uint32_t target = 0;
@@ -327,7 +327,7 @@ bool Accessors::materialize(const tinygltf::Accessor& a, const std::string& wher
     return true;
 }
 
-bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, View& v) {
+bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, std::size_t maxCount, View& v) {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) {
         return error(usedBy, "accessor " + std::to_string(index) + " does not exist");
     }
@@ -345,7 +345,20 @@ bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, View
     v.components = static_cast<int>(componentCount(a.type));
     v.normalized = a.normalized;
     if (a.sparse.isSparse || a.bufferView < 0) {
-        return materialize(a, where, element, v);
+        if (auto made = madeViews_.find(index); made != madeViews_.end()) {
+            v = made->second;
+            return true;
+        }
+        // Made before it is read: bounded first (a bufferView bounds every other accessor).
+        if (a.count > maxCount) {
+            return error(where, std::to_string(a.count) + " elements for " + usedBy + ": the lab reads at most " +
+                                    std::to_string(maxCount) + " there");
+        }
+        if (!materialize(a, where, element, v)) {
+            return false;
+        }
+        madeViews_[index] = v;
+        return true;
     }
     std::size_t stride = 1; // the view's own
     v.data = range(a.bufferView, a.byteOffset, a.count, element, stride, where);

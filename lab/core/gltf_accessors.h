@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <unordered_map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,16 +57,17 @@ enum class AccessorUse {
 class Accessors {
 public:
     // `buffers` holds the bytes of each of the model's buffers, in order.
-    // `maxElements` bounds what a sparse accessor or one without a bufferView may ask to be made.
-    Accessors(const tinygltf::Model& model, std::vector<BufferBytes> buffers, const std::string& file, Diagnostics& out,
-              std::size_t maxElements)
-        : model_(model), buffers_(std::move(buffers)), file_(file), out_(out), maxElements_(maxElements) {}
+    Accessors(const tinygltf::Model& model, std::vector<BufferBytes> buffers, const std::string& file, Diagnostics& out)
+        : model_(model), buffers_(std::move(buffers)), file_(file), out_(out) {}
 
     // Adds a diagnostic; returns false so callers can `return error(...)`.
     bool error(const std::string& where, const std::string& message);
 
-    // Validates accessor `index` completely (for `use`, by `usedBy`) before anything reads through it.
-    bool view(int index, const std::string& usedBy, AccessorUse use, View& v);
+    // Validates accessor `index` completely (for `use`, by `usedBy`) before anything reads through
+    // it. A sparse accessor, or one without a bufferView, of more than `maxCount` elements is
+    // refused before it is made (a few bytes of JSON could ask for gigabytes); it is made once,
+    // then reused. Every other accessor is bounded by its bufferView.
+    bool view(int index, const std::string& usedBy, AccessorUse use, std::size_t maxCount, View& v);
 
     // Appends the accessor's vec3s (of any type view() accepts) to `out`, transformed by `m`
     // and `offset` unless `identity`. Non-finite values are refused, also those a transform
@@ -103,8 +105,8 @@ private:
     std::vector<BufferBytes> buffers_;
     const std::string& file_;
     Diagnostics& out_;
-    std::size_t maxElements_;
     std::deque<std::vector<unsigned char>> made_; // materialized accessors
+    std::unordered_map<int, View> madeViews_;      // ...by accessor index
 };
 
 } // namespace lab::gltf_detail

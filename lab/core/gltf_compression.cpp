@@ -128,8 +128,8 @@ std::optional<std::vector<unsigned char>> decodeMeshoptView(const nlohmann::json
     stride = static_cast<std::size_t>(*byteStride);
     attributes = *mode == "ATTRIBUTES";
     if (*mode == "ATTRIBUTES") {
-        if (stride == 0 || stride > 256 || stride % 4 != 0) {
-            fail(diagnostics, file, where + ".byteStride", std::to_string(stride) + ": vertex data needs a multiple of 4 up to 256");
+        if (stride == 0 || stride > 252 || stride % 4 != 0) { // 252: glTF's largest bufferView byteStride
+            fail(diagnostics, file, where + ".byteStride", std::to_string(stride) + ": vertex data needs a multiple of 4 up to 252");
             return std::nullopt;
         }
     } else if (*mode == "TRIANGLES" || *mode == "INDICES") {
@@ -152,9 +152,11 @@ std::optional<std::vector<unsigned char>> decodeMeshoptView(const nlohmann::json
         return std::nullopt;
     }
     std::uint64_t size = 0;
-    if (*count == 0 || __builtin_mul_overflow(*count, stride, &size) || size > limits.maxDecodedBytes) {
+    if (*count == 0 || __builtin_mul_overflow(*count, stride, &size) ||
+        size > limits.maxDecodedBytes - std::min(limits.maxDecodedBytes, buffers.decoded)) {
         fail(diagnostics, file, where + ".count", std::to_string(*count) + " elements of " + std::to_string(stride) +
-                                                      " bytes: the lab decodes 1 to " + std::to_string(limits.maxDecodedBytes) + " bytes per view");
+                                                      " bytes: more than the " + std::to_string(limits.maxDecodedBytes) +
+                                                      " bytes the lab decodes for a file, all views together");
         return std::nullopt;
     }
     std::vector<unsigned char> out(static_cast<std::size_t>(size));
@@ -204,6 +206,7 @@ bool decodeMeshopt(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimit
             return false;
         }
         const std::size_t size = decoded->size();
+        buffers.decoded += size;
         const std::size_t index = buffers.add(doc, std::move(*decoded));
         nlohmann::json& view = (*views)[i];
         view["buffer"] = index;
@@ -290,7 +293,8 @@ bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits&
             if (faces == 0 || points == 0) {
                 return fail(diagnostics, displayName, where, "the Draco data decodes to no triangles");
             }
-            if (points > limits.maxVertices || faces > limits.maxTriangles) {
+            if (points > limits.maxVertices || faces > limits.maxTriangles ||
+                24 * points + 12 * faces > limits.maxDecodedBytes - std::min(limits.maxDecodedBytes, buffers.decoded)) {
                 return fail(diagnostics, displayName, where, "the Draco data decodes to " + std::to_string(points) + " points and " +
                                                                  std::to_string(faces) + " triangles, more than the lab reads");
             }
@@ -348,6 +352,7 @@ bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits&
                 }
             }
             // The decoded arrays as one new buffer, a view and an accessor each.
+            buffers.decoded += data.size();
             const std::size_t bufferIndex = buffers.add(doc, std::move(data));
             auto addAccessor = [&](std::size_t byteOffset, std::size_t byteLength, std::size_t count, int componentType,
                                    const char* type) {
@@ -363,6 +368,7 @@ bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits&
                 prim["attributes"][name] = addAccessor(at.get<std::size_t>(), points * 12, points, 5126, "VEC3");
             }
             prim["indices"] = addAccessor(indicesAt, faces * 12, faces * 3, 5125, "SCALAR");
+            prim["mode"] = 4; // Draco decodes triangles, whatever mode the primitive named
             eraseExtension(prim, "KHR_draco_mesh_compression");
         }
     }

@@ -38,6 +38,7 @@ bool dracoSupported();
 struct ModelBuffers {
     std::vector<BufferBytes> bytes;
     std::deque<std::vector<unsigned char>> owned;
+    std::size_t decoded = 0; // bytes the decoders made, all together (DecodeLimits::maxDecodedBytes)
 
     // Appends `data` as a new buffer, to `doc["buffers"]` too (a placeholder for tinygltf); returns its index.
     std::size_t add(nlohmann::json& doc, std::vector<unsigned char> data);
@@ -46,7 +47,9 @@ struct ModelBuffers {
 struct DecodeLimits {
     std::size_t maxVertices = 0;
     std::size_t maxTriangles = 0;
-    std::size_t maxDecodedBytes = 0; // one decoded bufferView
+    // What the decoders may make for one file, all together: compressed data can ask for far more
+    // than it holds, and many views or primitives may point at the same compressed bytes.
+    std::size_t maxDecodedBytes = 0;
 };
 
 // Decodes every bufferView with EXT_meshopt_compression (when this build has the decoder; else

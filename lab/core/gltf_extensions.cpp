@@ -100,7 +100,11 @@ bool checkVersionAndExtensions(const nlohmann::json& doc, const std::string& dis
         const std::string name = item.get<std::string>();
         switch (extensionSupport(name)) {
         case ExtensionSupport::Decoded: break;
-        case ExtensionSupport::Ignored: ignored += (ignored.empty() ? "" : ", ") + printable(name); break;
+        case ExtensionSupport::Ignored:
+            if (ignored.find(inQuotes(name)) == std::string::npos) { // each once, on one line
+                ignored += (ignored.empty() ? "" : ", ") + inQuotes(name);
+            }
+            break;
         case ExtensionSupport::NotInThisBuild:
             diagnostics.push_back({displayName, "", "needs the glTF extension " + inQuotes(name) +
                                                         ", which this build of the lab does not decode (the desktop lab and `lab render` do)"});

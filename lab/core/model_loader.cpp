@@ -76,7 +76,7 @@ std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model) {
     return s;
 }
 
-void frameOmitted(LoadedPreset& loaded, const Mesh& mesh) {
+void frameOmitted(LoadedPreset& loaded, const Mesh& mesh, float aspect) {
     OmittedKeys omitted = std::exchange(loaded.omitted, OmittedKeys{});
     Preset& p = loaded.preset;
     if (p.model.gltf.empty() || !omitted.camera) {
@@ -86,7 +86,7 @@ void frameOmitted(LoadedPreset& loaded, const Mesh& mesh) {
     if (!bounds) {
         return;
     }
-    p.camera = framedCamera(Camera{}, *bounds);
+    p.camera = framedCamera(Camera{}, *bounds, aspect);
     if (omitted.lights) {
         p.lights = Preset{}.lights;
         for (LightDesc& light : p.lights) {

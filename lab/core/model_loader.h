@@ -29,11 +29,12 @@ std::optional<Mesh> loadModel(const Model& model, const std::filesystem::path& f
 std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model);
 
 // Framing, for a preset met with its mesh (MeshCache::get does it for every consumer). A glTF
-// model whose file had no `camera` gets framedCamera(default camera, drawnBounds), at aspect 1:
+// model whose file had no `camera` gets framedCamera(default camera, drawnBounds) at `aspect`
+// (the view's width / height: 1 for `lab render`'s square default; the GUI passes its view's):
 // it looks along -z, as the default camera does. Without `lights` either, the default light
 // stands where it stands for a unit sphere, scaled to the model: centre + (2, 2, 2) · radius
 // (inside the coordinate range). Built-in models and keys the file had are left as they are.
 // Clears `preset.omitted`: the camera and lights are then the preset's own, and saved as such.
-void frameOmitted(LoadedPreset& preset, const Mesh& mesh);
+void frameOmitted(LoadedPreset& preset, const Mesh& mesh, float aspect = 1.0f);
 
 } // namespace lab
