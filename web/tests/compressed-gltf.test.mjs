@@ -283,10 +283,12 @@ test('a model that requires an unknown extension is refused with its reason, and
   await settle(page);
   const buffers = await page.evaluate(() => { const b = window.labCatchVertices; window.labCatchVertices = undefined; return b; });
   const reasons = glyphLines(buffers, [255, 150, 140, 255]); // ui/dialogs.cpp's colour for the reasons
-  assert.equal(reasons.length, 1, `one line of reasons expected, ${reasons.length} drawn`);
-  // The page stores a chosen file as ".uploads-<time>-<name>" and the lab names it so: the line
+  assert.ok(reasons.length >= 1, 'no reason drawn');
+  // One reason, wrapped at the dialog's width when it is long: its lines in order are the text.
+  // The page stores a chosen file as ".uploads-<time>-<name>" and the lab names it so: the text
   // ends with the file's own name and the reason, whole (a glyph cut off at the window's edge is
   // not drawn).
+  reasons.splice(0, reasons.length, reasons.flat());
   const reason = `${name}: needs the glTF extension "EXT_lab_unknown_extension", which this lab does not support`;
   const glyphs = reason.replace(/ /g, '').length;
   assert.ok(spells(reasons[0].slice(-glyphs), reason),
