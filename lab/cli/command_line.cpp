@@ -88,9 +88,12 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     render->add_option("--size", renderSize, "Image size")->check(SizeValidator())->capture_default_str();
 
     std::string plotPreset, plotOut;
-    CLI::App* plot = app.add_subcommand("plot", "Write the polar-plot data (reflected intensity) as CSV");
+    std::string albedoOut;
+    CLI::App* plot = app.add_subcommand("plot", "Write the polar-plot data (reflected intensity) and the albedo as CSV");
     plot->add_option("preset", plotPreset, "Preset file")->required();
-    plot->add_option("--out", plotOut, "CSV file to write")->required()->check(kNotEmpty);
+    plot->add_option("--out", plotOut, "CSV file to write the polar-plot data to")->check(kNotEmpty);
+    plot->add_option("--albedo", albedoOut, "CSV file to write the albedo of each term against the incident angle to")
+        ->check(kNotEmpty);
     plot->add_option("--incident-deg", line.incidentDeg, "Incident angle in degrees (default: the preset's plot.incident_deg)")
         ->check(CLI::Range(limits::kPlotIncidentDeg.min, limits::kPlotIncidentDeg.max));
 
@@ -128,6 +131,13 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
         line.command = CommandLine::Command::Plot;
         line.presets = {plotPreset};
         line.out = plotOut;
+        if (!albedoOut.empty()) {
+            line.albedoOut = albedoOut;
+        }
+        if (plotOut.empty() && albedoOut.empty()) {
+            print(stderr, "lab plot: nothing to write: give --out FILE.csv (the polar plot), --albedo FILE.csv (the albedo) or both\n");
+            return kExitBadInput;
+        }
     } else if (*check) {
         line.command = CommandLine::Command::Check;
         line.presets = toPaths(checkArguments.presets);

@@ -28,6 +28,7 @@ struct CommandLine {
     std::filesystem::path out;
     Size size;
     std::optional<float> incidentDeg;
+    std::optional<std::filesystem::path> albedoOut; // plot --albedo
     CheckOptions check;
 };
 

@@ -2,6 +2,7 @@
 #include "cli/commands.h"
 
 #include "cli/output.h"
+#include "core/energy.h"
 #include "core/file_io.h"
 #include "core/limits.h"
 #include "core/plot.h"
@@ -160,7 +161,12 @@ int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size si
 // lab plot
 //----------------------------------------------------------------------------------------
 
-int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float> incidentDeg) {
+int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float> incidentDeg,
+            const std::optional<fs::path>& albedoOut) {
+    if (!out.empty() && albedoOut && fs::absolute(out).lexically_normal() == fs::absolute(*albedoOut).lexically_normal()) {
+        print(stderr, "lab plot: --out and --albedo are the same file, %s\n", out.string().c_str());
+        return kExitBadInput;
+    }
     Diagnostics diagnostics;
     std::optional<LoadedPreset> preset = loadPreset(presetFile, diagnostics);
     if (!preset) {
@@ -173,11 +179,20 @@ int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float
         return kExitBadInput;
     }
     std::string error;
-    if (!writeFileAtomic(out, plotCsv(reflectedIntensity(preset->preset, angle)), error)) {
-        print(stderr, "lab plot: " + error + "\n");
-        return kExitBadInput;
+    if (!out.empty()) {
+        if (!writeFileAtomic(out, plotCsv(reflectedIntensity(preset->preset, angle)), error)) {
+            print(stderr, "lab plot: " + error + "\n");
+            return kExitBadInput;
+        }
+        print(stdout, out.string() + "\n");
     }
-    print(stdout, out.string() + "\n");
+    if (albedoOut) {
+        if (!writeFileAtomic(*albedoOut, albedoCsv(albedoCurve(lobeInputs(preset->preset, angle))), error)) {
+            print(stderr, "lab plot: " + error + "\n");
+            return kExitBadInput;
+        }
+        print(stdout, albedoOut->string() + "\n");
+    }
     return kExitOk;
 }
 

@@ -26,8 +26,10 @@ std::optional<Size> parseSize(const std::string& text, std::string& error);
 
 int runRender(const std::vector<std::filesystem::path>& presets, const std::filesystem::path& out, Size size);
 
+// `out` (the polar plot; none when empty) and `albedoOut` (core/energy.h's albedoCsv), each written
+// when given.
 int runPlot(const std::filesystem::path& preset, const std::filesystem::path& out,
-            std::optional<float> incidentDeg);
+            std::optional<float> incidentDeg, const std::optional<std::filesystem::path>& albedoOut = std::nullopt);
 
 struct CheckOptions {
     std::filesystem::path golden;

@@ -15,8 +15,9 @@
 //   * diffuse: Gauss-Legendre in cos θo on [0, 1] × the midpoint rule in φ, about N;
 //   * specular: the lobes peak at the mirror direction R, so about R: Gauss-Legendre panels in the
 //     angle α from R, graded geometrically from π/4096 to π (sharp and wide lobes alike fall on
-//     several panels), × the midpoint rule in φ on [0, π] (the lobes are symmetric about the plane
-//     of incidence). Directions below the horizon reflect nothing.
+//     several panels) and split where the horizon starts to cut the circle at α; in φ (on [0, π]:
+//     the lobes are symmetric about the plane of incidence) the midpoint rule, or Gauss-Legendre
+//     from the horizon's cut to π where it cuts. Directions below the horizon reflect nothing.
 // README "Energy" gives the measured error. It does NOT model light emitted or ambient light
 // (they do not depend on L), nor attenuation (a directional light).
 #pragma once

@@ -121,6 +121,24 @@ check plot-diffuse-only-diffuse-is-not-0 test "$(column_max "$tmp/diffuse.csv" 2
 check plot-specular-only-diffuse-is-0 test "$(column_max "$tmp/specular.csv" 2)" = "0"
 check plot-specular-only-specular-is-not-0 test "$(column_max "$tmp/specular.csv" 3)" != "0"
 
+# --albedo: the albedo of each term against the incident angle, 0 to 89 degrees (90 is undefined).
+expect plot-albedo 0 'a\.csv' -- "$lab" plot "$src/presets/02-diffuse-only.json" --albedo "$tmp/a.csv"
+check plot-albedo-header test "$(head -1 "$tmp/a.csv")" = "theta_in_deg,diffuse,specular,total,total_r,total_g,total_b"
+check plot-albedo-rows test "$(wc -l < "$tmp/a.csv")" -eq 91
+check plot-albedo-last-angle test "$(tail -1 "$tmp/a.csv" | cut -d, -f1)" = "89"
+# The diffuse-only preset reflects its Kd's luminance at every angle, nothing specular.
+kd=$(tail -n +2 "$tmp/a.csv" | cut -d, -f2 | sort -u -g | awk 'NR == 1 { lo = $1 } { hi = $1 } END { print (hi - lo < 1e-5) }')
+check plot-albedo-diffuse-constant test "$kd" = "1"
+check plot-albedo-specular-is-0 test "$(column_max "$tmp/a.csv" 3)" = "0"
+expect plot-both 0 'b\.csv' -- "$lab" plot "$phong" --out "$tmp/b.csv" --albedo "$tmp/c.csv"
+check plot-both-writes-out test -s "$tmp/b.csv"
+check plot-both-writes-albedo test -s "$tmp/c.csv"
+expect plot-needs-a-file 2 'nothing to write.*--out.*--albedo' -- "$lab" plot "$phong"
+expect plot-albedo-empty 2 '^--albedo: must not be empty' -- "$lab" plot "$phong" --albedo ""
+expect plot-same-file 2 'same file' -- "$lab" plot "$phong" --out "$tmp/d.csv" --albedo "$tmp/./d.csv"
+check plot-same-file-nothing-written test ! -e "$tmp/d.csv"
+expect plot-albedo-unwritable 2 'lab plot: ' -- "$lab" plot "$phong" --albedo "$tmp/none/x.csv"
+
 # --- check --------------------------------------------------------------------------------
 mkdir -p "$tmp/golden"
 expect check-missing-golden 1 'MISSING +05-full-phong' -- "$lab" check "$phong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
