@@ -43,6 +43,10 @@ PlotCache::Samples PlotCache::samples(const LobeInputs& inputs) {
     return samples_.get(inputs, [&] { return reflectedIntensity(inputs); });
 }
 
+PlotCache::Albedos PlotCache::albedo(const LobeInputs& inputs) {
+    return albedo_.get(inputs, [&] { return lab::albedo(inputs); });
+}
+
 PlotCache::Points PlotCache::lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
                                   const CurvePlacement& at) {
     return lobes_.get(LobeKey{inputs, component, outer, scale, at}, [&] {

@@ -3,7 +3,7 @@
 // The plots are drawn every frame, but what they show changes only when the preset, the plot
 // settings or the window do. The cache keeps
 //   * each lobe's samples, keyed on everything they are computed from (core/plot.h's LobeInputs:
-//     material, BRDF, term switches, incident angle);
+//     material, BRDF, term switches, incident angle), and its albedo (core/energy.h, about 0.5 ms);
 //   * each curve as the screen points that are drawn, thinned to the points a line needs
 //     (thinPolyline, within kCurveTolerance pixels), keyed on its samples' inputs, the component,
 //     the outer ring's intensity, the radial scale and where it lies on screen; likewise Att(d).
@@ -12,6 +12,7 @@
 // shared and immutable, so what a frame holds stays valid while the cache changes.
 #pragma once
 
+#include "core/energy.h"
 #include "core/plot.h"
 
 #include <imgui.h>
@@ -85,6 +86,9 @@ public:
 
     // reflectedIntensity(inputs).
     Samples samples(const LobeInputs& inputs);
+    // albedo(inputs): the energy readout's numbers (nullopt at ±90°).
+    using Albedos = std::shared_ptr<const std::optional<Albedo>>;
+    Albedos albedo(const LobeInputs& inputs);
     // The screen points of one component of the lobe `inputs`, the outer ring at `outer`, thinned.
     Points lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
                 const CurvePlacement& at);
@@ -92,7 +96,7 @@ public:
     Points attenuation(const glm::vec3& coefficients, float maxDistance, const CurvePlacement& at);
 
     // How many sample sets and curves were computed rather than found (for the tests).
-    std::size_t computed() const { return samples_.made() + lobes_.made() + attenuation_.made(); }
+    std::size_t computed() const { return samples_.made() + albedo_.made() + lobes_.made() + attenuation_.made(); }
 
 private:
     struct LobeKey {
@@ -113,6 +117,7 @@ private:
     // A frame uses at most 5 sample sets (A, B, three incident angles) and 7 curves; room for
     // more, so that switching back and forth (A and B, polar and Cartesian) finds them again.
     RecentlyUsed<LobeInputs, std::vector<PlotSample>> samples_{16};
+    RecentlyUsed<LobeInputs, std::optional<Albedo>> albedo_{8}; // A and B at the lobe's angle
     RecentlyUsed<LobeKey, std::vector<ImVec2>> lobes_{32};
     RecentlyUsed<AttenuationKey, std::vector<ImVec2>> attenuation_{4};
 };

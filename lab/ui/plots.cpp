@@ -75,6 +75,24 @@ float largestTotal(std::initializer_list<const std::vector<PlotSample>*> sets) {
     return m;
 }
 
+// How much light each term reflects in all at the lobe's incident angle (core/energy.h: the
+// reflected over the incident flux, a Lambertian Kd = 1 reflecting 1), as luminance: "diffuse +
+// specular = total" in the curves' colours, and B's total. Short tokens without labels, so that a
+// narrow column keeps room for the lobe.
+void albedoTokens(Readout& r, const std::optional<Albedo>& a, const std::optional<Albedo>* b, float incident) {
+    r.add(format("albedo at %s:", degrees(std::fabs(incident)).c_str()), kLabel);
+    if (!a) {
+        r.add("none (no light arrives)", kLabel);
+        return;
+    }
+    r.add(format("%.3f", double(luminance(a->diffuse))), kDiffuse);
+    r.add(format("+ %.3f", double(luminance(a->specular))), kSpecular);
+    r.add(format("= %.3f", double(luminance(a->total()))), kTotal);
+    if (b && *b) {
+        r.add(format("B %.3f", double(luminance((*b)->total()))), kCompare);
+    }
+}
+
 Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p) {
     Lobes l;
     l.incident = a.plotIncidentDeg;
@@ -96,6 +114,8 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p)
     }
     l.readout.lineBreak();
     scaleTokens(l.readout, l.outer, l.largest, s.lockScale, b ? "max total of A and B" : "max total");
+    l.readout.lineBreak();
+    albedoTokens(l.readout, *s.cache.albedo(l.inA), b ? s.cache.albedo(l.inB).get() : nullptr, l.incident);
     l.readout.measure(p);
     return l;
 }

@@ -4,6 +4,7 @@
 //   * the reflection lobe in the plane of incidence for the preset's incident angle: diffuse,
 //     specular and total, with N, L, R, V (and H for Blinn-Phong and Cook-Torrance) as arrows;
 //     drag L to change the incident angle, drag V to read the intensities in that direction;
+//   * the albedo of each term at that angle, under the lobe's readout (core/energy.h; B's total too);
 //   * the lobes for several incident angles overlaid (the classic 60°/25°/10° figure);
 //   * linear or logarithmic radial scale, polar or Cartesian, with the ring values, angle ticks
 //     and decade marks written on the plot; the scale can be locked;
