@@ -74,12 +74,19 @@ TEST(Energy, LambertianKd1ReflectsExactly1AtEveryIncidentAngle) {
 //   ρ_s(0) = 1/(π·1) ∫_0^{2π} ∫_0^{π/2} Ks cos^n θ · cos θ · sin θ dθ dφ
 //          = 2·Ks ∫_0^1 μ^{n+1} dμ = 2·Ks/(n + 2).
 TEST(Energy, PhongSpecularAtNormalIncidenceIs2KsOverNPlus2) {
-    for (float n : {1.0f, 10.0f, 50.0f, 200.0f, 1000.0f, 1.0e4f, 1.0e6f}) {
+    for (float n : {1.0f, 10.0f, 50.0f, 200.0f, 1000.0f}) {
         Preset p = specularOnly(BrdfModel::Phong, n);
         p.material.specular = glm::vec3(0.5f);
         Albedo a = albedoAt(p, 0.0f);
-        EXPECT_NEAR(a.specular.r, 2.0 * 0.5 / (n + 2.0), kSpecularError * 2.0 * 0.5 / (n + 2.0) + 1e-7) << "n " << n;
+        const double exact = 2.0 * 0.5 / (n + 2.0);
+        EXPECT_NEAR(a.specular.r, exact, kSpecularError * exact) << "n " << n;
         EXPECT_EQ(a.diffuse, glm::vec3(0.0f));
+    }
+    // Far sharper lobes still land on the panels; what is left is the lighting function's float
+    // R·V (1 − cos α comes in steps of 6·10⁻⁸, and cos^n α for n = 10⁶ feels each one).
+    for (float n : {1.0e4f, 1.0e5f, 1.0e6f}) {
+        const double exact = 2.0 / (n + 2.0);
+        EXPECT_NEAR(albedoAt(specularOnly(BrdfModel::Phong, n), 0.0f).specular.r, exact, 1e-2 * exact) << "n " << n;
     }
 }
 
