@@ -72,12 +72,7 @@ std::optional<Albedo> albedo(const LobeInputs& inputs, const AlbedoRule& rule) {
     if (!(std::fabs(inputs.incidentDeg) < 90.0f) || !(NoL > 0.0f) || rule.nodes < 1 || rule.phiSteps < 1) {
         return std::nullopt;
     }
-    glsl::Light light{};
-    light.type = glsl::LIGHT_DIRECTIONAL;
-    light.direction = -L;
-    light.diffuse = glm::vec3(1.0f);
-    light.specular = glm::vec3(1.0f);
-    light.attenuation = glm::vec3(1.0f, 0.0f, 0.0f);
+    const glsl::Light light = unitLightFrom(L);
     auto terms = [&](const glm::dvec3& V) {
         return glsl::lightContribution(inputs.material, inputs.brdf, inputs.terms, light, glm::vec3(0.0f), N,
                                        glm::vec3(V));

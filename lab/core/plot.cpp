@@ -58,6 +58,16 @@ bool operator==(const LobeInputs& x, const LobeInputs& y) {
            x.incidentDeg == y.incidentDeg;
 }
 
+glsl::Light unitLightFrom(const glm::vec3& L) {
+    glsl::Light light{};
+    light.type = glsl::LIGHT_DIRECTIONAL;
+    light.direction = -L;
+    light.diffuse = glm::vec3(1.0f);
+    light.specular = glm::vec3(1.0f);
+    light.attenuation = glm::vec3(1.0f, 0.0f, 0.0f);
+    return light;
+}
+
 std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs) {
     // The material, BRDF and term switches as the shaders get them, and a unit white directional
     // light from L: lightContribution() then gives each sample's diffuse and specular parts, 0
@@ -68,12 +78,7 @@ std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs) {
     const float ti = glm::radians(inputs.incidentDeg);
     const glm::vec3 N(0.0f, 1.0f, 0.0f);
     const glm::vec3 L(-std::sin(ti), std::cos(ti), 0.0f);
-    glsl::Light light{};
-    light.type = glsl::LIGHT_DIRECTIONAL;
-    light.direction = -L;
-    light.diffuse = glm::vec3(1.0f);
-    light.specular = glm::vec3(1.0f);
-    light.attenuation = glm::vec3(1.0f, 0.0f, 0.0f);
+    const glsl::Light light = unitLightFrom(L);
     const glm::vec3 p(0.0f);
     std::vector<PlotSample> samples;
     samples.reserve(181);

@@ -38,6 +38,10 @@ LobeInputs lobeInputs(const Preset& preset, float incidentDeg);
 // Every field equal (floats compared exactly, so a NaN never equals and is never reused).
 bool operator==(const LobeInputs& x, const LobeInputs& y);
 
+// The plots' light: unit white, directional, arriving from `L` (unit, towards the light), no
+// attenuation. The lobe plots and the albedo (core/energy.h) shade with exactly this light.
+glsl::Light unitLightFrom(const glm::vec3& L);
+
 // 181 samples, θo = -90 … 90.
 std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs);
 inline std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentDeg) {
