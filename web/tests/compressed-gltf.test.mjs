@@ -17,30 +17,20 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
-import { serve } from '../serve.mjs';
+import { repo, startBrowser, newLabPage, settle, frames, widgets, press, viewShot } from './page.mjs';
 
-const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const site = process.env.LAB_WEB_SITE || path.join(repo, 'build-web/site');
 const seeds = path.join(repo, 'tests/fuzz/seeds/gltf');
-const chromiumArgs = ['--headless=new', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-  '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
-  '--disable-component-update', '--disable-sync', '--force-device-scale-factor=1'];
 
-let server, browser, base;
+let env, browser, base;
 
 before(async () => {
-  assert.ok(fs.existsSync(path.join(site, 'index.html')), `no page in ${site}: build it first (tools/dev web)`);
-  server = await serve(site);
-  base = `http://127.0.0.1:${server.address().port}/`;
-  browser = await chromium.launch({ executablePath: process.env.LAB_CHROMIUM || '/usr/bin/chromium', args: chromiumArgs });
+  env = await startBrowser();
+  ({ browser, base } = env);
 });
 
 after(async () => {
-  await browser?.close();
-  server?.close();
+  await env?.close();
 });
 
 // Before the page's own scripts: keeps a copy of the vertex data given to WebGL while
@@ -66,56 +56,9 @@ function catchVertices() {
   };
 }
 
-// A fresh page (its own profile) with the lab running, and what went wrong on it.
-async function openLab(fragment = '', { width = 1024, height = 640 } = {}) {
-  const context = await browser.newContext({ viewport: { width, height }, deviceScaleFactor: 1, acceptDownloads: true });
-  await context.addInitScript(catchVertices);
-  const page = await context.newPage();
-  const problems = [];
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
-  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
-  page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
-  await page.goto(base + fragment);
-  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
-  await settle(page);
-  return { page, context, problems };
-}
-
-// Until the lab has handled every event and file it was given and owes no frame.
-function settle(page) {
-  return page.waitForFunction(
-    () => window.labFilesPending === 0 && Module.ccall('lab_settled', 'number', [], []) === 1,
-    null, { polling: 'raf', timeout: 30000 });
-}
-
-function frames(page, n) {
-  return page.evaluate((count) => new Promise((resolve) => {
-    const step = (left) => (left === 0 ? resolve() : requestAnimationFrame(() => step(left - 1)));
-    step(count);
-  }), n);
-}
-
-async function widgets(page) {
-  const text = await page.evaluate(() => Module.ccall('lab_widgets', 'string', [], []));
-  const rects = {};
-  for (const line of text.split('\n').filter(Boolean)) {
-    const [name, x, y, w, h] = line.split(' ');
-    rects[name] = { x: +x, y: +y, w: +w, h: +h };
-  }
-  return rects;
-}
-
-async function press(page, key) {
-  await page.keyboard.down(key);
-  await page.keyboard.up(key);
-  await settle(page);
-}
-
-// The lab's screenshot of its 3D view (F12), handed over as a download.
-async function viewShot(page) {
-  const [download] = await Promise.all([page.waitForEvent('download'), press(page, 'F12')]);
-  return PNG.sync.read(fs.readFileSync(await download.path()));
+// A fresh page with the lab running (page.mjs), catching what ImGui sends to WebGL.
+function openLab(fragment = '', { width = 1024, height = 640 } = {}) {
+  return newLabPage(browser, base + fragment, { width, height, initScript: catchVertices });
 }
 
 // A seed file opened through the page's file picker (the File section's "Open preset…"), as a

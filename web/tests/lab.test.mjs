@@ -12,93 +12,33 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
-import { serve } from '../serve.mjs';
+import { repo, site, startBrowser, newLabPage, settle, frames, widgets, press, viewShot } from './page.mjs';
 
-const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const site = process.env.LAB_WEB_SITE || path.join(repo, 'build-web/site');
 const goldens = path.join(repo, 'tests/golden-web');
-const chromiumArgs = ['--headless=new', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-  '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
-  '--disable-component-update', '--disable-sync', '--force-device-scale-factor=1'];
 
-let server, browser, base;
+let env, browser, base;
 
 before(async () => {
-  assert.ok(fs.existsSync(path.join(site, 'index.html')), `no page in ${site}: build it first (tools/dev web)`);
-  server = await serve(site);
-  base = `http://127.0.0.1:${server.address().port}/`;
-  browser = await chromium.launch({ executablePath: process.env.LAB_CHROMIUM || '/usr/bin/chromium', args: chromiumArgs });
+  env = await startBrowser();
+  ({ browser, base } = env);
 });
 
 after(async () => {
-  await browser?.close();
-  server?.close();
+  await env?.close();
 });
 
-// A fresh page (its own profile: no saved state) with the lab running, and what went wrong on it.
-// `touch`: a phone or tablet (touch screen, mobile viewport, coarse pointer).
-async function openLab(fragment = '', { width = 1280, height = 760, scale = 1, touch = false } = {}) {
-  const context = await browser.newContext({ viewport: { width, height }, deviceScaleFactor: scale, acceptDownloads: true,
-    hasTouch: touch, isMobile: touch });
-  const page = await context.newPage();
-  const problems = [];
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
-  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
-  page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
-  const started = Date.now();
-  await page.goto(base + fragment);
-  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
-  openLab.lastLoadMs = Date.now() - started;
-  await settle(page);
-  return { page, context, problems };
-}
-
-// Waits until the lab has handled every event and file it was given and owes no frame (it draws
-// only when something changed; lab_settled, web_window.cpp).
-function settle(page) {
-  return page.waitForFunction(
-    () => window.labFilesPending === 0 && Module.ccall('lab_settled', 'number', [], []) === 1,
-    null, { polling: 'raf', timeout: 30000 });
-}
-
-// Waits for the browser to draw `n` more animation frames.
-function frames(page, n) {
-  return page.evaluate((count) => new Promise((resolve) => {
-    const step = (left) => (left === 0 ? resolve() : requestAnimationFrame(() => step(left - 1)));
-    step(count);
-  }), n);
-}
-
-async function widgets(page) {
-  const text = await page.evaluate(() => Module.ccall('lab_widgets', 'string', [], []));
-  const rects = {};
-  for (const line of text.split('\n').filter(Boolean)) {
-    const [name, x, y, w, h] = line.split(' ');
-    rects[name] = { x: +x, y: +y, w: +w, h: +h };
-  }
-  return rects;
-}
-
-async function press(page, key) {
-  await page.keyboard.down(key);
-  await page.keyboard.up(key);
-  await settle(page);
+// A fresh page with the lab running (page.mjs), and what went wrong on it; the load time is kept.
+async function openLab(fragment = '', options = {}) {
+  const lab = await newLabPage(browser, base + fragment, options);
+  openLab.lastLoadMs = lab.loadMs;
+  return lab;
 }
 
 // Tab cycles the panels (all, plots and model, model only): twice leaves the view alone on the canvas.
 async function hidePanels(page) {
   await press(page, 'Tab');
   await press(page, 'Tab');
-}
-
-// The lab's screenshot of its 3D view (F12), which the page hands over as a download.
-async function viewShot(page) {
-  const [download] = await Promise.all([page.waitForEvent('download'), press(page, 'F12')]);
-  return PNG.sync.read(fs.readFileSync(await download.path()));
 }
 
 async function downloadPreset(page) {

@@ -1,0 +1,86 @@
+// page.mjs — what every browser test file shares: the browser and the page server, a fresh page
+// with the lab running, and the ways to wait for it and drive it (see lab.test.mjs).
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { PNG } from 'pngjs';
+import { serve } from '../serve.mjs';
+
+export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+export const site = process.env.LAB_WEB_SITE || path.join(repo, 'build-web/site');
+const chromiumArgs = ['--headless=new', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+  '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+  '--disable-component-update', '--disable-sync', '--force-device-scale-factor=1'];
+
+// The built page served locally and Debian's Chromium; `close()` ends both.
+export async function startBrowser() {
+  assert.ok(fs.existsSync(path.join(site, 'index.html')), `no page in ${site}: build it first (tools/dev web)`);
+  const server = await serve(site);
+  const base = `http://127.0.0.1:${server.address().port}/`;
+  const browser = await chromium.launch({ executablePath: process.env.LAB_CHROMIUM || '/usr/bin/chromium', args: chromiumArgs });
+  return { server, browser, base, close: async () => { await browser.close(); server.close(); } };
+}
+
+// A fresh page (its own profile: no saved state) at `url` with the lab running, and what went
+// wrong on it. `touch`: a phone or tablet (touch screen, mobile viewport, coarse pointer);
+// `initScript`: run before the page's own scripts. `loadMs`: from the request to the lab running.
+export async function newLabPage(browser, url, { width = 1280, height = 760, scale = 1, touch = false, initScript } = {}) {
+  const context = await browser.newContext({ viewport: { width, height }, deviceScaleFactor: scale, acceptDownloads: true,
+    hasTouch: touch, isMobile: touch });
+  if (initScript) {
+    await context.addInitScript(initScript);
+  }
+  const page = await context.newPage();
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
+  page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
+  const started = Date.now();
+  await page.goto(url);
+  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
+  const loadMs = Date.now() - started;
+  await settle(page);
+  return { page, context, problems, loadMs };
+}
+
+// Waits until the lab has handled every event and file it was given and owes no frame (it draws
+// only when something changed; lab_settled, web_window.cpp).
+export function settle(page) {
+  return page.waitForFunction(
+    () => window.labFilesPending === 0 && Module.ccall('lab_settled', 'number', [], []) === 1,
+    null, { polling: 'raf', timeout: 30000 });
+}
+
+// Waits for the browser to draw `n` more animation frames.
+export function frames(page, n) {
+  return page.evaluate((count) => new Promise((resolve) => {
+    const step = (left) => (left === 0 ? resolve() : requestAnimationFrame(() => step(left - 1)));
+    step(count);
+  }), n);
+}
+
+// The rectangles of the widgets the lab drew last (lab_widgets), by name.
+export async function widgets(page) {
+  const text = await page.evaluate(() => Module.ccall('lab_widgets', 'string', [], []));
+  const rects = {};
+  for (const line of text.split('\n').filter(Boolean)) {
+    const [name, x, y, w, h] = line.split(' ');
+    rects[name] = { x: +x, y: +y, w: +w, h: +h };
+  }
+  return rects;
+}
+
+export async function press(page, key) {
+  await page.keyboard.down(key);
+  await page.keyboard.up(key);
+  await settle(page);
+}
+
+// The lab's screenshot of its 3D view (F12), which the page hands over as a download.
+export async function viewShot(page) {
+  const [download] = await Promise.all([page.waitForEvent('download'), press(page, 'F12')]);
+  return PNG.sync.read(fs.readFileSync(await download.path()));
+}
