@@ -8,6 +8,7 @@
 #include "core/gltf.h"
 #include "core/image.h"
 #include "core/preset.h"
+#include "glb_writer.h"
 #include "gltf_variants.h"
 #include "render/offscreen.h"
 
@@ -64,26 +65,7 @@ struct Glb {
         std::memcpy(&binLength, bytes.data() + 20 + jsonLength, 4);
         return {Json::parse(bytes.substr(20, jsonLength)), bytes.substr(28 + jsonLength, binLength)};
     }
-    void write(const fs::path& file) const {
-        std::string text = json.dump();
-        while (text.size() % 4) {
-            text += ' ';
-        }
-        std::string out = "glTF";
-        auto u32 = [&out](std::size_t v) {
-            const auto w = static_cast<std::uint32_t>(v);
-            out.append(reinterpret_cast<const char*>(&w), 4);
-        };
-        u32(2);
-        u32(28 + text.size() + bin.size());
-        u32(text.size());
-        u32(0x4E4F534Au);
-        out += text;
-        u32(bin.size());
-        u32(0x004E4942u);
-        out += bin;
-        writeText(file, out);
-    }
+    void write(const fs::path& file) const { writeText(file, tools::glbContainer(json.dump(), bin)); }
 };
 
 class GltfVariants : public GlSuite<testing::Test, OffscreenRenderer> {

@@ -19,6 +19,28 @@ struct GlbMesh {
     std::vector<std::uint32_t> indices;
 };
 
+// A GLB version 2 holding `json` and a BIN chunk of `bin`, each padded to 4 bytes (the JSON with
+// spaces, the BIN chunk with zeros), as the specification asks.
+inline std::string glbContainer(std::string json, std::string bin) {
+    while (json.size() % 4) {
+        json += ' ';
+    }
+    while (bin.size() % 4) {
+        bin += '\0';
+    }
+    auto u32 = [](std::string& out, std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+    std::string glb = "glTF";
+    u32(glb, 2);
+    u32(glb, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+    u32(glb, static_cast<std::uint32_t>(json.size()));
+    u32(glb, 0x4E4F534Au); // "JSON"
+    glb += json;
+    u32(glb, static_cast<std::uint32_t>(bin.size()));
+    u32(glb, 0x004E4942u); // "BIN\0"
+    glb += bin;
+    return glb;
+}
+
 // `generator` names the program in the asset; `nodes` is the glTF "nodes" array; the scene's root is node 0, and a node with "mesh": 0
 // places the mesh. The output is deterministic.
 inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& nodes, const std::string& generator) {
@@ -66,21 +88,7 @@ inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& n
         {"bufferViews", views},
         {"buffers", Json::array({{{"byteLength", bin.size()}}})},
     };
-    std::string json = j.dump();
-    while (json.size() % 4) {
-        json += ' ';
-    }
-    auto u32 = [](std::string& out, std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
-    std::string glb = "glTF";
-    u32(glb, 2);
-    u32(glb, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
-    u32(glb, static_cast<std::uint32_t>(json.size()));
-    u32(glb, 0x4E4F534Au); // "JSON"
-    glb += json;
-    u32(glb, static_cast<std::uint32_t>(bin.size()));
-    u32(glb, 0x004E4942u); // "BIN\0"
-    glb += bin;
-    return glb;
+    return glbContainer(j.dump(), std::move(bin));
 }
 
 } // namespace lab::tools

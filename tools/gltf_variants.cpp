@@ -1,6 +1,8 @@
 // gltf_variants.cpp — one torus, written plainly and in each way the loader must read or refuse.
 #include "gltf_variants.h"
 
+#include "glb_writer.h"
+
 #include "core/file_io.h"
 #include "core/mesh.h"
 
@@ -81,21 +83,7 @@ struct Builder {
             bin += '\0';
         }
         doc["buffers"][0] = {{"byteLength", bin.size()}};
-        std::string json = doc.dump();
-        while (json.size() % 4) {
-            json += ' ';
-        }
-        std::string out = "glTF";
-        auto u32 = [&out](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
-        u32(2);
-        u32(static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
-        u32(static_cast<std::uint32_t>(json.size()));
-        u32(0x4E4F534Au);
-        out += json;
-        u32(static_cast<std::uint32_t>(bin.size()));
-        u32(0x004E4942u);
-        out += bin;
-        return out;
+        return glbContainer(doc.dump(), bin);
     }
 
     // folder/name.gltf beside folder/name.bin, the .bin `extra` bytes longer than declared.

@@ -18,7 +18,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { repo, startBrowser, newLabPage, settle, frames, widgets, press, viewShot } from './page.mjs';
+import { repo, startBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare } from './page.mjs';
 
 const seeds = path.join(repo, 'tests/fuzz/seeds/gltf');
 
@@ -82,25 +82,6 @@ async function sceneModel(page) {
   return JSON.parse(Buffer.from(hash.substring(3), 'base64url').toString('utf8')).model?.gltf ?? '';
 }
 
-// The screenshot tests' comparison (core/image.h), as in lab.test.mjs.
-function compare(a, b, { pixel = 3, share = 0.001, mean = 0.5 } = {}) {
-  if (a.width !== b.width || a.height !== b.height) return { sameSize: false, passes: false };
-  let sum = 0, failing = 0, max = 0;
-  for (let i = 0; i < a.data.length; i += 4) {
-    let worst = 0;
-    for (let k = 0; k < 3; ++k) {
-      const d = Math.abs(a.data[i + k] - b.data[i + k]);
-      sum += d;
-      worst = Math.max(worst, d);
-    }
-    max = Math.max(max, worst);
-    if (worst > pixel) failing++;
-  }
-  const pixels = a.width * a.height;
-  const result = { sameSize: true, max, mean: sum / (pixels * 3), failingShare: failing / pixels };
-  result.passes = result.failingShare <= share && result.mean <= mean;
-  return result;
-}
 
 // The share of the view's pixels that are not the background (the colour of its corner), and the
 // box around them as shares of the view.

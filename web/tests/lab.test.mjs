@@ -13,7 +13,7 @@ import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { PNG } from 'pngjs';
-import { repo, site, startBrowser, newLabPage, settle, frames, widgets, press, viewShot } from './page.mjs';
+import { repo, site, startBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare } from './page.mjs';
 
 const goldens = path.join(repo, 'tests/golden-web');
 
@@ -51,26 +51,6 @@ async function downloadPreset(page) {
   return { name: download.suggestedFilename(), text: fs.readFileSync(await download.path(), 'utf8') };
 }
 
-// The screenshot tests' comparison (core/image.h): a pixel fails above `pixel` levels in any
-// channel; an image fails when more than `share` of its pixels fail or the mean exceeds `mean`.
-function compare(a, b, { pixel = 3, share = 0.001, mean = 0.5 } = {}) {
-  if (a.width !== b.width || a.height !== b.height) return { sameSize: false, passes: false };
-  let sum = 0, failing = 0, max = 0;
-  for (let i = 0; i < a.data.length; i += 4) {
-    let worst = 0;
-    for (let k = 0; k < 3; ++k) {
-      const d = Math.abs(a.data[i + k] - b.data[i + k]);
-      sum += d;
-      worst = Math.max(worst, d);
-    }
-    max = Math.max(max, worst);
-    if (worst > pixel) failing++;
-  }
-  const pixels = a.width * a.height;
-  const result = { sameSize: true, max, mean: sum / (pixels * 3), failingShare: failing / pixels };
-  result.passes = result.failingShare <= share && result.mean <= mean;
-  return result;
-}
 
 function changedShare(a, b) {
   return compare(a, b, { pixel: 8 }).failingShare ?? 1;
