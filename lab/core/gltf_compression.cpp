@@ -1,6 +1,7 @@
 // gltf_compression.cpp — EXT_meshopt_compression and KHR_draco_mesh_compression undone into plain buffers.
 #include "core/gltf_compression.h"
 
+#include "core/gltf_data_uri.h"
 #include "core/safe_text.h"
 
 #ifdef LAB_HAVE_MESHOPT
@@ -40,7 +41,7 @@ std::size_t ModelBuffers::add(nlohmann::json& doc, std::vector<unsigned char> da
     if (!doc.contains("buffers") || !doc["buffers"].is_array()) {
         doc["buffers"] = nlohmann::json::array();
     }
-    doc["buffers"].push_back({{"uri", "data:application/octet-stream;base64,AA=="}, {"byteLength", 1}});
+    doc["buffers"].push_back({{"uri", kDecodedPlaceholder}, {"byteLength", 1}});
     return bytes.size() - 1;
 }
 

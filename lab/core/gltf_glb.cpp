@@ -1,6 +1,8 @@
 // gltf_glb.cpp — the GLB container: chunks checked against the file, BIN buffers left in place.
 #include "core/gltf_glb.h"
 
+#include "core/gltf_data_uri.h"
+
 #include <cstdio>
 #include <cstring>
 
@@ -11,8 +13,9 @@ namespace {
 constexpr std::uint32_t kJsonChunk = 0x4E4F534Au; // "JSON"
 constexpr std::uint32_t kBinChunk = 0x004E4942u;  // "BIN\0"
 
-// One byte, base64: what tinygltf gets instead of a buffer or an image stored in the BIN chunk.
-constexpr const char* kPlaceholderUri = "data:application/octet-stream;base64,AA==";
+// What tinygltf gets instead of a buffer or an image stored in the BIN chunk: the one placeholder
+// every buffer the loader reads itself becomes (gltf_data_uri.h).
+constexpr const char* kPlaceholderUri = kDecodedPlaceholder;
 
 std::uint32_t u32(std::string_view bytes, std::uint64_t at) {
     std::uint32_t v;
