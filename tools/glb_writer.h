@@ -4,10 +4,12 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace lab::tools {
@@ -41,10 +43,17 @@ inline std::string glbContainer(std::string json, std::string bin) {
     return glb;
 }
 
+// How writeGlb stores the mesh's data: as it is, or with EXT_meshopt_compression's vertex and
+// index codecs and no filter. Both are lossless but for one liberty of the index codec: it may
+// start a triangle at another of its corners (the triangles, their order and winding are kept).
+enum class GlbStorage { Plain, Meshopt };
+
 // `generator` names the program in the asset; `nodes` is the glTF "nodes" array; the scene's root is node 0, and a node with "mesh": 0
 // places the mesh. The output is deterministic.
-inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& nodes, const std::string& generator) {
+inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& nodes, const std::string& generator,
+                            GlbStorage storage = GlbStorage::Plain) {
     using Json = nlohmann::ordered_json;
+    constexpr int kIndexTarget = 34963;
     auto append = [](std::string& out, const auto& v) {
         out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v[0]));
     };
@@ -54,11 +63,38 @@ inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& n
         hi = glm::max(hi, p);
     }
     std::string bin;
+    std::size_t fallbackBytes = 0; // Meshopt: buffer 1, which holds no data (the views' plain size)
     Json views = Json::array(), accessors = Json::array(), attributes = Json::object();
     auto view = [&](const auto& data, int target) {
         std::size_t offset = bin.size();
-        append(bin, data);
-        views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bin.size() - offset}, {"target", target}});
+        if (storage == GlbStorage::Plain) {
+            append(bin, data);
+            views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bin.size() - offset}, {"target", target}});
+            return views.size() - 1;
+        }
+        const std::size_t count = data.size(), stride = sizeof(data[0]);
+        std::vector<unsigned char> encoded;
+        if constexpr (std::is_same_v<std::decay_t<decltype(data[0])>, std::uint32_t>) {
+            encoded.resize(meshopt_encodeIndexBufferBound(count, mesh.positions.size()));
+            encoded.resize(meshopt_encodeIndexBuffer(encoded.data(), encoded.size(), data.data(), count));
+        } else {
+            encoded.resize(meshopt_encodeVertexBufferBound(count, stride));
+            encoded.resize(meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), data.data(), count, stride));
+        }
+        append(bin, encoded);
+        while (bin.size() % 4) {
+            bin += '\0';
+        }
+        Json compressed = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", encoded.size()}, {"byteStride", stride},
+                           {"count", count}, {"mode", target == kIndexTarget ? "TRIANGLES" : "ATTRIBUTES"}};
+        Json v = {{"buffer", 1}, {"byteOffset", fallbackBytes}, {"byteLength", count * stride}};
+        if (target != kIndexTarget) {
+            v["byteStride"] = stride;
+        }
+        v["target"] = target;
+        v["extensions"] = {{"EXT_meshopt_compression", compressed}};
+        views.push_back(v);
+        fallbackBytes += (count * stride + 3) / 4 * 4;
         return views.size() - 1;
     };
     accessors.push_back({{"bufferView", view(mesh.positions, 34962)}, {"componentType", 5126},
@@ -70,13 +106,19 @@ inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& n
                              {"count", mesh.normals.size()}, {"type", "VEC3"}});
         attributes["NORMAL"] = accessors.size() - 1;
     }
-    accessors.push_back({{"bufferView", view(mesh.indices, 34963)}, {"componentType", 5125},
+    accessors.push_back({{"bufferView", view(mesh.indices, kIndexTarget)}, {"componentType", 5125},
                          {"count", mesh.indices.size()}, {"type", "SCALAR"}});
     while (bin.size() % 4) {
         bin += '\0';
     }
-    Json j = {
-        {"asset", {{"version", "2.0"}, {"generator", generator}}},
+    Json j = {{"asset", {{"version", "2.0"}, {"generator", generator}}}};
+    Json buffers = Json::array({{{"byteLength", bin.size()}}});
+    if (storage == GlbStorage::Meshopt) {
+        j["extensionsUsed"] = {"EXT_meshopt_compression"};
+        j["extensionsRequired"] = {"EXT_meshopt_compression"};
+        buffers.push_back({{"byteLength", fallbackBytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+    }
+    j.update(Json{
         {"scene", 0},
         {"scenes", Json::array({{{"nodes", {0}}}})},
         {"nodes", nodes},
@@ -86,8 +128,8 @@ inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& n
                                                               {"mode", 4}}})}}})},
         {"accessors", accessors},
         {"bufferViews", views},
-        {"buffers", Json::array({{{"byteLength", bin.size()}}})},
-    };
+        {"buffers", buffers},
+    });
     return glbContainer(j.dump(), std::move(bin));
 }
 
