@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #ifndef LAB_VERSION
@@ -20,6 +22,15 @@ namespace {
 const CLI::Validator kNotEmpty(
     [](std::string& text) { return text.empty() ? std::string("must not be empty") : std::string(); }, "PATH");
 
+
+// A number option must be finite before CLI::Range sees it: "nan" passes every range check (each
+// comparison with NaN is false), and would reach a figure as "θi = nan°" or a tolerance as none.
+const CLI::Validator kFinite(
+    [](std::string& text) {
+        double v = std::strtod(text.c_str(), nullptr); // CLI11 reports text that is no number itself
+        return std::isfinite(v) ? std::string() : "must be a finite number, got " + text;
+    },
+    "");
 
 // CLI11 validator for --size, so a bad size is reported like every other bad flag.
 struct SizeValidator : CLI::Validator {
@@ -52,10 +63,80 @@ CLI::App* addCheckCommand(CLI::App& app, CommandLine& line, CheckArguments& a) {
     check->add_option("--pixel-tolerance", line.check.tolerance.pixelTolerance, "A pixel fails above this channel difference")
         ->check(CLI::Range(0, 255))->capture_default_str();
     check->add_option("--max-failing", line.check.tolerance.maxFailingShare, "Largest share of failing pixels (0.001 = 0.1%)")
-        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+        ->check(kFinite)->check(CLI::Range(0.0, 1.0))->capture_default_str();
     check->add_option("--max-mean", line.check.tolerance.maxMeanDifference, "Largest mean channel difference, in levels")
-        ->check(CLI::Range(0.0, 255.0))->capture_default_str();
+        ->check(kFinite)->check(CLI::Range(0.0, 255.0))->capture_default_str();
     return check;
+}
+
+// `plot`'s figure options as text, until they are checked into FigureOutputs.
+struct FigureArguments {
+    std::string kind = "lobe", svg, png, csv;
+    float scale = 1.0f;
+    int light = 1;
+    bool log = false;
+    std::vector<float> overlayDeg{60.0f, 25.0f, 10.0f};
+    CLI::Option* kindOption = nullptr;
+    CLI::Option* overlayOption = nullptr;
+    CLI::Option* scaleOption = nullptr;
+    CLI::Option* lightOption = nullptr;
+};
+
+void addFigureOptions(CLI::App* plot, FigureArguments& a) {
+    std::vector<std::string> kinds;
+    for (FigureKind k : kFigureKinds) {
+        kinds.emplace_back(toString(k));
+    }
+    a.kindOption = plot->add_option("--figure", a.kind, "Which figure --svg, --png and --csv write: lobe, overlay (three incident "
+                                                        "angles), attenuation (of --light) or albedo")
+                       ->check(CLI::IsMember(kinds))
+                       ->capture_default_str();
+    plot->add_option("--svg", a.svg, "SVG file to write the figure to")->check(kNotEmpty);
+    plot->add_option("--png", a.png, "PNG file to write the figure to")->check(kNotEmpty);
+    plot->add_option("--csv", a.csv, "CSV file to write the figure's curves to")->check(kNotEmpty);
+    a.scaleOption = plot->add_option("--scale", a.scale, "The PNG's scale: 1 is 720 pixels wide")
+                        ->check(kFinite)
+                        ->check(CLI::Range(kMinFigureScale, kMaxFigureScale))
+                        ->capture_default_str();
+    a.lightOption = plot->add_option("--light", a.light, "The attenuation figure's light, from 1")
+                        ->check(CLI::Range(1, 64))
+                        ->capture_default_str();
+    plot->add_flag("--log", a.log, "Logarithmic radial scale in the lobe and overlay figures");
+    a.overlayOption = plot->add_option("--overlay-deg", a.overlayDeg, "The overlay figure's three incident angles in degrees, "
+                                                                      "e.g. 60,25,10")
+                          ->delimiter(',')
+                          ->expected(3)
+                          ->check(kFinite)
+                          ->check(CLI::Range(-90.0f, 90.0f));
+}
+
+// False (with the message printed) for options that would do nothing: --figure, --scale or
+// --light without a file to write them to.
+bool figureOutputs(const FigureArguments& a, FigureOutputs& out) {
+    out.request.kind = *figureKindFrom(a.kind); // checked by IsMember
+    out.request.scale = a.log ? RadialScale::Log : RadialScale::Linear;
+    out.request.light = a.light - 1;
+    out.request.overlayDeg = glm::vec3(a.overlayDeg[0], a.overlayDeg[1], a.overlayDeg[2]); // expected(3)
+    out.files.pngScale = a.scale;
+    if (!a.svg.empty()) {
+        out.files.svg = a.svg;
+    }
+    if (!a.png.empty()) {
+        out.files.png = a.png;
+    }
+    if (!a.csv.empty()) {
+        out.files.csv = a.csv;
+    }
+    if (a.scaleOption->count() && !out.files.png) {
+        print(stderr, "lab plot: --scale is the PNG's: give --png FILE too\n");
+        return false;
+    }
+    if ((a.kindOption->count() || a.lightOption->count() || a.overlayOption->count() || a.log) && !out.any()) {
+        print(stderr, "lab plot: --figure, --light, --overlay-deg and --log choose a figure: give --svg, --png or --csv FILE "
+                      "too\n");
+        return false;
+    }
+    return true;
 }
 
 } // namespace
@@ -75,6 +156,7 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     app.add_option("--frame-budget", line.frameBudgetMs,
                    "While dragging, draw the 3D view at a lower resolution when a frame takes longer than this "
                    "many milliseconds (0: always full resolution)")
+        ->check(kFinite)
         ->check(CLI::Range(0.0f, 1000.0f))
         ->capture_default_str();
     // For GUI tests: the screen rectangles of the main widgets, rewritten every frame.
@@ -85,7 +167,13 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     CLI::App* render = app.add_subcommand("render", "Render presets headless to PNG (no display or GPU needed)");
     render->add_option("presets", renderPresets, "Preset files")->required();
     render->add_option("--out", renderOut, "The PNG file; a folder when there are several presets")->required()->check(kNotEmpty);
-    render->add_option("--size", renderSize, "Image size")->check(SizeValidator())->capture_default_str();
+    render->add_option("--size", renderSize, "Image size (with --sweep: each cell's)")->check(SizeValidator())->capture_default_str();
+    std::vector<std::string> sweeps;
+    render->add_option("--sweep", sweeps,
+                       "KEY=V1,V2,...: one preset as a labelled grid, KEY's values along the columns (a second "
+                       "--sweep: down the rows), e.g. --sweep material.shininess=10,20,30,50")
+        ->allow_extra_args(false)
+        ->take_all();
 
     std::string plotPreset, plotOut;
     std::string albedoOut;
@@ -95,7 +183,10 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     plot->add_option("--albedo", albedoOut, "CSV file to write the albedo of each term against the incident angle to")
         ->check(kNotEmpty);
     plot->add_option("--incident-deg", line.incidentDeg, "Incident angle in degrees (default: the preset's plot.incident_deg)")
+        ->check(kFinite)
         ->check(CLI::Range(limits::kPlotIncidentDeg.min, limits::kPlotIncidentDeg.max));
+    FigureArguments figure;
+    addFigureOptions(plot, figure);
 
     CheckArguments checkArguments;
     CLI::App* check = addCheckCommand(app, line, checkArguments);
@@ -127,6 +218,14 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
         line.presets = toPaths(renderPresets);
         line.out = renderOut;
         line.size = *parseSize(renderSize, error); // validated by SizeValidator
+        for (const std::string& text : sweeps) {
+            std::optional<SweepAxis> axis = parseSweepAxis(text, error);
+            if (!axis) {
+                print(stderr, "lab render: --sweep " + error + "\n");
+                return kExitBadInput;
+            }
+            line.sweeps.push_back(std::move(*axis));
+        }
     } else if (*plot) {
         line.command = CommandLine::Command::Plot;
         line.presets = {plotPreset};
@@ -134,8 +233,12 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
         if (!albedoOut.empty()) {
             line.albedoOut = albedoOut;
         }
-        if (plotOut.empty() && albedoOut.empty()) {
-            print(stderr, "lab plot: nothing to write: give --out FILE.csv (the polar plot), --albedo FILE.csv (the albedo) or both\n");
+        if (!figureOutputs(figure, line.figure)) {
+            return kExitBadInput;
+        }
+        if (plotOut.empty() && albedoOut.empty() && !line.figure.any()) {
+            print(stderr, "lab plot: nothing to write: give --out FILE.csv (the polar plot), --albedo FILE.csv (the albedo), "
+                          "--svg/--png FILE (a figure) or several\n");
             return kExitBadInput;
         }
     } else if (*check) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "cli/commands.h"
+#include "core/sweep.h"
 
 #include <filesystem>
 #include <optional>
@@ -29,6 +30,8 @@ struct CommandLine {
     Size size;
     std::optional<float> incidentDeg;
     std::optional<std::filesystem::path> albedoOut; // plot --albedo
+    FigureOutputs figure;                           // plot --figure, --svg, --png, --csv
+    std::vector<SweepAxis> sweeps;                  // render --sweep (core/sweep.h), columns then rows
     CheckOptions check;
 };
 

@@ -5,6 +5,7 @@
 #include "core/energy.h"
 #include "core/file_io.h"
 #include "core/limits.h"
+#include "core/model_loader.h"
 #include "core/plot.h"
 #include "core/preset.h"
 #include "core/safe_text.h"
@@ -157,15 +158,90 @@ int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size si
     return anyBad ? kExitBadInput : kExitOk;
 }
 
+int runSweep(const std::vector<fs::path>& presets, const std::vector<SweepAxis>& sweeps, const fs::path& out, Size size) {
+    if (presets.size() != 1) {
+        // `--sweep a=1 b=2` gives b=2 to the presets: say what it looks like.
+        std::string hint;
+        for (const fs::path& p : presets) {
+            std::error_code ec;
+            if (hint.empty() && p.string().find('=') != std::string::npos && !fs::exists(p, ec)) {
+                hint = " (" + inQuotes(p.string(), 80) + " looks like KEY=V1,V2,...: give each its own --sweep)";
+            }
+        }
+        print(stderr, "lab render: --sweep renders one preset, got %zu%s\n", presets.size(), hint.c_str());
+        return kExitBadInput;
+    }
+    Diagnostics diagnostics;
+    std::optional<LoadedPreset> preset = loadPreset(presets.front(), diagnostics);
+    if (!preset) {
+        printDiagnostics(diagnostics);
+        return kExitBadInput;
+    }
+    // A glTF model without a camera (or lights) in the file is framed first, for the cells' shape,
+    // as `lab render` frames it: a swept camera or light key then changes the framed one.
+    if (preset->omitted != OmittedKeys{}) {
+        std::optional<Mesh> mesh = loadModel(preset->preset.model, preset->folder(), diagnostics);
+        if (!mesh) {
+            printDiagnostics(diagnostics);
+            return kExitBadInput;
+        }
+        frameOmitted(*preset, *mesh, float(size.width) / float(size.height));
+    }
+    std::string error;
+    if (!sweepCells(*preset, sweeps, error)) { // before starting the GPU: a bad value is a usage error
+        print(stderr, "lab render: --sweep " + error + "\n");
+        return kExitBadInput;
+    }
+    Gpu gpu;
+    if (!gpu.start()) {
+        return kExitFailure;
+    }
+    bool renderFailed = false;
+    auto renderCell = [&](const LoadedPreset& cell, int width, int height, std::string& why) -> std::optional<Image> {
+        Diagnostics problems;
+        std::vector<std::string> notes;
+        std::optional<Image> image = gpu.renderer.render(cell, width, height, problems, &notes);
+        if (!image) {
+            renderFailed = true;
+            why = problems.empty() ? "render failed" : problems.front().str();
+        }
+        return image;
+    };
+    std::optional<Image> grid = renderSweep(*preset, sweeps, size.width, size.height, renderCell, error);
+    if (!grid) {
+        print(stderr, "lab render: " + std::string(renderFailed ? "" : "--sweep ") + error + "\n");
+        return renderFailed ? kExitFailure : kExitBadInput;
+    }
+    // Renewable, as a single render: made again by running the command again.
+    if (!writePng(*grid, out, error, WriteSafety::Renewable)) {
+        print(stderr, "lab render: " + error + "\n");
+        return kExitBadInput;
+    }
+    print(stdout, out.string() + "\n");
+    return kExitOk;
+}
+
 //----------------------------------------------------------------------------------------
 // lab plot
 //----------------------------------------------------------------------------------------
 
 int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float> incidentDeg,
-            const std::optional<fs::path>& albedoOut) {
-    if (!out.empty() && albedoOut && fs::absolute(out).lexically_normal() == fs::absolute(*albedoOut).lexically_normal()) {
-        print(stderr, "lab plot: --out and --albedo are the same file, %s\n", out.string().c_str());
-        return kExitBadInput;
+            const std::optional<fs::path>& albedoOut, const FigureOutputs& figure) {
+    // Every file at most once: two outputs on one path would leave only the last.
+    std::vector<std::pair<const char*, fs::path>> files;
+    for (auto [flag, file] : {std::pair{"--out", std::optional<fs::path>(out.empty() ? std::nullopt : std::optional(out))},
+                              std::pair{"--albedo", albedoOut}, std::pair{"--svg", figure.files.svg},
+                              std::pair{"--png", figure.files.png}, std::pair{"--csv", figure.files.csv}}) {
+        if (!file) {
+            continue;
+        }
+        for (const auto& [other, seen] : files) {
+            if (fs::absolute(*file).lexically_normal() == fs::absolute(seen).lexically_normal()) {
+                print(stderr, "lab plot: %s and %s are the same file, %s\n", other, flag, file->string().c_str());
+                return kExitBadInput;
+            }
+        }
+        files.push_back({flag, *file});
     }
     Diagnostics diagnostics;
     std::optional<LoadedPreset> preset = loadPreset(presetFile, diagnostics);
@@ -192,6 +268,24 @@ int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float
             return kExitBadInput;
         }
         print(stdout, albedoOut->string() + "\n");
+    }
+    if (figure.any()) {
+        FigureRequest request = figure.request;
+        request.incidentDeg = angle;
+        std::optional<FigureResult> result = makeFigure(preset->preset, nullptr, request, error);
+        if (!result) {
+            print(stderr, "lab plot: --figure %s: %s\n", std::string(toString(request.kind)).c_str(), error.c_str());
+            return kExitBadInput;
+        }
+        if (!writeFigure(*result, figure.files, error)) {
+            print(stderr, "lab plot: " + error + "\n");
+            return kExitBadInput;
+        }
+        for (const auto& file : {figure.files.svg, figure.files.png, figure.files.csv}) {
+            if (file) {
+                print(stdout, file->string() + "\n");
+            }
+        }
     }
     return kExitOk;
 }

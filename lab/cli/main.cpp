@@ -3,7 +3,9 @@
 //   lab [--preset FILE] [--presenter] [--fullscreen] [--size WxH] [--frame-budget MS]
 //                                                      the interactive lab (a PNG preview where there is no display)
 //   lab render PRESET... --out PATH [--size WxH]
+//   lab render PRESET --sweep KEY=V1,V2,... [--sweep KEY2=...] --out FILE.png [--size WxH (a cell)]
 //   lab plot PRESET [--out FILE.csv] [--incident-deg A] [--albedo FILE.csv]
+//                   [--figure lobe|overlay|attenuation|albedo --svg FILE --png FILE --scale S --csv FILE]
 //   lab check PRESET... --golden DIR [--update] [--report DIR] [--size WxH]
 //
 // Exit status: 0 success, 2 bad input (message on stderr), 1 internal failure or failed check.
@@ -68,8 +70,11 @@ int main(int argc, char** argv) {
     }
     const lab::CommandLine& line = std::get<lab::CommandLine>(parsed);
     switch (line.command) {
-    case lab::CommandLine::Command::Render: return lab::runRender(line.presets, line.out, line.size);
-    case lab::CommandLine::Command::Plot: return lab::runPlot(line.presets.front(), line.out, line.incidentDeg, line.albedoOut);
+    case lab::CommandLine::Command::Render:
+        return line.sweeps.empty() ? lab::runRender(line.presets, line.out, line.size)
+                                   : lab::runSweep(line.presets, line.sweeps, line.out, line.size);
+    case lab::CommandLine::Command::Plot:
+        return lab::runPlot(line.presets.front(), line.out, line.incidentDeg, line.albedoOut, line.figure);
     case lab::CommandLine::Command::Check: return lab::runCheck(line.presets, line.check);
     case lab::CommandLine::Command::Lab: break;
     }

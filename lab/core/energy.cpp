@@ -63,11 +63,15 @@ void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weigh
     }
 }
 
+float albedoOf(const Albedo& a, PlotComponent c) {
+    return c == PlotComponent::Total ? luminance(a.total()) : componentOf(luminance(a.diffuse), luminance(a.specular), c);
+}
+
 std::optional<Albedo> albedo(const LobeInputs& inputs, const AlbedoRule& rule) {
     // core/plot.cpp's unit white directional light in the plane of incidence, from L.
     const float ti = glm::radians(std::fabs(inputs.incidentDeg));
-    const glm::vec3 N(0.0f, 1.0f, 0.0f);
-    const glm::vec3 L(-std::sin(ti), std::cos(ti), 0.0f);
+    const LobeVectors v = lobeVectors(std::fabs(inputs.incidentDeg));
+    const glm::vec3 &N = v.N, &L = v.L;
     const float NoL = glm::dot(N, L); // as lightContribution computes it
     if (!(std::fabs(inputs.incidentDeg) < 90.0f) || !(NoL > 0.0f) || rule.nodes < 1 || rule.phiSteps < 1) {
         return std::nullopt;

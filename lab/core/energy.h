@@ -37,6 +37,9 @@ struct Albedo {
     glm::vec3 diffuse{0.0f}, specular{0.0f};
     glm::vec3 total() const { return diffuse + specular; }
 };
+// One component as luminance, what the Energy view and the albedo figure draw (the total's is the
+// luminance of the summed channels, as albedoCsv writes it).
+float albedoOf(const Albedo& a, PlotComponent c);
 
 // The quadrature's size: Gauss-Legendre nodes per panel (and in cos θo for the diffuse term) and
 // midpoint steps in φ over [0, π]. The default is what the GUI, `lab plot --albedo` and the README's

@@ -105,6 +105,9 @@ inline constexpr Range kAttenuation{0.0f, 1.0e6f, false, 0.0f, 10.0f, "in [0, 10
 // lights[].cutoff_deg and exponent: the spot cone.
 inline constexpr Range kCutoffDeg{0.0f, 90.0f, false, 0.0f, 90.0f, "in [0, 90]"};
 inline constexpr Range kSpotExponent{0.0f, 1.0e6f, false, 0.0f, 128.0f, "in [0, 1000000]"};
+// lights[].orbit.degrees_per_second: ten turns a second either way at most (the slider spans
+// one turn in two seconds); its axis is a direction (kMinDirectionLength).
+inline constexpr Range kOrbitSpeed{-3600.0f, 3600.0f, false, -180.0f, 180.0f, "in [-3600, 3600]"};
 // At most this many lights (the shaders' MAX_LIGHTS).
 inline constexpr int kMaxLights = 8;
 

@@ -3,6 +3,7 @@
 
 #include "core/lighting.h"
 #include "core/number_format.h"
+#include "core/plot_layout.h"
 
 #include <algorithm>
 #include <array>
@@ -10,9 +11,7 @@
 
 namespace lab {
 
-namespace {
-
-// (sin θo, cos θo) for θo = -90° … 90°: every lobe samples the same directions.
+// Every lobe samples the same directions (the 3D lobe's rings too).
 const std::array<glm::vec2, 181>& outgoingDirections() {
     static const std::array<glm::vec2, 181> table = [] {
         std::array<glm::vec2, 181> t{};
@@ -24,8 +23,6 @@ const std::array<glm::vec2, 181>& outgoingDirections() {
     }();
     return table;
 }
-
-} // namespace
 
 LobeInputs lobeInputs(const Preset& preset, float incidentDeg) {
     LobeInputs in;
@@ -68,6 +65,15 @@ glsl::Light unitLightFrom(const glm::vec3& L) {
     return light;
 }
 
+LobeVectors lobeVectors(float incidentDeg) {
+    const float ti = glm::radians(incidentDeg);
+    LobeVectors v;
+    v.N = glm::vec3(0.0f, 1.0f, 0.0f);
+    v.L = glm::vec3(-std::sin(ti), std::cos(ti), 0.0f);
+    v.R = glsl::reflectionVector(v.N, v.L);
+    return v;
+}
+
 std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs) {
     // The material, BRDF and term switches as the shaders get them, and a unit white directional
     // light from L: lightContribution() then gives each sample's diffuse and specular parts, 0
@@ -75,10 +81,9 @@ std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs) {
     const glsl::Material& material = inputs.material;
     const glsl::Brdf& brdf = inputs.brdf;
     const glsl::Terms& terms = inputs.terms;
-    const float ti = glm::radians(inputs.incidentDeg);
-    const glm::vec3 N(0.0f, 1.0f, 0.0f);
-    const glm::vec3 L(-std::sin(ti), std::cos(ti), 0.0f);
-    const glsl::Light light = unitLightFrom(L);
+    const LobeVectors v = lobeVectors(inputs.incidentDeg);
+    const glm::vec3& N = v.N;
+    const glsl::Light light = unitLightFrom(v.L);
     const glm::vec3 p(0.0f);
     std::vector<PlotSample> samples;
     samples.reserve(181);
@@ -148,6 +153,27 @@ float maxTotal(const std::vector<std::vector<PlotSample>>& sets) {
         }
     }
     return m;
+}
+
+std::vector<RadialRing> radialRings(float outer, RadialScale scale) {
+    std::vector<float> values = scale == RadialScale::Linear ? linearTicks(outer, 4) : decadeTicks(outer, kLogDecades);
+    std::vector<RadialRing> out;
+    for (float v : values) {
+        float r = plotRadius(v, outer, scale);
+        if (r > 0.02f) {
+            out.push_back({v, r});
+        }
+    }
+    std::sort(out.begin(), out.end(), [](const RadialRing& x, const RadialRing& y) { return x.radius < y.radius; });
+    return out;
+}
+
+AttenuationSpan attenuationSpan(const LightDesc& light, const Model& model) {
+    const float distance = glm::length(light.position - model.translate);
+    if (light.type == LightType::Directional) {
+        return {distance, 5.0f};
+    }
+    return {distance, std::max(5.0f, std::ceil(distance * 2.0f))};
 }
 
 std::vector<glm::vec2> attenuationCurve(const glm::vec3& coefficients, float maxDistance, int samples) {

@@ -13,6 +13,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,17 @@ bool operator==(const LobeInputs& x, const LobeInputs& y);
 // attenuation. The lobe plots and the albedo (core/energy.h) shade with exactly this light.
 glsl::Light unitLightFrom(const glm::vec3& L);
 
+// The plots' geometry for an incident angle θi (degrees, negative on the other side): N = (0, 1, 0),
+// L = (−sin θi, cos θi, 0) towards the light, R = 2(N·L)N − L. The plane plots, the 3D lobe
+// (core/lobe3d.h) and the albedo all put their light there.
+struct LobeVectors {
+    glm::vec3 N, L, R;
+};
+LobeVectors lobeVectors(float incidentDeg);
+
+// (sin θo, cos θo) for θo = -90° … 90° in 1° steps, index θo + 90: the directions of the samples.
+const std::array<glm::vec2, 181>& outgoingDirections();
+
 // 181 samples, θo = -90 … 90.
 std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs);
 inline std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentDeg) {
@@ -62,6 +74,10 @@ enum class RadialScale { Linear, Log };
 inline constexpr float kLogDecades = 3.0f;
 
 float componentOf(const PlotSample& s, PlotComponent c);
+// The component of a diffuse and a specular part (the total is their sum, as the plots have it).
+inline float componentOf(float diffuse, float specular, PlotComponent c) {
+    return c == PlotComponent::Diffuse ? diffuse : c == PlotComponent::Specular ? specular : diffuse + specular;
+}
 
 // The radius, in [0, 1], at which `intensity` is drawn when `maxIntensity` is the outer circle:
 // linear I/Imax, or logarithmic 1 + log10(I/Imax)/kLogDecades (0 below that range).
@@ -75,7 +91,27 @@ std::vector<glm::vec2> lobePoints(const std::vector<PlotSample>& samples, PlotCo
 // The largest total over several sample sets (the outer circle when lobes are overlaid); 1e-6 at least.
 float maxTotal(const std::vector<std::vector<PlotSample>>& sets);
 
+// The outer circle for the largest intensity a plot draws: that intensity, or 1 where nothing is
+// lit (the scale then shows 0 to 1). The lab's plots and the figures (core/figures.h) both use it.
+inline constexpr float kNothingLit = 2e-6f;
+inline float outerRing(float largest) { return largest > kNothingLit ? largest : 1.0f; }
+
+// The rings a radial scale draws inside an outer circle of `outer`, innermost first: each one's
+// intensity and its radius in [0, 1] (none nearer the centre than 0.02).
+struct RadialRing {
+    float value, radius;
+};
+std::vector<RadialRing> radialRings(float outer, RadialScale scale);
+
 // (d, Att(d)) for d from 0 to maxDistance, with the lighting model's attenuation().
 std::vector<glm::vec2> attenuationCurve(const glm::vec3& coefficients, float maxDistance, int samples);
+
+// Where the attenuation plot of `light` reads: the distance from the light to the model's origin,
+// and the plot's largest d (twice that distance rounded up, at least 5; 5 for a directional light,
+// which is not attenuated).
+struct AttenuationSpan {
+    float distance, maxDistance;
+};
+AttenuationSpan attenuationSpan(const LightDesc& light, const Model& model);
 
 } // namespace lab

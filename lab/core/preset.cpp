@@ -1,7 +1,8 @@
 // preset.cpp — the preset's names, defaults and JSON writing.
 //
 // Owns toString for every enumeration (the names preset files use, from preset_names.h),
-// defaultSubdivisions, presetToJson and savePreset: every key in the documented order, numbers
+// defaultSubdivisions, presetToJson and savePreset: every key in the documented order (a
+// light's `orbit` only when it is not the default), numbers
 // as the shortest decimal that reads back as the same float, written atomically.
 //
 // It does not read or validate presets (preset_read.cpp).
@@ -170,6 +171,11 @@ Json presetJson(const Preset& p) {
                           {"cutoff_deg", number(l.cutoffDeg)},
                           {"exponent", number(l.exponent)},
                           {"enabled", l.enabled}});
+        if (l.orbit != LightOrbit{}) { // presets without motion are written as they were before it existed
+            lights.back()["orbit"] = {{"on", l.orbit.on},
+                                      {"axis", vec3(l.orbit.axis)},
+                                      {"degrees_per_second", number(l.orbit.degreesPerSecond)}};
+        }
     }
     j["lights"] = lights;
     j["terms"] = {{"emissive", p.terms.emissive},

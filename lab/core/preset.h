@@ -73,6 +73,16 @@ struct MaterialDesc {
     bool operator==(const MaterialDesc&) const = default;
 };
 
+// A light that moves by itself (core/light_orbit.h): it circles the axis through the model's
+// centre at a constant speed, starting from the preset's position (and direction). Only the live
+// view moves; screenshots, `lab render` and `lab check` show the preset's position.
+struct LightOrbit {
+    bool on = false;
+    glm::vec3 axis{0.0f, 1.0f, 0.0f}; // at least kMinDirectionLength long (it is normalized)
+    float degreesPerSecond = 30.0f;   // limits::kOrbitSpeed; negative turns the other way
+    bool operator==(const LightOrbit&) const = default;
+};
+
 struct LightDesc {
     LightType type = LightType::Point;
     glm::vec3 position{2.0f, 2.0f, 2.0f};
@@ -84,6 +94,7 @@ struct LightDesc {
     float cutoffDeg = 30.0f;
     float exponent = 8.0f;
     bool enabled = true;
+    LightOrbit orbit = {}; // saved only when it differs from the defaults
     bool operator==(const LightDesc&) const = default;
 };
 

@@ -9,6 +9,7 @@
 // It does not write presets (preset.cpp), load the model a preset names (model_loader.h) or
 // decide what a number may be (limits.h).
 #include "core/preset.h"
+#include "core/suggest.h"
 
 #include "core/file_io.h"
 #include "core/json_text.h"
@@ -34,45 +35,6 @@ using preset_names::NameTable;
 using Keys = std::span<const std::string_view>;
 
 namespace {
-
-//----------------------------------------------------------------------------------------
-// Suggestions for misspelt keys and names
-//----------------------------------------------------------------------------------------
-
-std::size_t editDistance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) {
-        row[j] = j;
-    }
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = up;
-        }
-    }
-    return row[b.size()];
-}
-
-// ` (did you mean "x"?)` for the closest candidate within a couple of edits, else "".
-template <typename Names>
-std::string suggestion(std::string_view word, const Names& candidates) {
-    std::string_view best;
-    if (word.size() > 64) {
-        return {}; // no key or name is that long (and the distance would cost its length times theirs)
-    }
-    std::size_t bestDistance = std::max<std::size_t>(2, word.size() / 3) + 1;
-    for (std::string_view c : candidates) {
-        std::size_t d = editDistance(word, c);
-        if (d < bestDistance) {
-            bestDistance = d;
-            best = c;
-        }
-    }
-    return best.empty() ? std::string{} : " (did you mean " + inQuotes(best) + "?)";
-}
 
 //----------------------------------------------------------------------------------------
 // Reader: one JSON object, its path, and the keys consumed
@@ -145,6 +107,14 @@ public:
             for (std::size_t i = 0; i < 3; ++i) {
                 readNumberAt((*v)[i], elementPath(key, i), dst[static_cast<int>(i)], range);
             }
+        }
+    }
+
+    // A direction (normalized where it is used): readVec3, then at least kMinDirectionLength long.
+    void readDirection(std::string_view key, glm::vec3& dst) {
+        readVec3(key, dst, limits::kCoordinate);
+        if (glm::length(dst) < limits::kMinDirectionLength) {
+            error(key, "must be at least 0.001 long (it is normalized)");
         }
     }
 
@@ -340,7 +310,9 @@ constexpr std::string_view kCameraKeys[] = {"eye", "target", "up", "fovy_deg", "
 constexpr std::string_view kCookTorranceKeys[] = {"distribution", "roughness", "fresnel", "ior", "geometry"};
 constexpr std::string_view kMaterialKeys[] = {"emissive", "ambient", "diffuse", "specular", "shininess"};
 constexpr std::string_view kLightKeys[] = {"type",     "position",    "direction",  "ambient",  "diffuse",
-                                           "specular", "attenuation", "cutoff_deg", "exponent", "enabled"};
+                                           "specular", "attenuation", "cutoff_deg", "exponent", "enabled",
+                                           "orbit"};
+constexpr std::string_view kOrbitKeys[] = {"on", "axis", "degrees_per_second"};
 constexpr std::string_view kTermsKeys[] = {"emissive", "ambient", "diffuse", "specular"};
 constexpr std::string_view kPlotKeys[] = {"incident_deg"};
 
@@ -441,10 +413,7 @@ void readMaterial(Reader& r, MaterialDesc& material) {
 void readLight(Reader& r, LightDesc& light) {
     r.readEnum("type", light.type, preset_names::kLightType);
     r.readVec3("position", light.position, limits::kCoordinate);
-    r.readVec3("direction", light.direction, limits::kCoordinate);
-    if (glm::length(light.direction) < limits::kMinDirectionLength) {
-        r.error("direction", "must be at least 0.001 long (it is normalized)");
-    }
+    r.readDirection("direction", light.direction);
     for (auto [key, color] : {std::pair{"ambient", &light.ambient}, std::pair{"diffuse", &light.diffuse},
                               std::pair{"specular", &light.specular}}) {
         r.readVec3(key, *color, limits::kLightColor);
@@ -456,6 +425,11 @@ void readLight(Reader& r, LightDesc& light) {
     r.readNumber("cutoff_deg", light.cutoffDeg, limits::kCutoffDeg);
     r.readNumber("exponent", light.exponent, limits::kSpotExponent);
     r.readBool("enabled", light.enabled);
+    r.readObject("orbit", kOrbitKeys, [&](Reader& o) {
+        o.readBool("on", light.orbit.on);
+        o.readDirection("axis", light.orbit.axis);
+        o.readNumber("degrees_per_second", light.orbit.degreesPerSecond, limits::kOrbitSpeed);
+    });
 }
 
 void readLights(Reader& top, std::vector<LightDesc>& lights) {

@@ -139,11 +139,79 @@ expect plot-same-file 2 'same file' -- "$lab" plot "$phong" --out "$tmp/d.csv" -
 check plot-same-file-nothing-written test ! -e "$tmp/d.csv"
 expect plot-albedo-unwritable 2 'lab plot: ' -- "$lab" plot "$phong" --albedo "$tmp/none/x.csv"
 
+# --- plot --figure: SVG, PNG and CSV of one figure (core/figures.h) --------------------------
+for fig in lobe overlay attenuation albedo; do
+  expect "figure-$fig" 0 "f-$fig\.svg" -- "$lab" plot "$phong" --figure $fig --svg "$tmp/f-$fig.svg" --png "$tmp/f-$fig.png" --csv "$tmp/f-$fig.csv"
+  check "figure-$fig-svg" grep -q '</svg>' "$tmp/f-$fig.svg"
+  check "figure-$fig-png-width" test "$(png_size "$tmp/f-$fig.png" | cut -d' ' -f1)" = 720
+  check "figure-$fig-csv" test "$(wc -l < "$tmp/f-$fig.csv")" -gt 50
+done
+"$lab" plot "$phong" --out "$tmp/lobe-out.csv" --incident-deg 30 --csv "$tmp/lobe-fig.csv" --png "$tmp/lobe2.png" --scale 2 --log >/dev/null
+check figure-csv-is-plot-csv cmp -s "$tmp/lobe-out.csv" "$tmp/lobe-fig.csv"
+check figure-png-scale-2 test "$(png_size "$tmp/lobe2.png")" = "1440 1000"
+expect figure-unknown 2 '--figure: .*(lobe|not in)' -- "$lab" plot "$phong" --figure pie --svg "$tmp/x.svg"
+expect figure-scale-range 2 '--scale' -- "$lab" plot "$phong" --png "$tmp/x.png" --scale 20
+expect figure-scale-needs-png 2 'scale is the PNG' -- "$lab" plot "$phong" --svg "$tmp/x.svg" --scale 2
+expect figure-needs-a-file 2 'choose a figure' -- "$lab" plot "$phong" --figure overlay
+expect figure-overlay-angles 0 'f-ov\.csv' -- "$lab" plot "$phong" --figure overlay --overlay-deg 70,40,0 --csv "$tmp/f-ov.csv"
+check figure-overlay-angles-used grep -q '^theta_out_deg,total_at_70,total_at_40,total_at_0$' "$tmp/f-ov.csv"
+expect figure-overlay-three-angles 2 '--overlay-deg: .*3' -- "$lab" plot "$phong" --figure overlay --overlay-deg 70,40 --csv "$tmp/x.csv"
+expect figure-overlay-angle-range 2 '--overlay-deg: .*100' -- "$lab" plot "$phong" --figure overlay --overlay-deg 70,40,100 --csv "$tmp/x.csv"
+# "nan" passes every range check (each comparison with NaN is false): refused by name first.
+expect figure-overlay-nan 2 '^--overlay-deg: must be a finite number, got nan' -- "$lab" plot "$phong" --figure overlay \
+    --overlay-deg nan,10,20 --svg "$tmp/x.svg"
+expect figure-scale-nan 2 '^--scale: must be a finite number, got nan' -- "$lab" plot "$phong" --png "$tmp/x.png" --scale nan
+expect plot-incident-inf 2 '^--incident-deg: must be a finite number, got inf' -- "$lab" plot "$phong" --out "$tmp/x.csv" \
+    --incident-deg inf
+check figure-nan-nothing-written test ! -e "$tmp/x.svg" -a ! -e "$tmp/x.png" -a ! -e "$tmp/x.csv"
+expect figure-no-such-light 2 'figure attenuation: light 3 does not exist' -- "$lab" plot "$phong" --figure attenuation --light 3 --svg "$tmp/x.svg"
+check figure-no-such-light-nothing-written test ! -e "$tmp/x.svg"
+expect figure-same-file 2 '--svg and --png are the same file' -- "$lab" plot "$phong" --svg "$tmp/y.svg" --png "$tmp/./y.svg"
+expect figure-unwritable 2 'lab plot: .*none' -- "$lab" plot "$phong" --svg "$tmp/none/x.svg"
+
+# --- render --sweep: one preset as a labelled grid (core/sweep.h) ---------------------------
+shin=$src/presets/06-shininess-10.json
+expect sweep-grid 0 'grid\.png' -- "$lab" render "$shin" --sweep material.shininess=10,20,30,50 \
+    --sweep material.specular=0.2,0.5,1 --size 48x40 --out "$tmp/grid.png"
+read -r gw gh < <(png_size "$tmp/grid.png")
+check sweep-grid-holds-the-cells test "$gw" -gt $((4 * 48)) -a "$gh" -gt $((3 * 40)) -a "$gw" -lt $((4 * 48 + 400))
+expect sweep-no-equals 2 '^lab render: --sweep "shininess": expected KEY=V1,V2,\.\.\.' -- \
+    "$lab" render "$shin" --sweep shininess --out "$tmp/s.png"
+expect sweep-unknown-key 2 '^lab render: --sweep material\.shinyness: unknown key \(did you mean "material\.shininess"\?\)' -- \
+    "$lab" render "$shin" --sweep material.shinyness=1,2 --out "$tmp/s.png"
+expect sweep-out-of-range 2 '^lab render: --sweep material\.shininess=-1: must be in \[0\.001, 1000000\], got -1$' -- \
+    "$lab" render "$shin" --sweep material.shininess=10,-1 --out "$tmp/s.png"
+expect sweep-triplet-out-of-range 2 'material\.specular=2: material\.specular\[0\]: must be in \[0, 1\], got 2' -- \
+    "$lab" render "$shin" --sweep material.specular=2 --out "$tmp/s.png"
+expect sweep-empty-value 2 'value 2 is empty' -- "$lab" render "$shin" --sweep material.shininess=1,,2 --out "$tmp/s.png"
+expect sweep-too-many-values 2 'at most 10 values, got 11' -- \
+    "$lab" render "$shin" --sweep material.shininess=1,2,3,4,5,6,7,8,9,10,11 --out "$tmp/s.png"
+expect sweep-three-keys 2 'one or two keys.*got 3' -- "$lab" render "$shin" --sweep material.shininess=1 \
+    --sweep material.specular=1 --sweep material.diffuse=1 --out "$tmp/s.png"
+expect sweep-same-key 2 'material\.shininess: the same key twice' -- "$lab" render "$shin" \
+    --sweep material.shininess=1 --sweep material.shininess=2 --out "$tmp/s.png"
+expect sweep-model 2 'model\.scale: not a key a sweep varies' -- "$lab" render "$shin" --sweep model.scale=1,2 --out "$tmp/s.png"
+expect sweep-needs-out 2 '--out' -- "$lab" render "$shin" --sweep material.shininess=1,2
+expect sweep-one-preset 2 '--sweep renders one preset, got 2' -- "$lab" render "$shin" "$phong" \
+    --sweep material.shininess=1,2 --out "$tmp/s.png"
+expect sweep-key-without-flag 2 'got 2 \("material\.specular=1,2" looks like KEY=V1,V2,\.\.\.: give each its own --sweep\)' -- \
+    "$lab" render "$shin" --sweep material.shininess=1,2 material.specular=1,2 --out "$tmp/s.png"
+expect sweep-plot-key 2 'plot\.incident_deg: changes no render' -- "$lab" render "$shin" --sweep plot.incident_deg=10,80 --out "$tmp/s.png"
+expect sweep-too-large 2 'the grid would be [0-9]+x[0-9]+ pixels' -- "$lab" render "$shin" \
+    --sweep material.shininess=1,2,3 --size 8000x8000 --out "$tmp/s.png"
+check sweep-nothing-written test ! -e "$tmp/s.png"
+out=$("$lab" render "$shin" --sweep "material.${esc}[2J=1" --out "$tmp/s.png" 2>&1)
+check sweep-escaped-key grep -qF 'material.\x1B[2J: not a preset key' <<<"$out"
+
 # --- check --------------------------------------------------------------------------------
 mkdir -p "$tmp/golden"
 expect check-missing-golden 1 'MISSING +05-full-phong' -- "$lab" check "$phong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
 expect check-update 0 'CREATED +05-full-phong' -- "$lab" check "$phong" --golden "$tmp/golden" --update --size 64x64
 expect check-pass 0 'PASS +05-full-phong +max 0 +mean 0\.000' -- "$lab" check "$phong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
+expect check-max-mean-nan 2 '^--max-mean: must be a finite number, got nan' -- "$lab" check "$phong" --golden "$tmp/golden" \
+    --max-mean nan --size 64x64
+expect check-max-failing-nan 2 '^--max-failing: must be a finite number, got -nan' -- "$lab" check "$phong" \
+    --golden "$tmp/golden" --max-failing -nan --size 64x64
 expect check-summary 0 '^1 passed, 0 failed$' -- "$lab" check "$phong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
 # A golden of another picture under this name: the check fails and leaves actual and diff images.
 "$lab" render "$src/presets/01-ambient-only.json" --out "$tmp/golden/05-full-phong.png" --size 64x64 >/dev/null
