@@ -78,7 +78,9 @@ std::string presetLink(const Preset& preset, const std::optional<std::string>& b
         return "preset=" + *bundledName;
     }
     // The saved form, minified: every key, so the link does not depend on future defaults.
-    nlohmann::ordered_json j = nlohmann::ordered_json::parse(presetToJson(preset));
+    // Parsed from a string_view, as preset_read.cpp parses: one parser in the page, not two.
+    const std::string saved = presetToJson(preset);
+    nlohmann::ordered_json j = nlohmann::ordered_json::parse(std::string_view(saved));
     return "p=" + base64UrlEncode(j.dump());
 }
 
