@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -105,9 +106,13 @@ std::map<std::string, ui::Rect> rects(const std::string& text) {
     return m;
 }
 
-TEST(PlotPanel, FitsItsWindowAtEverySizeAndScale) {
-    const std::pair<float, float> windows[] = {{1024, 768}, {1280, 800}, {1600, 900}, {1920, 1080}, {2560, 1440}};
-    for (float s : {1.0f, 1.5f, 2.0f, 2.5f}) {
+// Every window a class may use at each UI scale, and the plots' rectangle in it: the app's, and
+// both shapes it may take whatever the app decides (a right column and a band below the model).
+// check(r, W, H, where) draws and checks; `where` names the case for the messages.
+using PlotsCheck = std::function<void(const ui::Rect& r, float W, float H, const std::string& where)>;
+void forEachPlotsWindow(std::initializer_list<float> scales, std::initializer_list<std::pair<float, float>> windows,
+                        const PlotsCheck& check) {
+    for (float s : scales) {
         CpuImGui imgui(s);
         const float uiScale = ImGui::GetIO().Fonts->Fonts[0]->FontSize / 13.0f; // as the app's uiScale()
         for (auto [W, H] : windows) {
@@ -116,39 +121,51 @@ TEST(PlotPanel, FitsItsWindowAtEverySizeAndScale) {
             in.height = H;
             in.uiScale = uiScale;
             ui::Layout layout = ui::computeLayout(in);
-            // The app's rectangle, and both shapes it may take whatever the app decides:
-            // a right column and a band below the model.
             const ui::Rect shapes[] = {layout.plots, {W - 0.3f * W, 0, 0.3f * W, H}, {0.35f * W, 0.58f * H, 0.65f * W, 0.42f * H}};
             for (const ui::Rect& r : shapes) {
-                for (int variant = 0; variant < 4; ++variant) {
-                    Preset a, b;
-                    b.brdf = BrdfModel::CookTorrance;
-                    a.lights.push_back(a.lights.front()); // two lights: the attenuation plot's light chooser
-                    ui::PlotSettings settings;
-                    settings.cartesian = variant == 1;
-                    settings.scale = variant == 2 ? RadialScale::Log : RadialScale::Linear;
-                    settings.lockScale = variant == 3;
-                    Outcome out = drawPlots(r, W, H, a, variant >= 2 ? &b : nullptr, settings);
-                    std::string where = "scale " + std::to_string(s) + ", window " + std::to_string(int(W)) + "x" +
-                                        std::to_string(int(H)) + ", plots " + std::to_string(int(r.w)) + "x" +
-                                        std::to_string(int(r.h)) + ", variant " + std::to_string(variant);
-                    EXPECT_EQ(out.scrollY, 0.0f) << where;
-                    EXPECT_EQ(out.scrollX, 0.0f) << where;
-                    std::map<std::string, ui::Rect> m = rects(out.widgets);
-                    ASSERT_TRUE(m.count("plot.lobe")) << where << "\n" << out.widgets; // the lobe is always shown
-                    for (const auto& [name, w] : m) {
-                        if (name.rfind("plot.", 0) != 0) {
-                            continue;
-                        }
-                        EXPECT_GE(w.x, r.x) << name << ", " << where;
-                        EXPECT_GE(w.y, r.y) << name << ", " << where;
-                        EXPECT_LE(w.x + w.w, r.x + r.w + 0.5f) << name << ", " << where;
-                        EXPECT_LE(w.y + w.h, r.y + r.h + 0.5f) << name << ", " << where;
-                    }
+                if (r.w < 1.0f || r.h < 1.0f) {
+                    continue;
                 }
+                check(r, W, H,
+                      "scale " + std::to_string(s) + ", window " + std::to_string(int(W)) + "x" + std::to_string(int(H)) +
+                          ", plots " + std::to_string(int(r.w)) + "x" + std::to_string(int(r.h)));
             }
         }
     }
+}
+
+// Nothing scrolls, and every plot widget lies inside the plots' rectangle.
+void expectFits(const Outcome& out, const ui::Rect& r, const std::string& where) {
+    EXPECT_EQ(out.scrollY, 0.0f) << where;
+    EXPECT_EQ(out.scrollX, 0.0f) << where;
+    for (const auto& [name, w] : rects(out.widgets)) {
+        if (name.rfind("plot.", 0) != 0) {
+            continue;
+        }
+        EXPECT_GE(w.x, r.x) << name << ", " << where;
+        EXPECT_GE(w.y, r.y) << name << ", " << where;
+        EXPECT_LE(w.x + w.w, r.x + r.w + 0.5f) << name << ", " << where;
+        EXPECT_LE(w.y + w.h, r.y + r.h + 0.5f) << name << ", " << where;
+    }
+}
+
+TEST(PlotPanel, FitsItsWindowAtEverySizeAndScale) {
+    forEachPlotsWindow({1.0f, 1.5f, 2.0f, 2.5f}, {{1024, 768}, {1280, 800}, {1600, 900}, {1920, 1080}, {2560, 1440}},
+                       [](const ui::Rect& r, float W, float H, const std::string& where) {
+        for (int variant = 0; variant < 4; ++variant) {
+            Preset a, b;
+            b.brdf = BrdfModel::CookTorrance;
+            a.lights.push_back(a.lights.front()); // two lights: the attenuation plot's light chooser
+            ui::PlotSettings settings;
+            settings.cartesian = variant == 1;
+            settings.scale = variant == 2 ? RadialScale::Log : RadialScale::Linear;
+            settings.lockScale = variant == 3;
+            Outcome out = drawPlots(r, W, H, a, variant >= 2 ? &b : nullptr, settings);
+            const std::string at = where + ", variant " + std::to_string(variant);
+            ASSERT_TRUE(rects(out.widgets).count("plot.lobe")) << at << "\n" << out.widgets; // the lobe is always shown
+            expectFits(out, r, at);
+        }
+    });
 }
 
 // The plots keep their samples and curves from frame to frame (PlotSettings::cache). A cached
@@ -221,6 +238,140 @@ TEST(PlotPanel, TheCacheNeverShowsStaleData) {
             EXPECT_EQ(warm.cache.computed(), before) << "the " << what << " should have found what it drew before";
         }
     }
+}
+
+// The 3D lobe view (ui/plots_3d.h) fits the same windows: its canvases and controls inside the
+// window, nothing scrolled, the surface and the map drawn (more vertices than the grid has) and
+// ImGui's 16-bit indices never overflowed (under 65536 vertices in the window's list).
+TEST(PlotPanel, TheLobe3dViewFitsItsWindowAtEverySizeAndScale) {
+    // (A phone's compact layout gives the plots the page's width: the browser tests' 390x844.)
+    forEachPlotsWindow({1.0f, 2.0f, 2.5f}, {{1024, 768}, {1280, 800}, {1920, 1080}},
+                       [](const ui::Rect& r, float W, float H, const std::string& where) {
+        Preset a, b;
+        b.brdf = BrdfModel::CookTorrance;
+        ui::PlotSettings settings;
+        settings.view = ui::PlotView::Lobe3d;
+        Outcome out = drawPlots(r, W, H, a, &b, settings);
+        std::map<std::string, ui::Rect> m = rects(out.widgets);
+        ASSERT_TRUE(m.count("plot.lobe3d") && m.count("plot.lobe3d.map")) << where << "\n" << out.widgets;
+        EXPECT_FALSE(m.count("plot.lobe")) << "the plane plots are not drawn under the 3D view, " << where;
+        expectFits(out, r, where);
+        // The surface and the map are drawn wherever the lobe's canvas has room for a lobe
+        // (a band 322 pixels low at UI scale 2.5 leaves it 3 lines: there it is left out).
+        if (m["plot.lobe3d"].h >= 5.0f * ImGui::GetFontSize()) {
+            EXPECT_GT(out.vertices.size(), std::size_t(kLobeRings * kLobeMeridians)) << where << "\n" << out.widgets;
+        }
+        EXPECT_LT(out.vertices.size(), std::size_t(65536)) << where;
+    });
+}
+
+// The 3D view keeps its grids and meshes: a frame in which nothing changed computes nothing, and
+// after each edit what is drawn is what a fresh state draws.
+TEST(PlotPanel, TheLobe3dViewNeverShowsStaleData) {
+    CpuImGui imgui(1.0f);
+    ui::Rect r{800, 0, 480, 800};
+    Preset a, b;
+    b.brdf = BrdfModel::BlinnPhong;
+    const Preset* compare = nullptr;
+    ui::PlotSettings warm;
+    warm.view = ui::PlotView::Lobe3d;
+    drawPlots(r, 1280, 800, a, compare, warm);
+    const std::size_t computed = warm.lobe3d.computed();
+    EXPECT_GT(computed, 0u);
+    drawPlots(r, 1280, 800, a, compare, warm);
+    EXPECT_EQ(warm.lobe3d.computed(), computed) << "nothing changed, yet something was computed again";
+    const std::vector<std::pair<std::string, std::function<void()>>> edits{
+        {"shininess", [&] { a.material.shininess = 7.0f; }},
+        {"incident angle", [&] { a.plotIncidentDeg = -55.0f; }},
+        {"BRDF", [&] { a.brdf = BrdfModel::CookTorrance; }},
+        {"compare set", [&] { compare = &b; }},
+        {"B's shininess", [&] { b.material.shininess = 90.0f; }},
+        {"component", [&] { warm.lobe3d.component = PlotComponent::Specular; }},
+        {"log scale", [&] { warm.scale = RadialScale::Log; }},
+        {"orbit", [&] { warm.lobe3d.yawDeg = 80.0f; warm.lobe3d.pitchDeg = 60.0f; }},
+        {"window", [&] { r = {300, 500, 980, 300}; }},
+    };
+    for (const auto& [what, edit] : edits) {
+        edit();
+        const std::size_t before = warm.lobe3d.computed();
+        Outcome cached = drawPlots(r, 1280, 800, a, compare, warm);
+        EXPECT_GT(warm.lobe3d.computed(), before) << "the " << what << " changed nothing the cache keys on";
+        ui::PlotSettings cold = warm;
+        cold.lobe3d = ui::Lobe3dState{};
+        cold.lobe3d.component = warm.lobe3d.component;
+        cold.lobe3d.yawDeg = warm.lobe3d.yawDeg;
+        cold.lobe3d.pitchDeg = warm.lobe3d.pitchDeg;
+        Outcome fresh = drawPlots(r, 1280, 800, a, compare, cold);
+        EXPECT_TRUE(sameDrawing(cached, fresh)) << "after an edit of the " << what;
+    }
+}
+
+// The Energy view at every window and UI scale: it fits, shows its canvas, and never scrolls.
+TEST(PlotPanel, TheEnergyViewFitsItsWindowAtEverySizeAndScale) {
+    ui::PlotSettings settings; // one for all: the curves (35 ms each) are computed once, the layout every time
+    settings.view = ui::PlotView::Energy;
+    forEachPlotsWindow({1.0f, 2.0f, 2.5f}, {{1024, 768}, {1280, 800}, {1920, 1080}, {390, 844}},
+                       [&](const ui::Rect& r, float W, float H, const std::string& where) {
+        Preset a, b;
+        b.material.shininess = 5.0f;
+        settings.shownView = -1; // a new ImGui context opens its first tab: select the Energy view again
+        Outcome out = drawPlots(r, W, H, a, &b, settings);
+        std::map<std::string, ui::Rect> m = rects(out.widgets);
+        ASSERT_TRUE(m.count("plot.energy")) << where << "\n" << out.widgets;
+        EXPECT_FALSE(m.count("plot.lobe")) << "the plane plots are not drawn under the Energy view, " << where;
+        expectFits(out, r, where);
+    });
+}
+
+// The albedo curve is computed once per material (about 90 albedos), not once a frame; an edit of
+// the material computes it again and what is drawn is what a fresh cache draws; a click in the
+// plot sets the incident angle from where it lands (the x axis is θi from 0° to 90°), keeping its side.
+TEST(PlotPanel, TheEnergyViewKeepsItsCurveAndAClickSetsTheIncidentAngle) {
+    CpuImGui imgui(1.0f);
+    ui::Rect r{800, 0, 480, 800};
+    Preset a;
+    ui::PlotSettings warm;
+    warm.view = ui::PlotView::Energy;
+    drawPlots(r, 1280, 800, a, nullptr, warm);
+    const std::size_t computed = warm.cache.computed();
+    EXPECT_GT(computed, 0u);
+    drawPlots(r, 1280, 800, a, nullptr, warm);
+    EXPECT_EQ(warm.cache.computed(), computed) << "nothing changed, yet something was computed again";
+    a.plotIncidentDeg = 70.0f; // the marker moves; the curve stays
+    Outcome moved = drawPlots(r, 1280, 800, a, nullptr, warm);
+    EXPECT_EQ(warm.cache.computed(), computed + 1)
+        << "the incident angle is not part of the curve: only the albedo at the new angle (the readout's) is computed";
+    a.material.shininess = 3.0f;
+    Outcome cached = drawPlots(r, 1280, 800, a, nullptr, warm);
+    EXPECT_GT(warm.cache.computed(), computed) << "a new shininess must give a new curve";
+    EXPECT_FALSE(sameDrawing(moved, cached)) << "the curve did not change with the shininess";
+    ui::PlotSettings cold;
+    cold.view = ui::PlotView::Energy;
+    EXPECT_TRUE(sameDrawing(cached, drawPlots(r, 1280, 800, a, nullptr, cold)));
+
+    // A click at 1/3 of the plot's width from its left axis... found from the canvas's rectangle:
+    // the axis starts after the labels, so click at two points and check the angles grow and
+    // the side of the angle (negative: L on the other side) is kept.
+    std::map<std::string, ui::Rect> m = rects(cached.widgets);
+    ASSERT_TRUE(m.count("plot.energy"));
+    const ui::Rect c = m["plot.energy"];
+    auto clickAt = [&](float u) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(c.x + u * c.w, c.y + c.h * 0.5f);
+        io.MouseDown[0] = true;
+        drawPlots(r, 1280, 800, a, nullptr, warm);
+        io.MouseDown[0] = false;
+        drawPlots(r, 1280, 800, a, nullptr, warm);
+        return a.plotIncidentDeg;
+    };
+    a.plotIncidentDeg = -10.0f;
+    const float left = clickAt(0.3f);
+    const float right = clickAt(0.8f);
+    EXPECT_LT(left, 0.0f) << "the side of the incident angle is kept";
+    EXPECT_LT(right, left) << "further right is a larger angle";
+    EXPECT_GT(-left, 10.0f);
+    EXPECT_LE(-right, 90.0f);
+    EXPECT_EQ(std::round(right), right) << "whole degrees, as dragging L gives";
 }
 
 TEST(PlotPanel, RecentlyUsedReplacesTheOldestAndKeepsWhatWasHandedOut) {

@@ -1,8 +1,12 @@
 // app.cpp — one frame: layout, UI, requests carried out, one undo step, the 3D view.
 #include "app/app.h"
 
+#include "app/figure_export.h"
+#include "app/sweep_image.h"
 #include "app/view_cache.h"
 #include "core/file_io.h"
+#include "core/light_orbit.h"
+#include "core/model_loader.h"
 #include "core/probe.h"
 #include "core/safe_text.h"
 #include "render/renderer.h"
@@ -24,6 +28,9 @@ constexpr float kMinPresenterScale = 1.5f, kMaxPresenterScale = 2.5f, kPresenter
 constexpr float kToastSeconds = 4.0f;
 constexpr float kTouchScale = 1.2f; // a finger's UI: larger text as well as larger widgets
 const glm::vec3 kWindowBackground(0.09f, 0.09f, 0.11f);
+// While a light orbits, a frame every 1/60 s; a clock never jumps more than kMaxOrbitStep at once
+// (the first frame after an idle wait would otherwise turn the light by the whole wait).
+constexpr float kOrbitFrameSeconds = 1.0f / 60.0f, kMaxOrbitStep = 0.1f;
 
 } // namespace
 
@@ -54,6 +61,8 @@ struct App::Impl {
     ui::PanelState panel;
     ui::PlotSettings plots;
     ui::ShaderEditorState shaderEditor;
+    ui::SweepViewState sweep;
+    SweepImage sweepImage; // the sweep view's grid, rendered only while it is open
     ui::ViewControls viewControls;
     enum class Panels { All, PlotsOnly, None } panels = Panels::All; // Tab cycles
     bool showHelp = false, presenter = false, caption = false, lightShapes = true;
@@ -73,6 +82,23 @@ struct App::Impl {
     int viewSamples = 0;     // what the GL offers of AppOptions::viewSamples
     unsigned long long frames = 0;
     bool screenshotRequested = false, toggleFullscreen = false, pickFile = false, copyLink = false;
+
+    // The moving lights (core/light_orbit.h). The document keeps the preset's positions (what Save
+    // writes, what screenshots and `lab render` show); the live view, its markers and the probe
+    // show orbitedScene(). Each light's clock runs while its orbit is on and nothing is being
+    // dragged or edited, and starts again from 0 when its orbit is switched off or a scene opens.
+    LightMotion motionA, motionB;
+    unsigned motionScene = 0;
+    float orbitSleep = kOrbitFrameSeconds; // the wait between orbit frames, corrected to a steady rate
+    bool orbitFrame = false;               // the last frame was asked for by the orbit
+    struct OrbitCentre {
+        const Mesh* mesh = nullptr;
+        Model model;
+        glm::vec3 centre{0.0f};
+    } centreA, centreB;
+    bool advanceOrbits(float deltaTime, bool paused);
+    static glm::vec3 centreOf(OrbitCentre& cache, const std::shared_ptr<const Mesh>& mesh, const Model& model);
+    Preset shownA() { return anyOrbit(workspace.a()) ? orbitedScene(workspace.a(), motionA) : workspace.a(); }
 
     explicit Impl(AppOptions o)
         : options(std::move(o)),
@@ -125,6 +151,7 @@ ui::ScreenModel App::Impl::screenModel() {
     m.panel = &panel;
     m.plots = &plots;
     m.shaderEditor = &shaderEditor;
+    m.sweep = &sweep;
     m.lightingSource = shaderSource("lighting.glsl");
     m.viewControls = &viewControls;
     m.probe = probe ? &*probe : nullptr;
@@ -136,6 +163,7 @@ ui::ScreenModel App::Impl::screenModel() {
                  toastLeft > 0.0f ? toast.c_str() : nullptr, caption,
                  probe && probeOpen ? std::optional<glm::vec3>(probe->positionWorld) : std::nullopt};
     m.lightShapes = lightShapes;
+    m.motion = anyOrbit(workspace.a()) ? &motionA : nullptr;
     return m;
 }
 
@@ -186,6 +214,11 @@ void App::Impl::carryOut(const Request& r) {
     case Command::PresenterSmaller: presenterScale = std::max(kMinPresenterScale, presenterScale - kPresenterStep); break;
     case Command::ToggleFullscreen: toggleFullscreen = true; break;
     case Command::Screenshot: screenshotRequested = true; break;
+    case Command::ExportFigures:
+        workspace.saveFiles(exportFigures(workspace.a(), workspace.view.compare ? &workspace.b() : nullptr, plots,
+                                          panel.figureScale),
+                            "Figures");
+        break;
     case Command::FocusOpenPath: panel.focusOpenPath = true; break;
     case Command::PickFile: pickFile = true; break;
     case Command::CopyLink: copyLink = true; break; // the page says whether the browser allowed it
@@ -196,6 +229,12 @@ void App::Impl::carryOut(const Request& r) {
         }
         break;
     case Command::RevertShaders: compileShaders(true); break;
+    case Command::ToggleSweep: sweep.open = !sweep.open; break;
+    case Command::SaveSweep:
+        if (sweepImage.image()) {
+            workspace.saveScreenshot(*sweepImage.image(), "-sweep", "Sweep");
+        }
+        break;
     default: workspace.run(r); break;
     }
 }
@@ -231,7 +270,7 @@ void App::Impl::probeAt(const ui::ViewEvents& view) {
         return;
     }
     glm::vec2 ndc(2.0f * (view.probeX - r.x) / r.w - 1.0f, 1.0f - 2.0f * (view.probeY - r.y) / r.h);
-    probe = probePixel(viewed(workspace.a(), workspace.view.mode), *mesh, ndc, r.w / r.h);
+    probe = probePixel(viewed(shownA(), workspace.view.mode), *mesh, ndc, r.w / r.h); // the light where it is shown
     probeOpen = probe.has_value(); // a click beside the model closes the probe
     probeScene = workspace.scenesOpened();
     if (!probe) {
@@ -298,13 +337,54 @@ bool App::Impl::updateViews(const ui::Layout& layout, const FrameInput& in, floa
         shown.emplace_back(&cache, dest);
         return cache.update(renderer, key, dest, viewSamples);
     };
-    bool drawn = update(viewA, workspace.a(), workspace.meshA(), view.compare ? layout.viewA : layout.view);
+    bool drawn = update(viewA, shownA(), workspace.meshA(), view.compare ? layout.viewA : layout.view);
     if (view.compare) {
-        drawn = update(viewB, workspace.b(), workspace.meshB(), layout.viewB) || drawn;
+        const Preset& b = workspace.b();
+        drawn = update(viewB, anyOrbit(b) ? orbitedScene(b, motionB) : b, workspace.meshB(), layout.viewB) || drawn;
     } else {
         viewB.reset(); // its memory back; compare mode draws it again
     }
     return drawn;
+}
+
+// The centre of the model's drawn bounds (core/model_loader.h), computed again only when the mesh
+// or the model's transform changes.
+glm::vec3 App::Impl::centreOf(OrbitCentre& cache, const std::shared_ptr<const Mesh>& mesh, const Model& model) {
+    if (mesh && (cache.mesh != mesh.get() || !(cache.model == model))) {
+        cache.mesh = mesh.get();
+        cache.model = model;
+        std::optional<Sphere> bounds = drawnBounds(*mesh, model);
+        cache.centre = bounds ? bounds->center : model.translate;
+    }
+    return mesh ? cache.centre : model.translate;
+}
+
+// Runs the clocks of the lights that orbit (in A, or in B in compare mode: one clock per light
+// index for both) by this frame's time unless `paused`. True when some light is moving, so
+// another frame is due.
+bool App::Impl::advanceOrbits(float deltaTime, bool paused) {
+    const Preset& a = workspace.a();
+    const Preset* b = workspace.view.compare ? &workspace.b() : nullptr;
+    auto moves = [](const Preset* p, std::size_t i) {
+        return p && i < p->lights.size() && p->lights[i].orbit.on && p->lights[i].orbit.degreesPerSecond != 0.0f;
+    };
+    bool newScene = std::exchange(motionScene, workspace.scenesOpened()) != workspace.scenesOpened();
+    motionA.seconds.resize(std::max(a.lights.size(), b ? b->lights.size() : 0), 0.0);
+    bool moving = false;
+    for (std::size_t i = 0; i < motionA.seconds.size(); ++i) {
+        if (newScene || !(moves(&a, i) || moves(b, i))) {
+            motionA.seconds[i] = 0.0;
+        } else {
+            moving = true;
+            motionA.seconds[i] += paused ? 0.0 : std::min(deltaTime, kMaxOrbitStep);
+        }
+    }
+    motionA.centre = centreOf(centreA, workspace.meshA(), a.model);
+    motionB.seconds = motionA.seconds;
+    if (b) {
+        motionB.centre = centreOf(centreB, workspace.meshB(), b->model);
+    }
+    return moving && !paused;
 }
 
 // The 3D view alone, at the window's pixel density, to a PNG (a download in the browser).
@@ -401,16 +481,30 @@ FrameOutput App::frame(const FrameInput& in) {
     //--- carried out: platform events, the UI's requests, the dialogs' answers ----------------
     m.carryOut(in, events);
 
+    // The moving lights turn by this frame's time, unless the user is dragging or editing anything.
+    bool orbiting = m.advanceOrbits(in.deltaTime, events.gesture || events.dragging);
+
     //--- the renderer draws what the workspace holds ---------------------------------------
     if (std::exchange(m.screenshotRequested, false)) {
         m.screenshot(layout, in);
     }
     float scale = m.resolution.update(events.dragging, in.lastFrameSeconds, m.options.frameBudgetSeconds);
     m.viewDrawn = m.updateViews(layout, in, scale);
+    bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.meshA(), events.dragging);
     bindFramebuffer(in.targetFramebuffer);
     // A toast is removed when its time is up; nothing else on screen changes by itself (a
     // reduced view is drawn at full size by the frame that ends the drag).
-    float redrawIn = m.toastLeft > 0.0f ? m.toastLeft : -1.0f;
+    float redrawIn = sweepDrawn ? 0.0f : m.toastLeft > 0.0f ? m.toastLeft : -1.0f;
+    if (orbiting) {
+        // A steady rate whatever a frame costs: the wait is corrected by how far the last period
+        // (frame start to frame start) missed kOrbitFrameSeconds; where the swap waits for the
+        // display, the wait shrinks to what is left of its interval.
+        if (m.orbitFrame) {
+            m.orbitSleep = std::clamp(m.orbitSleep + 0.5f * (kOrbitFrameSeconds - in.deltaTime), 0.001f, kOrbitFrameSeconds);
+        }
+        redrawIn = redrawIn < 0.0f ? m.orbitSleep : std::min(redrawIn, m.orbitSleep);
+    }
+    m.orbitFrame = orbiting;
     if (m.options.layoutFile) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }

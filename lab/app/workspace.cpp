@@ -346,8 +346,8 @@ void Workspace::drop(const std::vector<std::string>& files) {
     }
 }
 
-void Workspace::saveScreenshot(const Image& image) {
-    std::string stem = doc_.file().empty() ? "lab" : doc_.file().stem().string();
+void Workspace::saveScreenshot(const Image& image, const std::string& suffix, const std::string& what) {
+    std::string stem = (doc_.file().empty() ? "lab" : doc_.file().stem().string()) + suffix;
     std::error_code ec;
     fs::create_directories(options_.screenshotFolder, ec);
     fs::path file;
@@ -358,15 +358,46 @@ void Workspace::saveScreenshot(const Image& image) {
     } while (fs::exists(file, ec));
     if (options_.saveByDownload) {
         downloads_.push_back({file.filename().string(), encodePng(image)});
-        notes_.push_back("Screenshot " + file.filename().string() + " downloaded");
+        notes_.push_back(what + " " + file.filename().string() + " downloaded");
         return;
     }
     std::string error;
     if (!writePng(image, file, error)) {
-        problem("Screenshot failed", error);
+        problem(what + " failed", error);
         return;
     }
-    notes_.push_back("Screenshot " + file.string());
+    notes_.push_back(what + " " + file.string());
+}
+
+void Workspace::saveFiles(const std::vector<Download>& files, const std::string& what) {
+    std::string stem = doc_.file().empty() ? "lab" : doc_.file().stem().string();
+    if (options_.saveByDownload) {
+        for (const Download& f : files) {
+            downloads_.push_back({stem + "-" + f.name, f.bytes});
+        }
+        notes_.push_back(what + ": " + std::to_string(files.size()) + " files downloaded");
+        return;
+    }
+    std::error_code ec;
+    fs::path folder;
+    do {
+        char number[32];
+        std::snprintf(number, sizeof number, "-figures-%03d", ++figureFolders_);
+        folder = options_.screenshotFolder / (stem + number);
+    } while (fs::exists(folder, ec));
+    fs::create_directories(folder, ec);
+    if (ec) {
+        problem(what + " failed", "cannot create " + folder.string() + ": " + ec.message());
+        return;
+    }
+    for (const Download& f : files) {
+        std::string error;
+        if (!writeFileAtomic(folder / f.name, f.bytes, error)) {
+            problem(what + " failed", error);
+            return;
+        }
+    }
+    notes_.push_back(what + ": " + std::to_string(files.size()) + " files in " + folder.string());
 }
 
 //----------------------------------------------------------------------------------------

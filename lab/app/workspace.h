@@ -78,8 +78,12 @@ public:
     void setViewAspect(float aspect) { viewAspect_ = aspect; }
     void drop(const std::vector<std::string>& files);
     void requestQuit();
-    // A PNG of the view into the screenshot folder (a download in the browser).
-    void saveScreenshot(const Image& image);
+    // A PNG of the view into the screenshot folder (a download in the browser), named
+    // <preset><suffix>-NNN.png; `what` names it in the messages ("Screenshot", "Sweep").
+    void saveScreenshot(const Image& image, const std::string& suffix = "", const std::string& what = "Screenshot");
+    // Files into a new folder <preset>-figures-NNN in the screenshot folder (downloads named
+    // <preset>-<file> in the browser); `what` names them in the messages.
+    void saveFiles(const std::vector<Download>& files, const std::string& what);
 
     // B follows A's camera; then the frame's edits become one undo step unless a gesture is
     // still in progress.
@@ -140,6 +144,7 @@ private:
     std::vector<std::string> notes_;
     std::vector<Download> downloads_;
     int screenshots_ = 0;
+    int figureFolders_ = 0;
     unsigned scenesOpened_ = 0;
     struct {
         std::string text;

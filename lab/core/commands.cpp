@@ -44,6 +44,7 @@ constexpr std::array kRows = {
     CommandRow{C::ToggleShaderEditor, 'E',                 kCtrl,         "Shader editor",    "shader editor",                                         true},
     CommandRow{C::CompileShaders,     keys::Enter,         kCtrl,         "Compile (Ctrl+Enter)", "compile the edited shaders (in the shader editor)",  true},
     CommandRow{C::CompileShaders,     keys::KeypadEnter,   kCtrl,         "Compile (Ctrl+Enter)", "",                                                   true},
+    CommandRow{C::ToggleSweep,        'G',                 kCtrl,         "Sweep",            "sweep: a grid of renders, one or two values varied",    true},
     CommandRow{C::RevertShaders,      0,                   kNoModifier,   "Revert to built-in", ""},
     CommandRow{C::Revert,             0,                   kNoModifier,   "Revert",           ""},
     CommandRow{C::OpenPresetAt,       0,                   kNoModifier,   "",                 ""},
@@ -52,6 +53,8 @@ constexpr std::array kRows = {
     CommandRow{C::DownloadPreset,     0,                   kNoModifier,   "Download preset",  ""},
     CommandRow{C::PickFile,           0,                   kNoModifier,   "Open preset...",   ""},
     CommandRow{C::CopyLink,           0,                   kNoModifier,   "Copy link",        ""},
+    CommandRow{C::ExportFigures,      0,                   kNoModifier,   "Export figures",   ""},
+    CommandRow{C::SaveSweep,          0,                   kNoModifier,   "Save PNG",         ""},
 };
 // clang-format on
 

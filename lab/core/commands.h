@@ -37,7 +37,8 @@ enum class Command {
     ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
     ToggleLightShapes,
     ToggleFullscreen, Screenshot, FocusOpenPath, PickFile, CopyLink, ToggleShaderEditor, CompileShaders,
-    RevertShaders,
+    ExportFigures,
+    RevertShaders, ToggleSweep, SaveSweep,
 };
 
 struct CommandRow {

@@ -43,17 +43,35 @@ namespace {
 namespace fs = std::filesystem;
 
 // clang-format off
+// One download every 250 ms: Chromium drops anchor downloads past ten started at once, and an
+// export hands over twelve files (four figures as SVG, PNG and CSV).
 EM_JS(void, labJsDownload, (const char* name, const char* data, int size), {
     const bytes = HEAPU8.slice(data, data + size);
-    const type = UTF8ToString(name).endsWith('.png') ? 'image/png' : 'application/json';
-    const url = URL.createObjectURL(new Blob([bytes], {type: type}));
-    const a = document.createElement('a');
-    a.href = url;
-    a.download = UTF8ToString(name);
-    document.body.appendChild(a);
-    a.click();
-    a.remove();
-    setTimeout(() => URL.revokeObjectURL(url), 1000);
+    const file = UTF8ToString(name);
+    const types = {png: 'image/png', svg: 'image/svg+xml', csv: 'text/csv', json: 'application/json'};
+    const type = types[file.slice(file.lastIndexOf('.') + 1)] || 'application/octet-stream';
+    const queue = Module.labDownloads || (Module.labDownloads = []);
+    queue.push({file: file, blob: new Blob([bytes], {type: type})});
+    const next = () => {
+        const d = queue.shift();
+        if (!d) {
+            Module.labDownloading = false;
+            return;
+        }
+        const url = URL.createObjectURL(d.blob);
+        const a = document.createElement('a');
+        a.href = url;
+        a.download = d.file;
+        document.body.appendChild(a);
+        a.click();
+        a.remove();
+        setTimeout(() => URL.revokeObjectURL(url), 1000);
+        setTimeout(next, 250);
+    };
+    if (!Module.labDownloading) {
+        Module.labDownloading = true;
+        next();
+    }
 });
 
 EM_JS(void, labJsSetLink, (const char* link), {

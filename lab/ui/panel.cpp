@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace lab::ui {
 
@@ -295,6 +296,40 @@ void lightFalloffEditor(LightDesc& l, const std::string& prefix) {
     }
 }
 
+// The moving light (core/light_orbit.h): on, its speed and its axis. The position above stays
+// where the orbit starts; only the live view moves.
+void lightOrbitEditor(LightDesc& l, const std::string& prefix) {
+    ImGui::Checkbox("orbit the model", &l.orbit.on);
+    mark(prefix + "orbit");
+    helpMarker("The light circles the axis through the model's centre, starting from the position "
+               "above, and pauses while you drag anything. Saved with the preset. Screenshots and "
+               "lab render show the light at the position above (no motion).");
+    if (!l.orbit.on) {
+        return;
+    }
+    limitedSlider("speed (deg/s)", l.orbit.degreesPerSecond, limits::kOrbitSpeed, "%.0f");
+    mark(prefix + "orbit.speed");
+    glm::vec3 before = l.orbit.axis;
+    if (dragVec3("axis", l.orbit.axis, 0.01f, limits::kCoordinate.min, limits::kCoordinate.max) &&
+        glm::length(l.orbit.axis) < limits::kMinDirectionLength) {
+        l.orbit.axis = before; // the validator's minimum length: keep the last valid axis
+    }
+    mark(prefix + "orbit.axis");
+    static const struct {
+        const char* name;
+        glm::vec3 axis;
+    } axes[] = {{"x", {1, 0, 0}}, {"y (up)", {0, 1, 0}}, {"z", {0, 0, 1}}};
+    for (std::size_t i = 0; i < std::size(axes); ++i) {
+        if (i > 0) {
+            sameLineIfFits(ImGui::CalcTextSize(axes[i].name).x + ImGui::GetStyle().FramePadding.x * 2.0f);
+        }
+        if (ImGui::SmallButton(axes[i].name)) {
+            l.orbit.axis = axes[i].axis;
+        }
+        mark(prefix + "orbit.axis." + std::string(1, axes[i].name[0])); // widget names have no spaces
+    }
+}
+
 // Position, direction, colours of one light; `prefix` names its widgets ("lights[0].").
 void lightEditor(LightDesc& l, const std::string& prefix) {
     ImGui::Checkbox("enabled", &l.enabled);
@@ -330,6 +365,7 @@ void lightEditor(LightDesc& l, const std::string& prefix) {
     lightColorEdit("specular", l.specular);
     mark(prefix + "specular");
     lightFalloffEditor(l, prefix);
+    lightOrbitEditor(l, prefix);
 }
 
 void lightsSection(Preset& p, PanelState& state) {
@@ -400,11 +436,33 @@ void compareRow(ViewSettings& view, const PanelInfo& info, std::vector<Request>&
     }
 }
 
-void toolButtons(std::vector<Request>& requests) {
+void toolButtons(PanelState& state, std::vector<Request>& requests) {
     commandButton(Command::ToggleShaderEditor, requests);
+    sameLineIfFits(commandRow(Command::ToggleSweep).label);
+    commandButton(Command::ToggleSweep, requests);
+    mark("sweep.open");
     sameLineIfFits(commandRow(Command::Screenshot).label);
     commandButton(Command::Screenshot, requests);
     mark("screenshot");
+    sameLineIfFits(commandRow(Command::ExportFigures).label);
+    commandButton(Command::ExportFigures, requests);
+    mark("figures.export");
+    // The PNGs' scale beside it (the SVGs have none; the CSVs are numbers).
+    char scale[32];
+    std::snprintf(scale, sizeof scale, "PNG %gx", double(state.figureScale));
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("PNG 4x").x + ImGui::GetFrameHeight() + ImGui::GetStyle().FramePadding.x * 2);
+    if (ImGui::BeginCombo("##figure-scale", scale)) {
+        for (float s : kFigureScales) {
+            char item[64];
+            std::snprintf(item, sizeof item, "PNG %gx (%d px wide)", double(s), static_cast<int>(720 * s));
+            if (ImGui::Selectable(item, s == state.figureScale)) {
+                state.figureScale = s;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    mark("figures.scale");
     sameLineIfFits(commandRow(Command::ToggleHelp).label);
     commandButton(Command::ToggleHelp, requests);
 }
@@ -424,7 +482,7 @@ void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, Pan
     }
     if (model) {
         compareRow(view, info, requests);
-        toolButtons(requests);
+        toolButtons(state, requests);
     }
     if (material && ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
         materialSection(preset);

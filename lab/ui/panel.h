@@ -35,7 +35,11 @@ struct PanelState {
     PanelTab tab = PanelTab::Plots; // the compact layout's chosen tab (ui/layout.h)
     bool focusOpenPath = false; // Ctrl+O: the open field takes the keyboard this frame
     int listScrolledTo = -1;    // the preset the list last scrolled to: it follows the current one
+    float figureScale = 2.0f;   // Export figures' PNGs: 1 is 720 pixels wide (kFigureScales)
 };
+
+// The PNG scales Export figures offers: 720, 1440 (a projector, the default) and 2880 pixels wide.
+inline constexpr float kFigureScales[] = {1.0f, 2.0f, 4.0f};
 
 // The whole panel, or one of the compact layout's tabs (ui/layout.h): Model (files, presets,
 // compare, tools, the model, the camera), Material (material, BRDF, shading and terms), Lights.

@@ -47,6 +47,11 @@ PlotCache::Albedos PlotCache::albedo(const LobeInputs& inputs) {
     return albedo_.get(inputs, [&] { return lab::albedo(inputs); });
 }
 
+PlotCache::AlbedoCurve PlotCache::albedoCurve(LobeInputs inputs) {
+    inputs.incidentDeg = 0.0f; // the curve covers every angle
+    return albedoCurves_.get(inputs, [&] { return lab::albedoCurve(inputs); });
+}
+
 PlotCache::Points PlotCache::lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
                                   const CurvePlacement& at) {
     return lobes_.get(LobeKey{inputs, component, outer, scale, at}, [&] {

@@ -89,6 +89,9 @@ public:
     // albedo(inputs): the energy readout's numbers (nullopt at ±90°).
     using Albedos = std::shared_ptr<const std::optional<Albedo>>;
     Albedos albedo(const LobeInputs& inputs);
+    // albedoCurve(inputs): ρ for θi = 0°…89° (the Energy view; inputs.incidentDeg is not part of the key).
+    using AlbedoCurve = std::shared_ptr<const std::vector<AlbedoSample>>;
+    AlbedoCurve albedoCurve(LobeInputs inputs);
     // The screen points of one component of the lobe `inputs`, the outer ring at `outer`, thinned.
     Points lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
                 const CurvePlacement& at);
@@ -96,7 +99,7 @@ public:
     Points attenuation(const glm::vec3& coefficients, float maxDistance, const CurvePlacement& at);
 
     // How many sample sets and curves were computed rather than found (for the tests).
-    std::size_t computed() const { return samples_.made() + albedo_.made() + lobes_.made() + attenuation_.made(); }
+    std::size_t computed() const { return samples_.made() + albedo_.made() + albedoCurves_.made() + lobes_.made() + attenuation_.made(); }
 
 private:
     struct LobeKey {
@@ -118,6 +121,7 @@ private:
     // more, so that switching back and forth (A and B, polar and Cartesian) finds them again.
     RecentlyUsed<LobeInputs, std::vector<PlotSample>> samples_{16};
     RecentlyUsed<LobeInputs, std::optional<Albedo>> albedo_{8}; // A and B at the lobe's angle
+    RecentlyUsed<LobeInputs, std::vector<AlbedoSample>> albedoCurves_{4}; // A and B, against θi
     RecentlyUsed<LobeKey, std::vector<ImVec2>> lobes_{32};
     RecentlyUsed<AttenuationKey, std::vector<ImVec2>> attenuation_{4};
 };

@@ -153,13 +153,11 @@ struct Readout {
 };
 
 // maxTotal()'s floor: below it there is nothing to plot, and the scale shows 0 to 1.
-constexpr float kNothing = 2e-6f;
-inline float scaleFor(float largest) { return largest > kNothing ? largest : 1.0f; }
 
 // What the outer circle stands for, in words (in tokens that can wrap), with a warning when a
 // locked scale cuts a lobe.
 inline void scaleTokens(Readout& r, float outer, float largest, bool locked, const char* what) {
-    if (!locked && !(largest > kNothing)) {
+    if (!locked && !(largest > kNothingLit)) {
         r.add("all 0 (terms switched off?)", kLabel);
         return;
     }
@@ -237,47 +235,37 @@ inline float polarMaxHeight(const Pens& p, float width) {
     return std::max((width - m.left - m.right) * 0.5f, 0.0f) + m.top + m.bottom;
 }
 
-inline void arrow(ImDrawList* dl, const Pens& p, const Frame& f, glm::vec2 dir, float length, ImU32 color, const char* label,
-           float thickness) {
-    ImVec2 a = f.at({0, 0}), b = f.at(dir * length);
+// An arrow on screen from `a` to `b` with its name beside the tip; one too short to point
+// anywhere (a 3D vector seen end on) is a dot with its name.
+inline void arrowBetween(ImDrawList* dl, const Pens& p, ImVec2 a, ImVec2 b, ImU32 color, const char* label, float thickness) {
     glm::vec2 d(b.x - a.x, b.y - a.y);
-    if (glm::length(d) < 1e-3f) {
-        return;
+    const float len = glm::length(d);
+    if (len < 1e-3f) {
+        dl->AddCircleFilled(a, 3.0f * p.s, color);
+    } else {
+        d /= len;
+        const glm::vec2 n(-d.y, d.x);
+        const float h = std::min(p.head, len * 0.5f);
+        const ImVec2 base(b.x - d.x * h, b.y - d.y * h);
+        dl->AddLine(a, base, color, thickness);
+        dl->AddTriangleFilled(b, ImVec2(base.x + n.x * h * 0.5f, base.y + n.y * h * 0.5f),
+                              ImVec2(base.x - n.x * h * 0.5f, base.y - n.y * h * 0.5f), color);
     }
-    d = glm::normalize(d);
-    glm::vec2 n(-d.y, d.x);
-    float h = std::min(p.head, glm::length(glm::vec2(b.x - a.x, b.y - a.y)) * 0.5f);
-    ImVec2 base(b.x - d.x * h, b.y - d.y * h);
-    dl->AddLine(a, base, color, thickness);
-    dl->AddTriangleFilled(b, ImVec2(base.x + n.x * h * 0.5f, base.y + n.y * h * 0.5f),
-                          ImVec2(base.x - n.x * h * 0.5f, base.y - n.y * h * 0.5f), color);
     if (label && *label) {
         // Beside the tip, on the side away from the arrow's own line.
-        ImVec2 size = ImGui::CalcTextSize(label);
-        float x = d.x >= 0.0f ? b.x + p.pad : b.x - p.pad - size.x;
+        const ImVec2 size = ImGui::CalcTextSize(label);
+        const float x = d.x >= 0.0f ? b.x + p.pad : b.x - p.pad - size.x;
         dl->AddText(ImVec2(x, b.y - size.y - p.pad * 0.5f), color, label);
     }
 }
 
-inline void polyline(ImDrawList* dl, const std::vector<ImVec2>& points, ImU32 color, float thickness) {
-    dl->AddPolyline(points.data(), static_cast<int>(points.size()), color, 0, thickness);
+inline void arrow(ImDrawList* dl, const Pens& p, const Frame& f, glm::vec2 dir, float length, ImU32 color, const char* label,
+           float thickness) {
+    arrowBetween(dl, p, f.at({0, 0}), f.at(dir * length), color, label, thickness);
 }
 
-// The rings a radial scale draws, innermost first, with their radii in [0, 1].
-struct Ring {
-    float value, radius;
-};
-inline std::vector<Ring> rings(float maxI, RadialScale scale) {
-    std::vector<float> values = scale == RadialScale::Linear ? linearTicks(maxI, 4) : decadeTicks(maxI, kLogDecades);
-    std::vector<Ring> out;
-    for (float v : values) {
-        float r = plotRadius(v, maxI, scale);
-        if (r > 0.02f) {
-            out.push_back({v, r});
-        }
-    }
-    std::sort(out.begin(), out.end(), [](const Ring& x, const Ring& y) { return x.radius < y.radius; });
-    return out;
+inline void polyline(ImDrawList* dl, const std::vector<ImVec2>& points, ImU32 color, float thickness) {
+    dl->AddPolyline(points.data(), static_cast<int>(points.size()), color, 0, thickness);
 }
 
 // The polar grid: rings with their intensities under the surface line (right of N), the outer
@@ -299,7 +287,7 @@ inline void polarGrid(ImDrawList* dl, const Pens& p, const Frame& f, float maxI,
     }
     float labelsEnd = f.origin.x; // the right edge of the last ring label, to skip crowded ones
     const float labelsLimit = f.origin.x + f.radius + p.pad - ninetyW * 0.5f - p.pad;
-    for (const Ring& ring : rings(maxI, scale)) {
+    for (const RadialRing& ring : radialRings(maxI, scale)) {
         dl->PathArcTo(f.origin, ring.radius * f.radius, pi, 2.0f * pi, segments);
         dl->PathStroke(kGrid, 0, p.thin);
         std::string t = tickText(ring.value);
@@ -345,8 +333,8 @@ struct Box {
 
 // Values up the left axis of a box: each (value, v in [0, 1]) with a grid line and its text;
 // "0" at the bottom where the axis starts at 0 (not on a logarithmic one).
-inline void yAxis(ImDrawList* dl, const Pens& p, const Box& b, const std::vector<Ring>& ticks, bool fromZero) {
-    for (const Ring& t : ticks) {
+inline void yAxis(ImDrawList* dl, const Pens& p, const Box& b, const std::vector<RadialRing>& ticks, bool fromZero) {
+    for (const RadialRing& t : ticks) {
         ImVec2 y = b.at(0, t.radius);
         dl->AddLine(y, b.at(1, t.radius), kGrid, p.thin);
         std::string text = tickText(t.value);

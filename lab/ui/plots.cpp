@@ -7,6 +7,7 @@
 // nothing reaches past the region and the window never scrolls.
 #include "ui/plots.h"
 #include "ui/plot_kit.h"
+#include "ui/plots_energy.h"
 
 #include "ui/widgets.h"
 
@@ -103,7 +104,7 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p)
         l.b = s.cache.samples(l.inB);
     }
     l.largest = b ? largestTotal({l.a.get(), l.b.get()}) : largestTotal({l.a.get()});
-    l.outer = scaleMaximum(scaleFor(l.largest), s.lockScale, s.lobeScale);
+    l.outer = scaleMaximum(outerRing(l.largest), s.lockScale, s.lobeScale);
     const PlotSample& v = sampleAt(*l.a, s.viewerDeg);
     l.readout.add(format("at V %+.0f%s:", double(s.viewerDeg), kDeg), kViewer);
     l.readout.add(format("diffuse %.3f", double(v.diffuse)), kDiffuse, true);
@@ -127,7 +128,7 @@ Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
         o.sets[i] = s.cache.samples(o.inputs[i]);
     }
     o.largest = largestTotal({o.sets[0].get(), o.sets[1].get(), o.sets[2].get()});
-    o.outer = scaleMaximum(scaleFor(o.largest), s.lockScale, s.overlayScale);
+    o.outer = scaleMaximum(outerRing(o.largest), s.lockScale, s.overlayScale);
     o.readout.add("total for each incident angle;", kLabel);
     scaleTokens(o.readout, o.outer, o.largest, s.lockScale, "max of the three");
     o.readout.measure(p);
@@ -148,8 +149,9 @@ Attenuation attenuationData(const Preset& a, PlotSettings& s, const Pens& p) {
         t.readout.add(name + " is directional:", kLabel);
         t.readout.add("Att = 1 at every distance", kSpecular);
     } else {
-        t.distance = glm::length(t.light->position - a.model.translate);
-        t.maxD = std::max(5.0f, std::ceil(t.distance * 2.0f));
+        const AttenuationSpan span = attenuationSpan(*t.light, a.model); // as the figure's (core/plot.h)
+        t.distance = span.distance;
+        t.maxD = span.maxDistance;
         t.att = glsl::attenuation(t.light->attenuation, t.distance);
         t.readout.add(name + ", at the model:", kLabel);
         t.readout.add(format("d = %.2f", double(t.distance)), kSpecular);
@@ -174,7 +176,7 @@ struct Block {
 };
 
 Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout& r, const char* readoutMark,
-                 bool cramped, bool controls, const std::function<float(float)>& maxCanvas) {
+                 bool cramped, bool controls, float minCanvas, const std::function<float(float)>& maxCanvas) {
     const ImVec2 top(origin.x + box.x, origin.y + box.y);
     const float controlsH = controls ? p.frame + p.gap : 0.0f;
     Block b;
@@ -200,9 +202,16 @@ Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout
         float room = controlsShown ? box.h - controlsH - p.gap : box.h;
         b.canvasH = std::clamp(room, 0.0f, maxCanvas(b.canvasW));
     } else {
+        float canvasH = box.canvas;
+        if (canvasH < minCanvas) {
+            // One plot at a time in a column too low for its wrapped readout (a narrow column at a
+            // large UI scale): the readout gives way, clipped, so that the canvas keeps its minimum.
+            canvasH = std::min(minCanvas, std::max(box.h - controlsH - p.gap, 0.0f));
+            stripH = std::max(box.h - controlsH - p.gap - canvasH, 0.0f);
+        }
         b.canvas = ImVec2(top.x, top.y + stripH + p.gap);
         b.canvasW = box.w;
-        b.canvasH = box.canvas;
+        b.canvasH = canvasH;
     }
     // Below the canvas and the text, whichever ends lower (beside a short canvas the text may).
     b.controls = ImVec2(top.x, std::max(b.canvas.y + b.canvasH, strip.y + stripH) + p.gap);
@@ -238,7 +247,7 @@ void lobeCurves(ImDrawList* dl, const Pens& p, const Lobes& lobes, PlotSettings&
 // x: θo from -90 to 90; y: intensity (radius function), 0 at the bottom.
 void cartesianLobes(const Canvas& c, const Pens& p, const Lobes& lobes, PlotSettings& s) {
     ImDrawList* dl = c.dl;
-    std::vector<Ring> ticks = rings(lobes.outer, s.scale);
+    std::vector<RadialRing> ticks = radialRings(lobes.outer, s.scale);
     float labelW = textSize("0.000").x;
     Box b{ImVec2(c.corner.x + labelW + 2.0f * p.pad, c.corner.y + c.height - p.line - p.pad),
           ImVec2(c.corner.x + c.width - textSize("90" + std::string(kDeg)).x * 0.5f - p.pad, c.corner.y + p.line * 0.6f)};
@@ -335,7 +344,8 @@ PlotNeeds lobeNeeds(const Lobes& lobes, const PlotSettings& s, const Pens& p, fl
 
 void lobePlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Lobes& lobes, Preset& a,
               PlotSettings& s, const ProbeResult* probe) {
-    const Block block = placeBlock(box, origin, p, lobes.readout, "plot.lobe.readout", cramped, true, [&](float w) {
+    const Block block = placeBlock(box, origin, p, lobes.readout, "plot.lobe.readout", cramped, true,
+                                   lobeNeeds(lobes, s, p, box.w).minCanvas, [&](float w) {
         return s.cartesian ? w * 0.55f : polarMaxHeight(p, w);
     });
     const Canvas canvas = beginCanvas("lobe", "plot.lobe", block.canvasW, block.canvasH);
@@ -385,7 +395,7 @@ ImVec4 shade(ImU32 color, float k) {
 
 void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Overlay& o, PlotSettings& s) {
     const Block block = placeBlock(box, origin, p, o.readout, "plot.overlay.readout", cramped, true,
-                                   [&](float w) { return polarMaxHeight(p, w); });
+                                   overlayNeeds(o, p, box.w).minCanvas, [&](float w) { return polarMaxHeight(p, w); });
     const Canvas canvas = beginCanvas("overlay", "plot.overlay", block.canvasW, block.canvasH);
     if (canvas.shown()) {
         Frame f = polarFrame(canvas, p);
@@ -482,7 +492,7 @@ void attenuationCanvas(const Canvas& c, const Pens& p, const Attenuation& t, Plo
 void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Attenuation& t,
                      const Preset& a, PlotSettings& s) {
     const Block block = placeBlock(box, origin, p, t.readout, "plot.attenuation.readout", cramped, lightChooser(a),
-                                   [&](float w) { return t.light ? w * 0.42f : 0.0f; });
+                                   attenuationNeeds(t, a, p, box.w).minCanvas, [&](float w) { return t.light ? w * 0.42f : 0.0f; });
     if (t.light) {
         const Canvas canvas = beginCanvas("attenuation", "plot.attenuation", block.canvasW, block.canvasH);
         if (canvas.shown()) {
@@ -554,9 +564,8 @@ void options(PlotSettings& s) {
     }
 }
 
-} // namespace
-
-void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
+// The plane of incidence: the lobe, the overlaid angles and Att(d).
+void planeView(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
     options(s);
     const Pens p = pens();
     const Lobes lobes = lobeData(a, b, s, p);
@@ -604,6 +613,53 @@ void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* 
         ImGui::EndTabBar();
     }
     ImGui::PopClipRect();
+}
+
+// The views in the selector's order: a further view is its PlotView and one line here.
+struct ViewEntry {
+    PlotView view;
+    const char* name;
+    const char* mark;
+    void (*draw)(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe);
+};
+const ViewEntry kViews[] = {
+    {PlotView::Plane, "Plane", "plot.view.plane", planeView},
+    {PlotView::Lobe3d, "3D lobe", "plot.view.lobe3d", [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*) { lobe3dPanel(a, b, s); }},
+    {PlotView::Energy, "Energy", "plot.view.energy", [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*) { energyPanel(a, b, s); }},
+};
+
+} // namespace
+
+void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
+    // The selector's row as low as the text allows (a row less for the views below it): thinner
+    // tabs, the views' own widgets at the usual padding.
+    const ImVec2 padding = ImGui::GetStyle().FramePadding;
+    const ImVec2 thin(padding.x, std::floor(padding.y * 0.35f));
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, thin);
+    if (!ImGui::BeginTabBar("plots.view")) {
+        ImGui::PopStyleVar();
+        return;
+    }
+    // A view chosen from outside (a test, the first frame) is selected until its tab opens; after
+    // that the tabs decide.
+    const bool pending = s.shownView != static_cast<int>(s.view);
+    for (const ViewEntry& v : kViews) {
+        const bool select = pending && s.view == v.view;
+        const bool open = ImGui::BeginTabItem(v.name, nullptr, select ? ImGuiTabItemFlags_SetSelected : 0);
+        mark(v.mark);
+        if (open) {
+            ImGui::PopStyleVar();
+            if (!pending) {
+                s.view = v.view;
+            }
+            s.shownView = static_cast<int>(v.view);
+            v.draw(a, b, s, probe);
+            ImGui::EndTabItem();
+            ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, thin);
+        }
+    }
+    ImGui::EndTabBar();
+    ImGui::PopStyleVar();
 }
 
 } // namespace lab::ui

@@ -22,12 +22,18 @@
 #include "core/plot.h"
 #include "core/probe.h"
 #include "ui/plot_cache.h"
+#include "ui/plots_3d.h"
 
 #include <optional>
 
 namespace lab::ui {
 
+// The plots window's views, one tab each in this order (plots.cpp's table names and draws them).
+enum class PlotView { Plane, Lobe3d, Energy };
+
 struct PlotSettings {
+    PlotView view = PlotView::Plane;
+    int shownView = -1; // the view whose tab was open last frame (-1: none yet)
     RadialScale scale = RadialScale::Linear;
     bool cartesian = false;
     bool lockScale = false;                    // the outer circle stays where it was when locked
@@ -37,11 +43,13 @@ struct PlotSettings {
     int attenuationLight = 0;
     int dragging = 0; // 0 none, 1 L, 2 V
     PlotCache cache;  // samples and curves of earlier frames, found again by their inputs
+    Lobe3dState lobe3d; // the 3D lobe's camera, component and kept meshes (ui/plots_3d.h)
 };
 
-// Draws the plots into the current ImGui window's remaining content region. Dragging L edits
-// a.plotIncidentDeg (part of the preset, so it is undoable and saved). `b` is the compare set,
-// overlaid when given. The probe's vectors are drawn only when `probe` is given.
+// Draws the view selector and the chosen view into the current ImGui window's remaining content
+// region: "Plane" (the plots below), "3D lobe" (ui/plots_3d.h) or "Energy" (ui/plots_energy.h).
+// Dragging L edits a.plotIncidentDeg (part of the preset, so it is undoable and saved). `b` is the
+// compare set, overlaid when given. The probe's vectors are drawn only when `probe` is given.
 void plotsPanel(Preset& a, const Preset* b, PlotSettings& settings, const ProbeResult* probe);
 
 } // namespace lab::ui

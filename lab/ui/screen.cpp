@@ -131,10 +131,11 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
         probeWindow(*m.probe, *m.a, *m.probeOpen, layout.view.x + 10.0f, layout.view.y + ImGui::GetFontSize() * 2.5f);
     }
     shaderEditorWindow(*m.shaderEditor, events.requests, m.lightingSource);
+    sweepWindow(*m.sweep, *m.a, events.requests);
     dialogs(m, events);
     const Rect& active = m.b ? layout.viewA : layout.view;
-    events.view = viewControls(*m.a, active, layout.view, *m.viewControls, m.clicks);
-    lightMarkers(*m.a, active, m.viewControls->light, m.lightShapes);
+    events.view = viewControls(*m.a, active, layout.view, *m.viewControls, m.clicks, m.motion);
+    lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewControls->light, m.lightShapes);
     viewOverlay(m.overlay, layout);
     events.gesture = ImGui::IsAnyItemActive() || events.view.gesture;
     events.dragging = events.gesture && ImGui::IsAnyMouseDown();

@@ -13,6 +13,7 @@
 #include "ui/panel.h"
 #include "ui/plots.h"
 #include "ui/shader_editor.h"
+#include "ui/sweep_view.h"
 #include "ui/tools.h"
 #include "ui/view.h"
 
@@ -32,12 +33,14 @@ struct ScreenModel {
     PanelState* panel = nullptr;
     PlotSettings* plots = nullptr;
     ShaderEditorState* shaderEditor = nullptr;
+    SweepViewState* sweep = nullptr;
     std::string_view lightingSource;
     ViewControls* viewControls = nullptr;
     const ProbeResult* probe = nullptr; // the last probe, shown while probeOpen
     bool* probeOpen = nullptr;
     bool* showHelp = nullptr;
     bool lightShapes = true; // spot cones and directional rays in the view
+    const LightMotion* motion = nullptr; // while A's lights orbit: where the view shows them (core/light_orbit.h)
     std::vector<std::pair<float, float>> clicks; // the frame's left clicks (window units), queued by the platform
     const Problem* problem = nullptr;           // shown until closed
     const std::string* unsavedQuestion = nullptr; // "open x.json": discard unsaved changes to do it?

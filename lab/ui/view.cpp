@@ -48,16 +48,23 @@ int lightUnderMouse(const Preset& scene, const Rect& r, ImVec2 mouse) {
 }
 
 // Moves the light in the plane through it, parallel to the image, by a mouse delta in pixels.
-void dragLight(Preset& scene, int index, ImVec2 delta, const Rect& r) {
+// `shownAt` is where the light is shown (its place in its orbit, else its position); a moving
+// light's step is turned back by its orbit's angle, so the shown light moves with the mouse.
+void dragLight(Preset& scene, int index, ImVec2 delta, const Rect& r, const LightMotion* motion) {
     const Camera& camera = scene.camera;
     LightDesc& l = scene.lights[static_cast<std::size_t>(index)];
+    double seconds = motion ? motion->secondsOf(static_cast<std::size_t>(index)) : 0.0;
+    glm::vec3 shownAt = motion ? orbitedLight(l, motion->centre, seconds).position : l.position;
     glm::vec3 forward = glm::normalize(camera.target - camera.eye);
     glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
     glm::vec3 up = glm::cross(right, forward);
-    float depth = glm::dot(l.position - camera.eye, forward);
+    float depth = glm::dot(shownAt - camera.eye, forward);
     float perPixel = 2.0f * std::max(depth, 0.01f) * std::tan(glm::radians(camera.fovyDeg) / 2.0f) / r.h;
-    l.position = glm::clamp(l.position + (delta.x * right - delta.y * up) * perPixel, glm::vec3(limits::kCoordinate.min),
-                            glm::vec3(limits::kCoordinate.max));
+    glm::vec3 step = (delta.x * right - delta.y * up) * perPixel;
+    if (l.orbit.on) {
+        step = orbitUnrotate(l.orbit, seconds, step);
+    }
+    l.position = glm::clamp(l.position + step, glm::vec3(limits::kCoordinate.min), glm::vec3(limits::kCoordinate.max));
 }
 
 void startGesture(const Preset& scene, const Rect& active, ViewControls& s) {
@@ -78,7 +85,7 @@ void startGesture(const Preset& scene, const Rect& active, ViewControls& s) {
 } // namespace
 
 ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, ViewControls& s,
-                        const std::vector<std::pair<float, float>>& clicks) {
+                        const std::vector<std::pair<float, float>>& clicks, const LightMotion* motion) {
     ImGuiIO& io = ImGui::GetIO();
     ViewEvents events;
     for (const auto& [x, y] : clicks) {
@@ -93,7 +100,7 @@ ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, Vi
         zoomCamera(scene.camera, std::pow(0.9f, io.MouseWheel));
     }
     if (hovered && s.drag == ViewControls::Drag::None && (ImGui::IsMouseClicked(0) || ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2))) {
-        startGesture(scene, active, s);
+        startGesture(motion ? orbitedScene(scene, *motion) : scene, active, s); // picked where shown
     }
     if (s.drag == ViewControls::Drag::None) {
         return events;
@@ -106,7 +113,7 @@ ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, Vi
         } else if (s.drag == ViewControls::Drag::Pan) {
             panCamera(scene.camera, delta.x / active.h, -delta.y / active.h);
         } else if (s.light < static_cast<int>(scene.lights.size())) {
-            dragLight(scene, s.light, delta, active);
+            dragLight(scene, s.light, delta, active, motion);
         }
     }
     bool released = ImGui::IsMouseReleased(s.button);

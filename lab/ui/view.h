@@ -10,6 +10,7 @@
 // over the 3D view. ImGui only: the 3D view itself is drawn by the renderer.
 #pragma once
 
+#include "core/light_orbit.h"
 #include "core/preset.h"
 #include "core/view_mode.h"
 #include "ui/layout.h"
@@ -38,9 +39,11 @@ struct ViewEvents {
 
 // `active` is where A is drawn (the whole view, or its half in compare mode); `whole` the view.
 // `clicks` are the frame's left clicks as the platform queued them (window units): the first in
-// `active`, away from ImGui's windows, is the probe.
+// `active`, away from ImGui's windows, is the probe. `motion`, while lights orbit
+// (core/light_orbit.h), is where they are shown: a marker is picked where it is shown, and a
+// dragged one moves the preset's light by the inverse turn, so the shown light follows the mouse.
 ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, ViewControls& state,
-                        const std::vector<std::pair<float, float>>& clicks);
+                        const std::vector<std::pair<float, float>>& clicks, const LightMotion* motion = nullptr);
 
 // Numbered markers at the point and spot lights (window units, named for the GUI tests), and
 // with `shapes` the spot cones and the directional lights' rays.

@@ -147,6 +147,15 @@ public:
         }
     }
 
+    // Presses the left button at (wx, wy) and keeps it down until release(): the lab has seen it.
+    void hold(int wx, int wy) {
+        moveTo(wx, wy);
+        send([&] { x_.button(1, true); });
+    }
+    void release() {
+        send([&] { x_.button(1, false); });
+    }
+
     // Drags with the left button from (x0, y0) to (x1, y1) in window coordinates, in steps.
     void drag(int x0, int y0, int x1, int y1) {
         moveTo(x0, y0);
@@ -202,6 +211,9 @@ public:
         EXPECT_TRUE(image) << "no screenshot from F12: " << error;
         return image.value_or(Image{});
     }
+
+    // The files the lab has written into its screenshot folder (screenshots, sweeps, figures).
+    std::set<fs::path> shotFiles() const { return files(); }
 
     // The screen inside a widget's rectangle, once the lab has settled.
     Image capture(const Rect& r) {

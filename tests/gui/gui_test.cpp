@@ -62,6 +62,23 @@ TEST(Gui, PolarPlotFollowsTheShininess) {
     EXPECT_LT(changedShare(before, undone), 0.0005);
 }
 
+// The plots window's "3D lobe" tab opens, draws the lobe inside its window, and a drag orbits it.
+TEST(Gui, TheLobe3dTabOpensAndADragOrbitsIt) {
+    START_LAB(lab, "--preset", preset("05-full-phong"));
+    Rect tab = lab.widget("plot.view.lobe3d");
+    lab.click(tab.cx(), tab.cy());
+    ASSERT_TRUE(lab.has("plot.lobe3d") && lab.has("plot.lobe3d.map"));
+    EXPECT_FALSE(lab.has("plot.lobe")) << "the plane plots give way to the 3D view";
+    Rect lobe = lab.widget("plot.lobe3d"), plots = lab.widget("plots");
+    EXPECT_TRUE(lobe.x >= plots.x && lobe.y >= plots.y && lobe.x + lobe.w <= plots.x + plots.w &&
+                lobe.y + lobe.h <= plots.y + plots.h)
+        << "the 3D lobe lies inside the plots' window";
+    Image before = lab.capture(lobe);
+    lab.drag(lobe.cx(), lobe.cy(), lobe.cx() + lobe.w / 4, lobe.cy() + lobe.h / 8);
+    Image after = lab.capture(lobe);
+    EXPECT_GT(changedShare(before, after), 0.02) << "a drag in the 3D lobe should orbit it";
+}
+
 TEST(Gui, DroppedBrokenPresetShowsTheErrorAndKeepsTheScene) {
     START_LAB(lab, "--preset", preset("05-full-phong"));
     Image before = lab.viewShot();
@@ -186,6 +203,92 @@ TEST(Gui, CtrlSSavesTheEditsToThePresetFile) {
     ASSERT_TRUE(saved) << toString(d);
     EXPECT_EQ(saved->preset.shading, Shading::Flat);
     EXPECT_EQ(saved->preset.material.diffuse, glm::vec3(0.8f, 0.25f, 0.2f)); // the rest as it was
+}
+
+// A preset whose light orbits: the live view changes by itself, the screenshot (F12) is the
+// preset's light position whenever it is taken, and the motion pauses while a slider is held.
+TEST(Gui, AMovingLightMovesTheViewButNotTheScreenshotAndPausesWhileHeld) {
+    START_LAB(lab, "--preset", preset("25-moving-light"));
+    const Rect view = lab.widget("view");
+    Image shotBefore = lab.viewShot();
+    Image first = lab.capture(view);
+    std::this_thread::sleep_for(std::chrono::milliseconds(800));
+    Image later = lab.capture(view);
+    EXPECT_GT(changedShare(first, later), 0.002) << "the highlight should travel as the light orbits";
+    Image shotAfter = lab.viewShot();
+    EXPECT_LT(changedShare(shotBefore, shotAfter), 0.0005) << "screenshots show the preset's position";
+    // Held on the shininess slider (pressed, not moved): the orbit waits.
+    const Rect shininess = lab.widget("material.shininess");
+    lab.hold(shininess.cx(), shininess.cy());
+    Image held = lab.capture(view);
+    std::this_thread::sleep_for(std::chrono::milliseconds(800));
+    Image stillHeld = lab.capture(view);
+    lab.release();
+    EXPECT_LT(changedShare(held, stillHeld), 0.0005) << "the light should pause while a slider is held";
+    std::this_thread::sleep_for(std::chrono::milliseconds(800));
+    EXPECT_GT(changedShare(stillHeld, lab.capture(view)), 0.002) << "and go on when it is let go";
+}
+
+TEST(Gui, SweepShowsTheGridAndARefusedValue) {
+    START_LAB(lab, "--preset", preset("06-shininess-10"));
+    Rect view = lab.widget("view");
+    lab.moveTo(view.cx(), view.cy());
+    lab.press("g", "Control_L");
+    ASSERT_TRUE(lab.has("sweep.grid")) << "Ctrl+G should show the sweep's grid";
+    // The default sweep (shininess 10..50 against k_s 0.2..1): cells on a white page, each a blue
+    // sphere on the preset's dark background.
+    Image grid = lab.capture(lab.widget("sweep.grid"));
+    int white = 0, dark = 0, blue = 0;
+    for (std::size_t i = 0; i + 2 < grid.rgb.size(); i += 3) {
+        int r = grid.rgb[i], g = grid.rgb[i + 1], b = grid.rgb[i + 2];
+        white += r > 240 && g > 240 && b > 240;
+        dark += r < 30 && g < 30 && b < 40;
+        blue += b > r + 40 && b > 80;
+    }
+    const double pixels = static_cast<double>(grid.width) * grid.height;
+    EXPECT_GT(white / pixels, 0.05) << "the page around the cells";
+    EXPECT_GT(dark / pixels, 0.2) << "the cells' background";
+    EXPECT_GT(blue / pixels, 0.05) << "the spheres";
+    // A value out of range: nothing while it is typed, then (Enter) the reader's message in red,
+    // and Save PNG is off.
+    Rect values = lab.widget("sweep.values1");
+    lab.click(values.cx(), values.cy());
+    lab.press("a", "Control_L");
+    lab.type("10,-5");
+    EXPECT_FALSE(lab.has("sweep.error")) << "the grid waits for the end of the typing";
+    lab.press("Return");
+    ASSERT_TRUE(lab.has("sweep.error"));
+    EXPECT_GT(reddishPixels(lab.capture(lab.widget("sweep.error"))), 30) << "the refusal should be shown in red";
+    Rect save = lab.widget("sweep.save");
+    lab.click(save.cx(), save.cy());
+    EXPECT_TRUE(lab.shotFiles().empty()) << "Save PNG is off while a value is refused";
+    // A key typed (any key the command line takes), values, Enter: Save PNG writes the grid that
+    // `lab render --sweep` writes with the same arguments and cells.
+    Rect key = lab.widget("sweep.key1");
+    lab.click(key.cx(), key.cy());
+    lab.press("a", "Control_L");
+    lab.type("lights[0].attenuation[2]");
+    values = lab.widget("sweep.values1");
+    lab.click(values.cx(), values.cy());
+    lab.press("a", "Control_L");
+    lab.type("0,0.1");
+    lab.press("Return");
+    EXPECT_FALSE(lab.has("sweep.error"));
+    save = lab.widget("sweep.save");
+    lab.click(save.cx(), save.cy());
+    std::set<fs::path> saved = lab.shotFiles();
+    ASSERT_EQ(saved.size(), 1u) << "Save PNG should write one file";
+    EXPECT_NE(saved.begin()->filename().string().find("-sweep-"), std::string::npos) << saved.begin()->filename();
+    TempFolder dir;
+    std::string command = std::string(LAB_EXE) + " render " + preset("06-shininess-10") +
+                          " --sweep 'lights[0].attenuation[2]=0,0.1' --sweep material.specular=0.2,0.5,1 --size 256x256 --out " +
+                          (dir.path() / "grid.png").string() + " > /dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    std::string error;
+    std::optional<Image> fromGui = readPng(*saved.begin(), error), fromCli = readPng(dir.path() / "grid.png", error);
+    ASSERT_TRUE(fromGui && fromCli) << error;
+    Comparison c = compareImages(*fromGui, *fromCli, Tolerance{});
+    EXPECT_TRUE(c.passes(Tolerance{})) << "max " << c.maxDifference << ", failing share " << c.failingShare;
 }
 
 } // namespace

@@ -1,0 +1,528 @@
+// plots_3d.cpp — the 3D lobe and the intensity map, drawn with ImDrawList.
+//
+// One frame: the hemisphere grids of A (and B) from the state's cache (core/lobe3d.h, computed
+// when the inputs change), the options row and the readout, then the two canvases, placed side
+// by side in a wide region and stacked in a tall one. The meshes (the surface projected by the
+// orbit camera and sorted far to near, the map's disc, B's wireframe) are made once per view and
+// copied into the draw list each frame; the grid lines, arrows and labels are drawn on top.
+#include "ui/plots_3d.h"
+#include "ui/plot_kit.h"
+#include "ui/plots.h"
+
+#include "core/lighting.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+namespace lab::ui {
+
+bool operator==(const Lobe3dKey& x, const Lobe3dKey& y) {
+    auto same = [](const ImVec4& p, const ImVec4& q) { return p.x == q.x && p.y == q.y && p.z == q.z && p.w == q.w; };
+    return x.a == y.a && x.hasB == y.hasB && (!x.hasB || x.b == y.b) && x.component == y.component &&
+           x.scale == y.scale && x.outer == y.outer && x.yawDeg == y.yawDeg && x.pitchDeg == y.pitchDeg &&
+           same(x.lobeRect, y.lobeRect) && same(x.mapRect, y.mapRect);
+}
+
+namespace {
+
+using namespace plotkit;
+
+//----------------------------------------------------------------------------------------
+// The orbit camera: orthographic, about the origin
+//----------------------------------------------------------------------------------------
+
+struct Camera {
+    glm::vec3 toEye, right, up; // unit: towards the viewer, screen right, screen up
+    glm::vec2 origin;           // the origin's screen position
+    float scale = 1.0f;         // pixels per unit
+
+    // At yaw 0, pitch 0 the camera is on +z looking at the plane of incidence: x right, N up,
+    // as the plane plot shows it.
+    Camera(float yawDeg, float pitchDeg, const ImVec4& rect) {
+        const float yaw = glm::radians(yawDeg), pitch = glm::radians(pitchDeg);
+        toEye = glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+        right = glm::vec3(std::cos(yaw), 0.0f, -std::sin(yaw));
+        up = glm::cross(toEye, right);
+        // The lobe lies in the unit hemisphere: x within ±1 and, seen from this elevation, up from
+        // -sin(pitch) (the disc's near edge) to 1. One scale at every elevation, so that orbiting
+        // does not zoom; the content centred vertically.
+        scale = std::max(std::min(rect.z, rect.w) * 0.5f, 1.0f);
+        const float low = -std::sin(pitch);
+        origin = glm::vec2(rect.x + rect.z * 0.5f, rect.y + rect.w * 0.5f + scale * (1.0f + low) * 0.5f);
+    }
+    ImVec2 at(const glm::vec3& p) const { return ImVec2(origin.x + scale * glm::dot(p, right), origin.y - scale * glm::dot(p, up)); }
+    float depth(const glm::vec3& p) const { return glm::dot(p, toEye); }
+};
+
+//----------------------------------------------------------------------------------------
+// Colours
+//----------------------------------------------------------------------------------------
+
+// A dark-to-bright ramp (black-violet, red, orange, yellow, white) for t in [0, 1]: monotonic in
+// brightness, so that a grey projector still reads it, and distinct from the curves' colours.
+glm::vec3 ramp(float t) {
+    static const std::array<glm::vec3, 6> stops = {glm::vec3(0.05f, 0.03f, 0.20f), glm::vec3(0.35f, 0.07f, 0.50f),
+                                                   glm::vec3(0.75f, 0.15f, 0.35f), glm::vec3(0.95f, 0.45f, 0.10f),
+                                                   glm::vec3(0.98f, 0.80f, 0.25f), glm::vec3(1.00f, 1.00f, 0.90f)};
+    t = std::clamp(t, 0.0f, 1.0f) * static_cast<float>(stops.size() - 1);
+    const std::size_t i = std::min(static_cast<std::size_t>(t), stops.size() - 2);
+    return glm::mix(stops[i], stops[i + 1], t - static_cast<float>(i));
+}
+
+ImU32 rgb(const glm::vec3& c, float alpha = 1.0f) {
+    const glm::vec3 k = glm::clamp(c, 0.0f, 1.0f) * 255.0f + 0.5f;
+    return IM_COL32(static_cast<int>(k.r), static_cast<int>(k.g), static_cast<int>(k.b), static_cast<int>(alpha * 255.0f));
+}
+
+// The intensity at ramp position t: plotRadius's inverse.
+float valueAt(float t, float outer, RadialScale scale) {
+    return scale == RadialScale::Linear ? t * outer : outer * std::pow(10.0f, (t - 1.0f) * kLogDecades);
+}
+
+//----------------------------------------------------------------------------------------
+// The meshes, made once per view
+//----------------------------------------------------------------------------------------
+
+int at(int ring, int meridian) { return HemisphereGrid::index(ring, meridian); }
+
+void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
+    const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
+    const std::vector<float>& values = grid.component(key.component);
+    const std::vector<glm::vec3> points = lobeSurface(grid, key.component, key.outer, key.scale);
+    const std::size_t n = points.size();
+    m.positions.resize(n);
+    m.colors.resize(n);
+    // Shading from a light above and behind the viewer's right shoulder; normals by central
+    // differences over the grid (sign-free: the lobe's inside shows where a surface folds).
+    const glm::vec3 light = glm::normalize(cam.toEye + 0.6f * cam.up + 0.3f * cam.right);
+    std::vector<float> depth(n);
+    for (int i = 0; i < kLobeRings; ++i) {
+        for (int j = 0; j < kLobeMeridians; ++j) {
+            const std::size_t k = static_cast<std::size_t>(at(i, j));
+            const int jm = j == 0 ? kLobeMeridians - 2 : j - 1, jp = j == kLobeMeridians - 1 ? 1 : j + 1;
+            const glm::vec3 alongTheta = points[static_cast<std::size_t>(at(std::min(i + 1, kLobeRings - 1), j))] -
+                                         points[static_cast<std::size_t>(at(std::max(i - 1, 0), j))];
+            const glm::vec3 alongPhi = points[static_cast<std::size_t>(at(i, jp))] - points[static_cast<std::size_t>(at(i, jm))];
+            glm::vec3 normal = glm::cross(alongTheta, alongPhi);
+            const float len = glm::length(normal);
+            float shade = 0.75f;
+            if (len > 1e-12f) {
+                shade = 0.35f + 0.65f * std::fabs(glm::dot(normal / len, light));
+            }
+            const float t = plotRadius(values[k], key.outer, key.scale);
+            m.positions[k] = cam.at(points[k]);
+            m.colors[k] = rgb(ramp(t) * shade, 0.92f);
+            depth[k] = cam.depth(points[k]);
+        }
+    }
+    // Two triangles per cell, the cells far to near by their mean depth.
+    struct Cell {
+        float depth;
+        int k;
+    };
+    std::vector<Cell> cells;
+    cells.reserve(static_cast<std::size_t>((kLobeRings - 1) * (kLobeMeridians - 1)));
+    for (int i = 0; i + 1 < kLobeRings; ++i) {
+        for (int j = 0; j + 1 < kLobeMeridians; ++j) {
+            const int k = at(i, j);
+            const float d = depth[static_cast<std::size_t>(k)] + depth[static_cast<std::size_t>(k + 1)] +
+                            depth[static_cast<std::size_t>(k + kLobeMeridians)] + depth[static_cast<std::size_t>(k + kLobeMeridians + 1)];
+            cells.push_back({d, k});
+        }
+    }
+    std::sort(cells.begin(), cells.end(), [](const Cell& x, const Cell& y) { return x.depth < y.depth; });
+    m.indices.clear();
+    m.indices.reserve(cells.size() * 6);
+    for (const Cell& c : cells) {
+        const unsigned k = static_cast<unsigned>(c.k), w = static_cast<unsigned>(kLobeMeridians);
+        for (unsigned v : {k, k + 1, k + w + 1, k, k + w + 1, k + w}) {
+            m.indices.push_back(v);
+        }
+    }
+}
+
+// The map: each grid direction at mapPoint(V) on the disc, coloured by its value.
+void mapMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
+    const ImVec4& r = key.mapRect;
+    const glm::vec2 centre(r.x + r.z * 0.5f, r.y + r.w * 0.5f);
+    const float radius = std::min(r.z, r.w) * 0.5f;
+    const std::vector<float>& values = grid.component(key.component);
+    m.mapPositions.resize(values.size());
+    m.mapColors.resize(values.size());
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        const glm::vec2 q = mapPoint(grid.directions[k]);
+        m.mapPositions[k] = ImVec2(centre.x + radius * q.x, centre.y + radius * q.y);
+        m.mapColors[k] = rgb(ramp(plotRadius(values[k], key.outer, key.scale)));
+    }
+    m.mapIndices.clear();
+    m.mapIndices.reserve(static_cast<std::size_t>((kLobeRings - 1) * (kLobeMeridians - 1) * 6));
+    for (int i = 0; i + 1 < kLobeRings; ++i) {
+        for (int j = 0; j + 1 < kLobeMeridians; ++j) {
+            const unsigned k = static_cast<unsigned>(at(i, j)), w = static_cast<unsigned>(kLobeMeridians);
+            for (unsigned v : {k, k + 1, k + w + 1, k, k + w + 1, k + w}) {
+                m.mapIndices.push_back(v);
+            }
+        }
+    }
+}
+
+// B as rings every 15° of θo and meridians every 24° of φ.
+void wireframe(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
+    const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
+    const std::vector<glm::vec3> points = lobeSurface(grid, key.component, key.outer, key.scale);
+    m.wireframe.clear();
+    for (int i = 15; i < kLobeRings; i += 15) {
+        std::vector<ImVec2>& line = m.wireframe.emplace_back();
+        for (int j = 0; j < kLobeMeridians; ++j) {
+            line.push_back(cam.at(points[static_cast<std::size_t>(at(i, j))]));
+        }
+    }
+    for (int j = 0; j + 1 < kLobeMeridians; j += 6) {
+        std::vector<ImVec2>& line = m.wireframe.emplace_back();
+        for (int i = 0; i < kLobeRings; ++i) {
+            line.push_back(cam.at(points[static_cast<std::size_t>(at(i, j))]));
+        }
+    }
+}
+
+// Copies a kept mesh into the draw list (ImGui's 16-bit indices: the caller keeps the vertex
+// count under 65536; a mesh that would not fit is left out rather than drawn wrong).
+void drawMesh(ImDrawList* dl, const std::vector<ImVec2>& positions, const std::vector<ImU32>& colors,
+              const std::vector<unsigned>& indices) {
+    const int vtx = static_cast<int>(positions.size()), idx = static_cast<int>(indices.size());
+    if (vtx == 0 || idx == 0) {
+        return;
+    }
+    dl->PrimReserve(idx, vtx);
+    const unsigned base = dl->_VtxCurrentIdx;
+    if (sizeof(ImDrawIdx) == 2 && base + static_cast<unsigned>(vtx) > 0xFFFFu) {
+        dl->PrimUnreserve(idx, vtx);
+        return;
+    }
+    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
+    for (int k = 0; k < vtx; ++k) {
+        dl->PrimWriteVtx(positions[static_cast<std::size_t>(k)], uv, colors[static_cast<std::size_t>(k)]);
+    }
+    for (unsigned i : indices) {
+        dl->PrimWriteIdx(static_cast<ImDrawIdx>(base + i));
+    }
+}
+
+//----------------------------------------------------------------------------------------
+// The canvases
+//----------------------------------------------------------------------------------------
+
+struct View {
+    const Preset* a = nullptr;
+    LobeInputs inA, inB;
+    std::shared_ptr<const HemisphereGrid> gridA, gridB;
+    LobeMaximum peak;
+    LobeVectors vectors;
+    float outer = 1.0f, largest = 0.0f;
+    Readout readout;
+};
+
+const char* componentName(PlotComponent c) {
+    return c == PlotComponent::Diffuse ? "diffuse" : c == PlotComponent::Specular ? "specular" : "total";
+}
+
+ImU32 componentColor(PlotComponent c) {
+    return c == PlotComponent::Diffuse ? kDiffuse : c == PlotComponent::Specular ? kSpecular : kTotal;
+}
+
+void arrow3d(ImDrawList* dl, const Pens& p, const Camera& cam, const glm::vec3& dir, float length, ImU32 color,
+             const char* label, float thickness) {
+    arrowBetween(dl, p, cam.at(glm::vec3(0.0f)), cam.at(dir * length), color, label, thickness);
+}
+
+void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& key, const Lobe3dMesh& mesh,
+                PlotSettings& s) {
+    ImDrawList* dl = c.dl;
+    const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
+    const float pi = glm::pi<float>();
+    // The surface plane: rings at the radial scale's values, spokes every 30°, behind the lobe
+    // (the camera stays above the plane).
+    for (const RadialRing& ring : radialRings(v.outer, key.scale)) {
+        std::vector<ImVec2> circle;
+        for (int k = 0; k <= 72; ++k) {
+            const float t = 2.0f * pi * static_cast<float>(k) / 72.0f;
+            circle.push_back(cam.at(ring.radius * glm::vec3(std::cos(t), 0.0f, std::sin(t))));
+        }
+        dl->AddPolyline(circle.data(), static_cast<int>(circle.size()), kGrid, 0, p.thin);
+    }
+    for (int deg = 0; deg < 360; deg += 30) {
+        const float t = glm::radians(static_cast<float>(deg));
+        dl->AddLine(cam.at(glm::vec3(0.0f)), cam.at(glm::vec3(std::cos(t), 0.0f, std::sin(t))),
+                    deg % 180 == 0 ? kAxis : kGrid, p.thin);
+    }
+    drawMesh(dl, mesh.positions, mesh.colors, mesh.indices);
+    for (const std::vector<ImVec2>& line : mesh.wireframe) {
+        dl->AddPolyline(line.data(), static_cast<int>(line.size()), kCompare, 0, p.thin);
+    }
+    // The vectors: N, L, R, and V (the plane plot's reading direction) with its H.
+    const glm::vec3 V = outgoingDirection(std::fabs(s.viewerDeg), s.viewerDeg >= 0.0f ? 0.0f : 180.0f);
+    arrow3d(dl, p, cam, v.vectors.N, 1.08f, kAxis, "N", p.stroke);
+    arrow3d(dl, p, cam, v.vectors.L, 1.1f, kLight, "L", p.bold);
+    arrow3d(dl, p, cam, v.vectors.R, 1.1f, kMirror, "R", p.stroke);
+    arrow3d(dl, p, cam, V, 0.9f, kViewer, "V", p.thin * 1.5f);
+    arrow3d(dl, p, cam, glsl::halfVector(v.vectors.L, V), 0.7f, kHalf, "H", p.stroke);
+    if (v.peak.value > 0.0f && v.largest > kNothingLit) {
+        const ImVec2 q = cam.at(plotRadius(v.peak.value, v.outer, key.scale) * v.peak.V);
+        dl->AddCircle(q, 4.5f * p.s, kLabel, 0, p.stroke);
+    }
+    // Orbiting: a drag turns the camera about N and raises or lowers it.
+    if (ImGui::IsItemActive()) {
+        const ImVec2 d = ImGui::GetIO().MouseDelta;
+        const float perPixel = 0.5f / p.s;
+        s.lobe3d.yawDeg = std::remainder(s.lobe3d.yawDeg - d.x * perPixel, 360.0f);
+        s.lobe3d.pitchDeg = std::clamp(s.lobe3d.pitchDeg + d.y * perPixel, 0.0f, 90.0f);
+    }
+}
+
+// The map's grid, marks and legend over its mesh.
+void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& key, const Lobe3dMesh& mesh,
+               float legendW) {
+    ImDrawList* dl = c.dl;
+    const ImVec4& r = key.mapRect;
+    const ImVec2 centre(r.x + r.z * 0.5f, r.y + r.w * 0.5f);
+    const float radius = std::min(r.z, r.w) * 0.5f;
+    drawMesh(dl, mesh.mapPositions, mesh.mapColors, mesh.mapIndices);
+    for (int deg = 30; deg <= 90; deg += 30) {
+        dl->AddCircle(centre, radius * static_cast<float>(deg) / 90.0f, deg == 90 ? kAxis : kGrid, 64, p.thin);
+    }
+    dl->AddLine(ImVec2(centre.x - radius, centre.y), ImVec2(centre.x + radius, centre.y), kGrid, p.thin);
+    dl->AddLine(ImVec2(centre.x, centre.y - radius), ImVec2(centre.x, centre.y + radius), kGrid, p.thin);
+    if (radius > 4.0f * p.font) {
+        for (int deg = 30; deg <= 90; deg += 30) {
+            dl->AddText(ImVec2(centre.x + radius * static_cast<float>(deg) / 90.0f - textSize(degrees(static_cast<float>(deg))).x - 2.0f,
+                               centre.y + 1.0f),
+                        kLabel, degrees(static_cast<float>(deg)).c_str());
+        }
+    }
+    auto spot = [&](const glm::vec3& dir, ImU32 color, const char* label, bool cross) {
+        const glm::vec2 q = mapPoint(dir);
+        const ImVec2 m(centre.x + radius * q.x, centre.y + radius * q.y);
+        if (cross) {
+            const float h = 5.0f * p.s;
+            dl->AddLine(ImVec2(m.x - h, m.y - h), ImVec2(m.x + h, m.y + h), color, p.stroke);
+            dl->AddLine(ImVec2(m.x - h, m.y + h), ImVec2(m.x + h, m.y - h), color, p.stroke);
+        } else {
+            dl->AddCircleFilled(m, 3.5f * p.s, color);
+        }
+        if (label) {
+            dl->AddText(ImVec2(m.x + p.pad, m.y - p.line), color, label);
+        }
+    };
+    spot(v.vectors.R, kMirror, "R", false);
+    if (v.vectors.L.y > 0.0f) {
+        spot(v.vectors.L, kLight, "L", false); // where the light is, seen from above
+    }
+    if (v.peak.value > 0.0f && v.largest > kNothingLit) {
+        spot(v.peak.V, kLabel, nullptr, true);
+    }
+    // The legend: the ramp from 0 (bottom) to the outer value (top), five values beside it.
+    if (legendW <= 0.0f) {
+        return;
+    }
+    const float barW = 0.8f * p.font, top = c.corner.y + p.line * 0.5f, bottom = c.corner.y + c.height - p.line * 0.5f;
+    const float x = c.corner.x + c.width - legendW + p.pad;
+    if (bottom - top < 2.0f * p.line) {
+        return;
+    }
+    const int steps = 32;
+    for (int k = 0; k < steps; ++k) {
+        const float t0 = static_cast<float>(k) / steps, t1 = static_cast<float>(k + 1) / steps;
+        const ImU32 lo = rgb(ramp(t0)), hi = rgb(ramp(t1));
+        dl->AddRectFilledMultiColor(ImVec2(x, bottom - (bottom - top) * t1), ImVec2(x + barW, bottom - (bottom - top) * t0),
+                                    hi, hi, lo, lo);
+    }
+    dl->AddRect(ImVec2(x, top), ImVec2(x + barW, bottom), kAxis, 0.0f, 0, p.thin);
+    const int labels = std::clamp(static_cast<int>((bottom - top) / (1.5f * p.line)), 2, 5);
+    for (int k = 0; k < labels; ++k) {
+        const float t = static_cast<float>(k) / static_cast<float>(labels - 1);
+        const float y = bottom - (bottom - top) * t;
+        const std::string text = t == 0.0f && key.scale == RadialScale::Linear ? "0" : tickText(valueAt(t, v.outer, key.scale));
+        dl->AddLine(ImVec2(x + barW, y), ImVec2(x + barW + p.pad * 0.5f, y), kAxis, p.thin);
+        dl->AddText(ImVec2(x + barW + p.pad, y - p.line * 0.5f), kLabel, text.c_str());
+    }
+}
+
+// The options row: the component and the radial scale (shared with the plane plots).
+void options(PlotSettings& s, const Pens& p) {
+    static const PlotComponent components[3] = {PlotComponent::Diffuse, PlotComponent::Specular, PlotComponent::Total};
+    static const char* const marks[3] = {"plot.lobe3d.diffuse", "plot.lobe3d.specular", "plot.lobe3d.total"};
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    auto sameLineIfFits = [&](const char* label) {
+        const float w = ImGui::GetFrameHeight() + p.inner + ImGui::CalcTextSize(label, nullptr, true).x;
+        if (ImGui::GetItemRectMax().x + p.gapX + w <= right) {
+            ImGui::SameLine();
+        }
+    };
+    // Full names where the row fits on one line, short ones where it does not (a low band).
+    static const char* const full[3] = {"diffuse###lobe3d.d", "specular###lobe3d.s", "total###lobe3d.t"};
+    static const char* const brief[3] = {"diff###lobe3d.d", "spec###lobe3d.s", "total###lobe3d.t"};
+    float rowW = 4.0f * p.gapX;
+    for (const char* label : {full[0], full[1], full[2], "lin", "log"}) {
+        rowW += ImGui::GetFrameHeight() + p.inner + ImGui::CalcTextSize(label, nullptr, true).x;
+    }
+    const char* const* names = rowW <= ImGui::GetContentRegionAvail().x ? full : brief;
+    int chosen = static_cast<int>(s.lobe3d.component);
+    for (int i = 0; i < 3; ++i) {
+        if (i > 0) {
+            sameLineIfFits(names[i]);
+        }
+        ImGui::RadioButton(names[i], &chosen, i);
+        mark(marks[i]);
+    }
+    s.lobe3d.component = components[chosen];
+    int scale = s.scale == RadialScale::Linear ? 0 : 1;
+    sameLineIfFits("lin###lobe3d.linear");
+    ImGui::RadioButton("lin###lobe3d.linear", &scale, 0);
+    mark("plot.lobe3d.linear");
+    sameLineIfFits("log###lobe3d.log");
+    ImGui::RadioButton("log###lobe3d.log", &scale, 1);
+    mark("plot.lobe3d.log");
+    s.scale = scale == 0 ? RadialScale::Linear : RadialScale::Log;
+}
+
+View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p) {
+    View v;
+    v.a = &a;
+    Lobe3dState& st = s.lobe3d;
+    v.inA = lobeInputs(a, a.plotIncidentDeg);
+    v.gridA = st.grids.get(v.inA, [&] { return sampleHemisphere(v.inA); });
+    if (b) {
+        v.inB = lobeInputs(*b, a.plotIncidentDeg);
+        v.gridB = st.grids.get(v.inB, [&] { return sampleHemisphere(v.inB); });
+    }
+    v.vectors = lobeVectors(v.inA.incidentDeg);
+    v.largest = v.gridA->largest(st.component);
+    if (v.gridB) {
+        v.largest = std::max(v.largest, v.gridB->largest(st.component));
+    }
+    v.outer = outerRing(v.largest);
+    v.peak = *st.peaks.get({v.inA, st.component}, [&] { return lobeMaximum(v.inA, *v.gridA, st.component); });
+    const ImU32 color = componentColor(st.component);
+    if (!(v.largest > kNothingLit)) {
+        v.readout.add(format("%s: 0 everywhere (term switched off?)", componentName(st.component)), kLabel);
+    } else if (st.component == PlotComponent::Diffuse) {
+        v.readout.add(format("diffuse %.3f in every direction", double(v.peak.value)), color);
+    } else {
+        v.readout.add(format("%s peak %.3f", componentName(st.component), double(v.peak.value)), color);
+        v.readout.add(format("at %s%.1f%s, %s%.1f%s", "\xce\xb8o ", double(v.peak.thetaDeg), kDeg, "\xcf\x86 ",
+                             double(v.peak.phiDeg), kDeg),
+                      color);
+        const float offR = glm::degrees(std::acos(glm::clamp(glm::dot(v.peak.V, v.vectors.R), -1.0f, 1.0f)));
+        v.readout.add(format("(%.1f%s from R)", double(offR), kDeg), kMirror);
+    }
+    if (b && v.largest > kNothingLit) {
+        v.readout.add("B: wireframe", kCompare, true);
+    }
+    v.readout.lineBreak();
+    scaleTokens(v.readout, v.outer, v.largest, false, b ? "max of A and B" : "max");
+    v.readout.add("drag to orbit", kLabel);
+    v.readout.measure(p);
+    return v;
+}
+
+} // namespace
+
+void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& s) {
+    const Pens p = pens();
+    options(s, p);
+    const View v = viewData(a, b, s, p);
+
+    const ImVec2 room = ImGui::GetContentRegionAvail();
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    widgets().set("plots.area", {origin.x, origin.y, room.x, room.y});
+    // In a low band the canvases need the readout's room more than the readout does (the peak is
+    // circled on both): the readout gives way where fewer than 12 lines would be left for them.
+    float stripH = std::min(v.readout.height(p, room.x), std::max(room.y, 0.0f));
+    if (room.y - stripH < 12.0f * p.line) {
+        stripH = 0.0f;
+    }
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImGui::PushClipRect(origin, ImVec2(origin.x + room.x, origin.y + std::max(room.y, 1.0f)), true);
+    dl->PushClipRect(origin, ImVec2(origin.x + room.x, origin.y + std::max(stripH, 1.0f)), true);
+    if (stripH > 0.0f) {
+        v.readout.draw(dl, p, origin, room.x);
+        ImGui::Dummy(ImVec2(std::max(room.x, 1.0f), stripH));
+        mark("plot.lobe3d.readout");
+    }
+    dl->PopClipRect();
+
+    // The canvases: side by side where the region is wide, else the lobe above the map. The map
+    // keeps a column for its legend.
+    const float top = origin.y + (stripH > 0.0f ? stripH + p.gap : 0.0f);
+    const float h = room.y - (top - origin.y);
+    const float legendW = 0.8f * p.font + 2.0f * p.pad + textSize("0.000").x;
+    const bool wide = room.x > 1.25f * h;
+    ImVec4 lobeBox, mapBox;
+    if (wide) {
+        const float mapW = std::min(h + legendW, room.x * 0.42f);
+        lobeBox = ImVec4(origin.x, top, room.x - mapW - p.gapX, h);
+        mapBox = ImVec4(origin.x + room.x - mapW, top, mapW, h);
+    } else {
+        const float lobeH = std::floor((h - p.gap) * 0.58f);
+        lobeBox = ImVec4(origin.x, top, room.x, lobeH);
+        mapBox = ImVec4(origin.x, top + lobeH + p.gap, room.x, h - lobeH - p.gap);
+    }
+    // Inside each canvas a margin for the arrows' names and the ring values.
+    const float margin = 0.6f * p.line + p.pad;
+    Lobe3dKey key;
+    key.a = v.inA;
+    key.hasB = v.gridB != nullptr;
+    key.b = v.inB;
+    key.component = s.lobe3d.component;
+    key.scale = s.scale;
+    key.outer = v.outer;
+    key.yawDeg = s.lobe3d.yawDeg;
+    key.pitchDeg = s.lobe3d.pitchDeg;
+    key.lobeRect = ImVec4(lobeBox.x + margin, lobeBox.y + margin, lobeBox.z - 2.0f * margin, lobeBox.w - 2.0f * margin);
+    const float mapSide = std::min(mapBox.z - legendW, mapBox.w) - 2.0f * p.pad;
+    key.mapRect = ImVec4(mapBox.x + p.pad + std::max((mapBox.z - legendW - 2.0f * p.pad - mapSide) * 0.5f, 0.0f),
+                         mapBox.y + (mapBox.w - mapSide) * 0.5f, mapSide, mapSide);
+    const bool lobeShown = key.lobeRect.z >= 1.5f * p.font && key.lobeRect.w >= 1.5f * p.font;
+    const bool mapShown = mapSide >= 2.5f * p.font;
+    const std::shared_ptr<const Lobe3dMesh> mesh = s.lobe3d.meshes.get(key, [&] {
+        Lobe3dMesh m;
+        if (lobeShown) {
+            surfaceMesh(*v.gridA, key, m);
+            if (v.gridB) {
+                wireframe(*v.gridB, key, m);
+            }
+        }
+        if (mapShown) {
+            mapMesh(*v.gridA, key, m);
+        }
+        return m;
+    });
+
+    if (lobeBox.z >= 1.0f && lobeBox.w >= 1.0f) {
+        ImGui::SetCursorScreenPos(ImVec2(lobeBox.x, lobeBox.y));
+        const Canvas canvas = beginCanvas("lobe3d", "plot.lobe3d", lobeBox.z, lobeBox.w);
+        if (canvas.shown() && lobeShown) {
+            dl->PushClipRect(canvas.corner, ImVec2(canvas.corner.x + canvas.width, canvas.corner.y + canvas.height), true);
+            lobeCanvas(canvas, p, v, key, *mesh, s);
+            dl->PopClipRect();
+        }
+    }
+    if (mapBox.z >= 1.0f && mapBox.w >= 1.0f) {
+        ImGui::SetCursorScreenPos(ImVec2(mapBox.x, mapBox.y));
+        const Canvas canvas = beginCanvas("lobe3d.map", "plot.lobe3d.map", mapBox.z, mapBox.w);
+        if (canvas.shown() && mapShown) {
+            dl->PushClipRect(canvas.corner, ImVec2(canvas.corner.x + canvas.width, canvas.corner.y + canvas.height), true);
+            mapCanvas(canvas, p, v, key, *mesh, legendW);
+            dl->PopClipRect();
+        }
+    }
+    ImGui::PopClipRect();
+}
+
+} // namespace lab::ui

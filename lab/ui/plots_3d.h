@@ -1,0 +1,72 @@
+// plots_3d.h — the plots window's "3D lobe" view: the reflected intensity for the current L over
+// the whole hemisphere, as a surface (radius = intensity, like BRDF Explorer) and as a map seen
+// from above.
+//
+//   * the surface of core/lobe3d.h's grid (θo by 1°, φ by 4°) for the chosen component (diffuse,
+//     specular or total), coloured by intensity and shaded, drawn back to front (painter's
+//     algorithm) over the surface plane's disc grid, with N, L, R, V and H as arrows and the peak
+//     marked; the compare set B as a wireframe over it, at the same scale;
+//   * an orbit camera of its own (orthographic, drag to orbit: yaw about N, elevation 0° to 90°;
+//     at 0°/0° it looks along the plane plot's view, R to the right);
+//   * the intensity map: the same values as a disc seen from above (θo as the radius, the plane
+//     of incidence as the horizontal axis, R's side to the right), with its colour legend.
+// The numbers come from core/lobe3d.h (the same lighting function as the plane plots, whose
+// samples it reproduces in the plane of incidence). The grid is computed once per LobeInputs and
+// the projected, sorted mesh once per view (inputs, component, scale, camera and canvas), both
+// kept in Lobe3dState's cache with the peak: a frame in which nothing changed copies the kept
+// mesh (the surface and the map are 8,281 vertices each: ImGui's 16-bit indices have room). What it does
+// not do: call GL (ImGui draw lists only), or scroll (it fits the region it is given).
+#pragma once
+
+#include "core/lobe3d.h"
+#include "core/plot.h"
+#include "core/preset.h"
+#include "ui/plot_cache.h"
+
+#include <imgui.h>
+
+#include <utility>
+#include <vector>
+
+namespace lab::ui {
+
+struct PlotSettings;
+
+// A projected, sorted mesh: positions and colours (the texture coordinate is the font atlas's
+// white pixel, set when drawn), triangles by index, far to near; and B's wireframe polylines.
+struct Lobe3dMesh {
+    std::vector<ImVec2> positions;
+    std::vector<ImU32> colors;
+    std::vector<unsigned> indices;  // the surface's triangles, far to near
+    std::vector<ImVec2> mapPositions;
+    std::vector<ImU32> mapColors;
+    std::vector<unsigned> mapIndices;
+    std::vector<std::vector<ImVec2>> wireframe; // B
+};
+
+struct Lobe3dKey {
+    LobeInputs a, b;
+    bool hasB = false;
+    PlotComponent component = PlotComponent::Total;
+    RadialScale scale = RadialScale::Linear;
+    float outer = 1.0f;
+    float yawDeg = 0.0f, pitchDeg = 0.0f;
+    ImVec4 lobeRect, mapRect; // x, y, w, h of the two canvases' drawing areas
+};
+bool operator==(const Lobe3dKey& x, const Lobe3dKey& y);
+
+struct Lobe3dState {
+    float yawDeg = -35.0f;  // about N, from the plane plot's view (camera on +z)
+    float pitchDeg = 25.0f; // above the surface, 0 to 90
+    PlotComponent component = PlotComponent::Total;
+    RecentlyUsed<LobeInputs, HemisphereGrid> grids{4}; // A and B
+    RecentlyUsed<Lobe3dKey, Lobe3dMesh> meshes{2};
+    RecentlyUsed<std::pair<LobeInputs, PlotComponent>, LobeMaximum> peaks{2}; // A's, for the readout
+    // How many grids, meshes and peaks were computed rather than found (for the tests).
+    std::size_t computed() const { return grids.made() + meshes.made() + peaks.made(); }
+};
+
+// Draws the 3D lobe view into the current window's remaining content region.
+void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& settings);
+
+} // namespace lab::ui
