@@ -8,6 +8,7 @@
 #include <X11/extensions/XTest.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
 
@@ -58,7 +59,14 @@ Window findIn(Display* d, Window w, const std::string& prefix) {
 
 } // namespace
 
-X11Driver::X11Driver() : display_(XOpenDisplay(nullptr)) {}
+// A busy Xvfb (the GUI tests run beside the rest of CTest) can refuse a connection for a moment:
+// seen once as a test failing in 6 ms with no display. Tried again for up to 5 s.
+X11Driver::X11Driver() : display_(XOpenDisplay(nullptr)) {
+    for (int i = 0; !display_ && i < 50 && std::getenv("DISPLAY"); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        display_ = XOpenDisplay(nullptr);
+    }
+}
 
 X11Driver::~X11Driver() {
     if (display_) {
