@@ -299,10 +299,12 @@ void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& k
     dl->AddLine(ImVec2(centre.x - radius, centre.y), ImVec2(centre.x + radius, centre.y), kGrid, p.thin);
     dl->AddLine(ImVec2(centre.x, centre.y - radius), ImVec2(centre.x, centre.y + radius), kGrid, p.thin);
     if (radius > 4.0f * p.font) {
+        // The rings' θo down the vertical axis, inside each ring: the plane of incidence (the
+        // horizontal axis) is where L, R and most peaks are marked.
         for (int deg = 30; deg <= 90; deg += 30) {
-            dl->AddText(ImVec2(centre.x + radius * static_cast<float>(deg) / 90.0f - textSize(degrees(static_cast<float>(deg))).x - 2.0f,
-                               centre.y + 1.0f),
-                        kLabel, degrees(static_cast<float>(deg)).c_str());
+            const std::string t = degrees(static_cast<float>(deg));
+            dl->AddText(ImVec2(centre.x + 2.0f, centre.y + radius * static_cast<float>(deg) / 90.0f - textSize(t).y - 1.0f),
+                        kLabel, t.c_str());
         }
     }
     auto spot = [&](const glm::vec3& dir, ImU32 color, const char* label, bool cross) {
