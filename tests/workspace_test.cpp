@@ -1,6 +1,7 @@
 // workspace_test.cpp — files, links, drops and undo of the editing state, headless: no window,
 // no ImGui, no GL. What went wrong must leave the scene exactly as it was, with a problem that
 // says why.
+#include "app/figure_export.h"
 #include "app/workspace.h"
 
 #include "core/camera.h"
@@ -369,6 +370,39 @@ TEST(Workspace, ScreenshotsAreNumberedFilesOrDownloads) {
     EXPECT_EQ(downloads[1].name, "red.json");
     Diagnostics d;
     EXPECT_TRUE(parsePreset(downloads[1].bytes, "red.json", std::nullopt, d).has_value()) << toString(d);
+}
+
+// Export figures: the four figures as SVG, PNG (at the chosen scale) and CSV, each export in a
+// folder of its own beside the screenshots (never over an earlier one), or as downloads.
+TEST(Workspace, ExportedFiguresGoToANewFolderEachTimeOrAreDownloads) {
+    Fixture f;
+    ui::PlotSettings settings;
+    std::vector<Download> files = exportFigures(f.ws.a(), nullptr, settings, 1.0f);
+    ASSERT_EQ(files.size(), 12u) << "lobe, overlay, attenuation and albedo, each as SVG, PNG and CSV";
+    std::string error;
+    fs::create_directories(f.dir.path() / "shots" / "red-figures-001"); // taken: the next number is used
+    f.ws.saveFiles(files, "Figures");
+    f.ws.saveFiles(files, "Figures");
+    EXPECT_TRUE(f.ws.takeProblems().empty());
+    for (const char* folder : {"red-figures-002", "red-figures-003"}) {
+        for (const char* name : {"lobe.svg", "overlay.png", "attenuation.csv", "albedo.png"}) {
+            EXPECT_TRUE(fs::exists(f.dir.path() / "shots" / folder / name)) << folder << "/" << name;
+        }
+    }
+    std::optional<Image> png = readPng(f.dir.path() / "shots" / "red-figures-002" / "lobe.png", error);
+    ASSERT_TRUE(png) << error;
+    EXPECT_EQ(png->width, 720) << "scale 1";
+    EXPECT_EQ(readPng(fs::path(f.dir.path() / "shots" / "red-figures-003" / "lobe.png"), error)->rgb, png->rgb);
+    Preset dark = f.ws.a();
+    dark.lights.clear();
+    EXPECT_EQ(exportFigures(dark, nullptr, settings, 2.0f).size(), 9u) << "no light, no attenuation figure";
+
+    Workspace browser(WorkspaceOptions{{}, "/nonexistent-screenshots", true, {}});
+    browser.start(f.dir.path(), f.red);
+    browser.saveFiles(files, "Figures");
+    std::vector<Download> downloads = browser.takeDownloads();
+    ASSERT_EQ(downloads.size(), 12u);
+    EXPECT_EQ(downloads[0].name, "red-" + files[0].name);
 }
 
 } // namespace

@@ -346,16 +346,27 @@ void Workspace::drop(const std::vector<std::string>& files) {
     }
 }
 
+namespace {
+
+// The first `folder/<stem>-NNN<extension>` that does not exist, numbering on from `counter`.
+fs::path unusedPath(const fs::path& folder, const std::string& stem, const std::string& extension, int& counter) {
+    std::error_code ec;
+    fs::path path;
+    do {
+        char number[16];
+        std::snprintf(number, sizeof number, "-%03d", ++counter);
+        path = folder / (stem + number + extension);
+    } while (fs::exists(path, ec));
+    return path;
+}
+
+} // namespace
+
 void Workspace::saveScreenshot(const Image& image, const std::string& suffix, const std::string& what) {
     std::string stem = (doc_.file().empty() ? "lab" : doc_.file().stem().string()) + suffix;
     std::error_code ec;
     fs::create_directories(options_.screenshotFolder, ec);
-    fs::path file;
-    do {
-        char number[32];
-        std::snprintf(number, sizeof number, "-%03d.png", ++screenshots_);
-        file = options_.screenshotFolder / (stem + number);
-    } while (fs::exists(file, ec));
+    const fs::path file = unusedPath(options_.screenshotFolder, stem, ".png", screenshots_);
     if (options_.saveByDownload) {
         downloads_.push_back({file.filename().string(), encodePng(image)});
         notes_.push_back(what + " " + file.filename().string() + " downloaded");
@@ -379,12 +390,7 @@ void Workspace::saveFiles(const std::vector<Download>& files, const std::string&
         return;
     }
     std::error_code ec;
-    fs::path folder;
-    do {
-        char number[32];
-        std::snprintf(number, sizeof number, "-figures-%03d", ++figureFolders_);
-        folder = options_.screenshotFolder / (stem + number);
-    } while (fs::exists(folder, ec));
+    const fs::path folder = unusedPath(options_.screenshotFolder, stem + "-figures", "", figureFolders_);
     fs::create_directories(folder, ec);
     if (ec) {
         problem(what + " failed", "cannot create " + folder.string() + ": " + ec.message());

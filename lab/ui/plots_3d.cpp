@@ -506,24 +506,21 @@ void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& s) {
         return m;
     });
 
-    if (lobeBox.z >= 1.0f && lobeBox.w >= 1.0f) {
-        ImGui::SetCursorScreenPos(ImVec2(lobeBox.x, lobeBox.y));
-        const Canvas canvas = beginCanvas("lobe3d", "plot.lobe3d", lobeBox.z, lobeBox.w);
-        if (canvas.shown() && lobeShown) {
+    // Each canvas in its box, its drawing clipped to it.
+    auto canvasIn = [&](const ImVec4& box, const char* id, const char* name, bool shown, auto&& draw) {
+        if (box.z < 1.0f || box.w < 1.0f) {
+            return;
+        }
+        ImGui::SetCursorScreenPos(ImVec2(box.x, box.y));
+        const Canvas canvas = beginCanvas(id, name, box.z, box.w);
+        if (canvas.shown() && shown) {
             dl->PushClipRect(canvas.corner, ImVec2(canvas.corner.x + canvas.width, canvas.corner.y + canvas.height), true);
-            lobeCanvas(canvas, p, v, key, *mesh, s);
+            draw(canvas);
             dl->PopClipRect();
         }
-    }
-    if (mapBox.z >= 1.0f && mapBox.w >= 1.0f) {
-        ImGui::SetCursorScreenPos(ImVec2(mapBox.x, mapBox.y));
-        const Canvas canvas = beginCanvas("lobe3d.map", "plot.lobe3d.map", mapBox.z, mapBox.w);
-        if (canvas.shown() && mapShown) {
-            dl->PushClipRect(canvas.corner, ImVec2(canvas.corner.x + canvas.width, canvas.corner.y + canvas.height), true);
-            mapCanvas(canvas, p, v, key, *mesh, legendW);
-            dl->PopClipRect();
-        }
-    }
+    };
+    canvasIn(lobeBox, "lobe3d", "plot.lobe3d", lobeShown, [&](const Canvas& c) { lobeCanvas(c, p, v, key, *mesh, s); });
+    canvasIn(mapBox, "lobe3d.map", "plot.lobe3d.map", mapShown, [&](const Canvas& c) { mapCanvas(c, p, v, key, *mesh, legendW); });
     ImGui::PopClipRect();
 }
 
