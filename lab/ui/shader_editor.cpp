@@ -151,14 +151,7 @@ void shaderEditorWindow(ShaderEditorState& s, std::vector<Request>& requests, st
     if (s.lighting.empty()) {
         s.lighting = lightingSource;
     }
-    // 46 x 36 lines of text where that fits, never more than 90% of the window; opaque, so the
-    // panels behind do not show through the code.
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float font = ImGui::GetFontSize();
-    ImGui::SetNextWindowSize(ImVec2(std::min(font * 46, display.x * 0.9f), std::min(font * 36, display.y * 0.9f)),
-                             ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowBgAlpha(1.0f);
+    nextToolWindow(46, 36, 0.9f);
     if (ImGui::Begin("Shader editor", &s.open)) {
         commandButton(Command::CompileShaders, requests);
         mark("shader.compile");
@@ -195,7 +188,7 @@ void shaderEditorWindow(ShaderEditorState& s, std::vector<Request>& requests, st
                 ImGuiTabItemFlags flags = s.jumpLine > 0 && s.jumpFile == tab.file ? ImGuiTabItemFlags_SetSelected : 0;
                 if (ImGui::BeginTabItem(label.c_str(), nullptr, flags)) {
                     float height = ImGui::GetContentRegionAvail().y - logHeight;
-                    editorWithGutter(s, i, tab, marked, std::max(height, font * 4));
+                    editorWithGutter(s, i, tab, marked, std::max(height, ImGui::GetFontSize() * 4));
                     ImGui::EndTabItem();
                 }
             }

@@ -74,13 +74,7 @@ void sweepWindow(SweepViewState& s, const Preset& preset, std::vector<Request>& 
     if (!s.open) {
         return;
     }
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float font = ImGui::GetFontSize();
-    // 46 x 34 lines where that fits, else nearly the whole window (a phone); opaque.
-    ImGui::SetNextWindowSize(ImVec2(std::min(font * 46, display.x * 0.96f), std::min(font * 34, display.y * 0.9f)),
-                             ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowBgAlpha(1.0f);
+    nextToolWindow(46, 34, 0.96f); // nearly the whole window on a phone
     if (ImGui::Begin("Sweep", &s.open)) {
         std::vector<SweepKeySuggestion> keys = sweepKeySuggestions(preset);
         axisRow(s, 0, keys);

@@ -119,4 +119,13 @@ void sameLineIfFitsRadio(const char* label) {
     sameLineIfFits(ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x);
 }
 
+void nextToolWindow(float columns, float lines, float share) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float font = ImGui::GetFontSize();
+    ImGui::SetNextWindowSize(ImVec2(std::min(font * columns, display.x * share), std::min(font * lines, display.y * 0.9f)),
+                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(1.0f);
+}
+
 } // namespace lab::ui

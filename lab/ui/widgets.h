@@ -35,4 +35,9 @@ void disabledWrapped(const char* text);
 // A "(?)" marker with a tooltip.
 void helpMarker(const char* text);
 
+// Before Begin() of a tool window (shader editor, sweep): `columns` × `lines` text lines where
+// that fits, else at most `share` of the screen's width and 90% of its height; centred, opaque (the
+// panels behind must not show through). Its first appearance only: then the user's.
+void nextToolWindow(float columns, float lines, float share);
+
 } // namespace lab::ui
