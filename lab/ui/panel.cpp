@@ -450,8 +450,9 @@ void toolButtons(PanelState& state, std::vector<Request>& requests) {
     // The PNGs' scale beside it (the SVGs have none; the CSVs are numbers).
     char scale[32];
     std::snprintf(scale, sizeof scale, "PNG %gx", double(state.figureScale));
-    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
-    ImGui::SetNextItemWidth(ImGui::CalcTextSize("PNG 4x").x + ImGui::GetFrameHeight() + ImGui::GetStyle().FramePadding.x * 2);
+    const float scaleWidth = ImGui::CalcTextSize("PNG 4x").x + ImGui::GetFrameHeight() + ImGui::GetStyle().FramePadding.x * 2;
+    sameLineIfFits(scaleWidth); // beside the button, or under it where the column is narrow
+    ImGui::SetNextItemWidth(scaleWidth);
     if (ImGui::BeginCombo("##figure-scale", scale)) {
         for (float s : kFigureScales) {
             char item[64];

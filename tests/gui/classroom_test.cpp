@@ -35,6 +35,17 @@ void expectEverythingFits(Lab& lab, int screenW, int screenH, const std::string&
         }
     }
     EXPECT_GT(plotCount, 0) << mode;
+    // The panel's rows of buttons wrap rather than run past its edge (the PNG scale beside Export
+    // figures once did at 1600x900).
+    if (rects.count("panel")) {
+        const Rect panel = rects["panel"];
+        for (const char* name : {"sweep.open", "screenshot", "figures.export", "figures.scale", "compare"}) {
+            if (rects.count(name)) {
+                const Rect r = rects[name];
+                EXPECT_LE(r.x + r.w, panel.x + panel.w) << mode << ": " << name << " runs past the panel's edge";
+            }
+        }
+    }
 }
 
 TEST(GuiFit, TheWindowAndEveryPlotFitTheScreenNormalAndInPresenterMode) {
