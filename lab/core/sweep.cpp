@@ -317,21 +317,21 @@ std::optional<SweepCells> sweepCells(const LoadedPreset& base, const std::vector
 //----------------------------------------------------------------------------------------
 
 std::vector<SweepKeySuggestion> sweepKeySuggestions(const Preset& preset) {
+    // The preset's own BRDF's parameters first, the other BRDF's lobe parameter after the material.
+    const SweepKeySuggestion shininess{"material.shininess", "10,20,30,50"};
+    const SweepKeySuggestion roughness{"cook_torrance.roughness", "0.1,0.2,0.4,0.8"};
+    const bool cookTorrance = preset.brdf == BrdfModel::CookTorrance;
     std::vector<SweepKeySuggestion> keys;
-    if (preset.brdf == BrdfModel::CookTorrance) {
-        keys.push_back({"cook_torrance.roughness", "0.1,0.2,0.4,0.8"});
+    if (cookTorrance) {
+        keys.push_back(roughness);
         keys.push_back({"cook_torrance.ior", "1.2,1.5,2,3"});
     } else {
-        keys.push_back({"material.shininess", "10,20,30,50"});
+        keys.push_back(shininess);
     }
     keys.push_back({"material.specular", "0.2,0.5,1"});
     keys.push_back({"material.diffuse", "0.2,0.5,0.8"});
     keys.push_back({"material.ambient", "0,0.2,0.5"});
-    if (preset.brdf != BrdfModel::CookTorrance) {
-        keys.push_back({"cook_torrance.roughness", "0.1,0.2,0.4,0.8"});
-    } else {
-        keys.push_back({"material.shininess", "10,20,30,50"});
-    }
+    keys.push_back(cookTorrance ? shininess : roughness);
     keys.push_back({"brdf", "phong,blinn-phong,cook-torrance"});
     keys.push_back({"shading", "flat,gouraud,phong"});
     keys.push_back({"ambient_light", "0,0.1,0.3"});
