@@ -147,7 +147,24 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{R"("model": {"scale": [1, 0, 1]})", "model.scale", "at least 0.0001 in magnitude"},
         BadCase{R"("model": {"builtin": "cube", "gltf": "a.glb"})", "model.gltf", "not both"},
         BadCase{R"("model": {"gltf": "a.glb"})", "model.gltf", "needs the preset to be a file"},
-        BadCase{R"("model": {"gltf": "a.obj"})", "model.gltf", "expected a .gltf or .glb file"}));
+        BadCase{R"("model": {"gltf": "a.obj"})", "model.gltf", "expected a .gltf or .glb file"},
+        // lab check's own block and the preset's sweep (issue 23)
+        BadCase{R"("check": {"pixel_tolerance": -1})", "check.pixel_tolerance", "from 0 to 255, got -1"},
+        BadCase{R"("check": {"pixel_tolerance": 2.5})", "check.pixel_tolerance", "expected an integer"},
+        BadCase{R"("check": {"max_failing": -0.01})", "check.max_failing", "in [0, 1]"},
+        BadCase{R"("check": {"max_mean": 300})", "check.max_mean", "in [0, 255]"},
+        BadCase{R"("check": {"plot_tolerance": -1e-5})", "check.plot_tolerance", "in [0, 1000000]"},
+        BadCase{R"("check": {"max_men": 1})", "check.max_men", "did you mean \"max_mean\""},
+        BadCase{R"("check": 3)", "check", "expected an object"},
+        BadCase{R"("sweep": "material.shininess=1,2")", "sweep", "expected an array of 1 or 2 strings"},
+        BadCase{R"("sweep": ["a=1", "b=2", "c=3"])", "sweep", "expected an array of 1 or 2 strings"},
+        BadCase{R"("sweep": [5])", "sweep[0]", "expected a string KEY=V1,V2,..."},
+        BadCase{R"("sweep": ["material.shininess"])", "sweep[0]", "expected KEY=V1,V2,..."},
+        BadCase{R"("sweep": ["material.shininess=10,,20"])", "sweep[0]", "value 2 is empty"},
+        BadCase{R"("sweep": ["material.shininess=10,-3"])", "sweep", "material.shininess=-3: must be in [0.001, 1000000]"},
+        BadCase{R"("sweep": ["material.shinines=10"])", "sweep", "did you mean \"material.shininess\""},
+        BadCase{R"("sweep": ["check.max_mean=1,2"])", "sweep", "not a key a sweep varies"},
+        BadCase{R"("sweep": ["brdf=phong", "brdf=blinn-phong"])", "sweep", "the same key twice"}));
 
 TEST(Preset, EveryProblemOfAFileIsReported) {
     Diagnostics d;
@@ -225,6 +242,9 @@ Preset unusualPreset() {
     p.terms = {false, true, false, true};
     p.background = {1.0f, 0.0f, 0.5f};
     p.plotIncidentDeg = -12.75f;
+    p.check.pixelTolerance = 7;
+    p.check.maxMean = 0.75f;
+    p.sweep = {"material.shininess=10, 20,40", "lights[0].diffuse=[1,0,0],0.5"};
     return p;
 }
 
@@ -237,6 +257,30 @@ TEST(Preset, SaveThenLoadGivesTheSamePreset) {
         EXPECT_EQ(*back, original) << text;
         EXPECT_EQ(presetToJson(*back), text); // and the bytes are stable
     }
+}
+
+TEST(Preset, CheckAndSweepAreWrittenOnlyWhenGiven) {
+    // A preset without them is written as before they existed (no version bump needed).
+    std::string plain = presetToJson(Preset{});
+    EXPECT_EQ(plain.find("\"check\""), std::string::npos);
+    EXPECT_EQ(plain.find("\"sweep\""), std::string::npos);
+    Preset p;
+    p.check.plotTolerance = 1e-4f;
+    std::string text = presetToJson(p);
+    EXPECT_NE(text.find("\"check\": {\n    \"plot_tolerance\": 0.0001\n  }"), std::string::npos) << text;
+    EXPECT_EQ(text.find("pixel_tolerance"), std::string::npos) << text; // only what was given
+    Diagnostics d;
+    std::optional<Preset> back = parsePreset(text, "saved.json", std::nullopt, d);
+    ASSERT_TRUE(back) << toString(d);
+    EXPECT_EQ(back->check.plotTolerance, 1e-4f);
+    EXPECT_FALSE(back->check.pixelTolerance);
+}
+
+TEST(Preset, SweepValuesAreKeptAsTyped) {
+    Diagnostics d;
+    std::optional<Preset> p = parse(R"("sweep": ["material.shininess= 10,20 ", "brdf=phong,blinn-phong"])", d);
+    ASSERT_TRUE(p) << toString(d);
+    EXPECT_EQ(p->sweep, (std::vector<std::string>{"material.shininess= 10,20 ", "brdf=phong,blinn-phong"}));
 }
 
 TEST(Preset, SavedFileHasEveryKeyAndShortNumbers) {

@@ -48,24 +48,36 @@ std::vector<std::filesystem::path> toPaths(const std::vector<std::string>& v) { 
 // `check`'s arguments as text, until they are parsed into the CommandLine.
 struct CheckArguments {
     std::vector<std::string> presets;
-    std::string golden, report = "lab-check", size = "512x512";
+    std::string golden, report = "lab-check", size = "512x512", sweepSize = "128x128", junit, html;
 };
 
 CLI::App* addCheckCommand(CLI::App& app, CommandLine& line, CheckArguments& a) {
     CLI::App* check = app.add_subcommand("check", "Render presets and compare them with golden images");
     check->add_option("presets", a.presets, "Preset files")->required();
-    check->add_option("--golden", a.golden, "Folder of golden PNGs, <preset name>.png")->required()->check(kNotEmpty);
+    check->add_option("--golden", a.golden, "Folder of goldens: <name>.png, <name>.sweep.png, <name>.plot.csv")
+        ->required()
+        ->check(kNotEmpty);
     check->add_flag("--update", line.check.update, "Write goldens from the renders instead of comparing");
-    check->add_option("--report", a.report, "Folder for report.txt and the actual and diff images of failures")
+    check->add_option("--report", a.report,
+                      "Folder for report.txt, index.html and the golden, actual and diff files of failures")
         ->capture_default_str()
         ->check(kNotEmpty);
+    check->add_option("--junit", a.junit, "JUnit XML file to write (one test case per render, sweep cell and plot)")
+        ->check(kNotEmpty);
+    check->add_option("--html", a.html, "The HTML report again, at this path (its images stay in --report)")->check(kNotEmpty);
+    check->add_flag("--plots", line.check.plots,
+                    "Check every preset's plot CSV against <name>.plot.csv (else only where that golden exists)");
     check->add_option("--size", a.size, "Render size")->check(SizeValidator())->capture_default_str();
+    check->add_option("--sweep-size", a.sweepSize, "Each cell of a preset's sweep")->check(SizeValidator())->capture_default_str();
+    using limits::kMaxFailing, limits::kMaxMean, limits::kPixelTolerance, limits::kPlotTolerance;
     check->add_option("--pixel-tolerance", line.check.tolerance.pixelTolerance, "A pixel fails above this channel difference")
-        ->check(CLI::Range(0, 255))->capture_default_str();
+        ->check(CLI::Range(kPixelTolerance.min, kPixelTolerance.max))->capture_default_str();
     check->add_option("--max-failing", line.check.tolerance.maxFailingShare, "Largest share of failing pixels (0.001 = 0.1%)")
-        ->check(kFinite)->check(CLI::Range(0.0, 1.0))->capture_default_str();
+        ->check(kFinite)->check(CLI::Range(double(kMaxFailing.min), double(kMaxFailing.max)))->capture_default_str();
     check->add_option("--max-mean", line.check.tolerance.maxMeanDifference, "Largest mean channel difference, in levels")
-        ->check(kFinite)->check(CLI::Range(0.0, 255.0))->capture_default_str();
+        ->check(kFinite)->check(CLI::Range(double(kMaxMean.min), double(kMaxMean.max)))->capture_default_str();
+    check->add_option("--plot-tolerance", line.check.plotTolerance, "Largest difference of a plot CSV value from its golden")
+        ->check(kFinite)->check(CLI::Range(double(kPlotTolerance.min), double(kPlotTolerance.max)))->capture_default_str();
     return check;
 }
 
@@ -246,7 +258,14 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
         line.presets = toPaths(checkArguments.presets);
         line.check.golden = checkArguments.golden;
         line.check.report = checkArguments.report;
-        line.check.size = *parseSize(checkArguments.size, error);
+        line.check.size = *parseSize(checkArguments.size, error);           // validated by SizeValidator
+        line.check.sweepSize = *parseSize(checkArguments.sweepSize, error); // likewise
+        if (!checkArguments.junit.empty()) {
+            line.check.junit = checkArguments.junit;
+        }
+        if (!checkArguments.html.empty()) {
+            line.check.html = checkArguments.html;
+        }
     }
     return line;
 }

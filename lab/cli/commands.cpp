@@ -9,8 +9,7 @@
 #include "core/plot.h"
 #include "core/preset.h"
 #include "core/safe_text.h"
-#include "platform/headless_gl.h"
-#include "render/offscreen.h"
+#include "cli/gpu.h"
 
 #include <algorithm>
 #include <charconv>
@@ -23,31 +22,6 @@ namespace lab {
 namespace fs = std::filesystem;
 
 namespace {
-
-void printDiagnostics(const Diagnostics& diagnostics) {
-    print(stderr, toString(diagnostics));
-}
-
-// The headless GL context and renderer, created on first use.
-struct Gpu {
-    HeadlessGl gl;
-    OffscreenRenderer renderer;
-
-    bool start() {
-        std::string error;
-        if (!gl.create(error)) {
-            print(stderr, "lab: " + error + "\n");
-            return false;
-        }
-        Diagnostics diagnostics;
-        if (!renderer.init(diagnostics)) {
-            print(stderr, "lab: the built-in shaders do not compile on %s:\n", gl.renderer().c_str());
-            printDiagnostics(diagnostics);
-            return false;
-        }
-        return true;
-    }
-};
 
 // Loads every preset, reporting all problems; nullopt entries for those that failed.
 std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<fs::path>& files, bool& anyBad) {
@@ -69,13 +43,54 @@ void printNotes(const fs::path& preset, const std::vector<std::string>& notes) {
     }
 }
 
-std::string fixed(double v, int digits) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
+} // namespace
+
+void printDiagnostics(const Diagnostics& diagnostics) {
+    print(stderr, toString(diagnostics));
 }
 
-} // namespace
+bool frameForCells(LoadedPreset& preset, Size cell, Diagnostics& diagnostics) {
+    if (preset.omitted == OmittedKeys{}) {
+        return true;
+    }
+    std::optional<Mesh> mesh = loadModel(preset.preset.model, preset.folder(), diagnostics);
+    if (!mesh) {
+        return false;
+    }
+    frameOmitted(preset, *mesh, float(cell.width) / float(cell.height));
+    return true;
+}
+
+bool Gpu::start() {
+    std::string error;
+    if (!gl.create(error)) {
+        print(stderr, "lab: " + error + "\n");
+        return false;
+    }
+    Diagnostics diagnostics;
+    if (!renderer.init(diagnostics)) {
+        print(stderr, "lab: the built-in shaders do not compile on %s:\n", gl.renderer().c_str());
+        printDiagnostics(diagnostics);
+        return false;
+    }
+    return true;
+}
+
+std::optional<Image> renderSweepGrid(Gpu& gpu, const LoadedPreset& base, const std::vector<SweepAxis>& axes, Size cell,
+                                     std::string& error, bool& renderFailed) {
+    renderFailed = false;
+    auto renderCell = [&](const LoadedPreset& one, int width, int height, std::string& why) -> std::optional<Image> {
+        Diagnostics problems;
+        std::vector<std::string> notes;
+        std::optional<Image> image = gpu.renderer.render(one, width, height, problems, &notes);
+        if (!image) {
+            renderFailed = true;
+            why = problems.empty() ? "render failed" : problems.front().str();
+        }
+        return image;
+    };
+    return renderSweep(base, axes, cell.width, cell.height, renderCell, error);
+}
 
 std::optional<Size> parseSize(const std::string& text, std::string& error) {
     Size s;
@@ -179,13 +194,9 @@ int runSweep(const std::vector<fs::path>& presets, const std::vector<SweepAxis>&
     }
     // A glTF model without a camera (or lights) in the file is framed first, for the cells' shape,
     // as `lab render` frames it: a swept camera or light key then changes the framed one.
-    if (preset->omitted != OmittedKeys{}) {
-        std::optional<Mesh> mesh = loadModel(preset->preset.model, preset->folder(), diagnostics);
-        if (!mesh) {
-            printDiagnostics(diagnostics);
-            return kExitBadInput;
-        }
-        frameOmitted(*preset, *mesh, float(size.width) / float(size.height));
+    if (!frameForCells(*preset, size, diagnostics)) {
+        printDiagnostics(diagnostics);
+        return kExitBadInput;
     }
     std::string error;
     if (!sweepCells(*preset, sweeps, error)) { // before starting the GPU: a bad value is a usage error
@@ -197,17 +208,7 @@ int runSweep(const std::vector<fs::path>& presets, const std::vector<SweepAxis>&
         return kExitFailure;
     }
     bool renderFailed = false;
-    auto renderCell = [&](const LoadedPreset& cell, int width, int height, std::string& why) -> std::optional<Image> {
-        Diagnostics problems;
-        std::vector<std::string> notes;
-        std::optional<Image> image = gpu.renderer.render(cell, width, height, problems, &notes);
-        if (!image) {
-            renderFailed = true;
-            why = problems.empty() ? "render failed" : problems.front().str();
-        }
-        return image;
-    };
-    std::optional<Image> grid = renderSweep(*preset, sweeps, size.width, size.height, renderCell, error);
+    std::optional<Image> grid = renderSweepGrid(gpu, *preset, sweeps, size, error, renderFailed);
     if (!grid) {
         print(stderr, "lab render: " + std::string(renderFailed ? "" : "--sweep ") + error + "\n");
         return renderFailed ? kExitFailure : kExitBadInput;
@@ -286,161 +287,6 @@ int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float
                 print(stdout, file->string() + "\n");
             }
         }
-    }
-    return kExitOk;
-}
-
-//----------------------------------------------------------------------------------------
-// lab check
-//----------------------------------------------------------------------------------------
-
-namespace {
-
-// What `lab check` prints and keeps for report.txt: one line a preset, then the totals.
-struct CheckLog {
-    std::string text;
-    int passed = 0;
-    int failed = 0;
-
-    void line(const std::string& s) {
-        print(stdout, s + "\n");
-        text += s + "\n";
-    }
-    void pass(const std::string& s) {
-        line(s);
-        ++passed;
-    }
-    void fail(const std::string& s) {
-        line(s);
-        ++failed;
-    }
-};
-
-// "max M  mean X  over tolerance P%", or both sizes when they differ; "" without a golden.
-std::string comparisonFigures(const std::optional<Comparison>& cmp, const Image& actual,
-                              const std::optional<Image>& golden) {
-    if (cmp && cmp->sameSize) {
-        return "max " + std::to_string(cmp->maxDifference) + "  mean " + fixed(cmp->meanDifference, 3) +
-               "  over tolerance " + fixed(cmp->failingShare * 100.0, 3) + "%";
-    }
-    if (cmp) {
-        return "size " + std::to_string(actual.width) + "x" + std::to_string(actual.height) + " vs golden " +
-               std::to_string(golden->width) + "x" + std::to_string(golden->height);
-    }
-    return "";
-}
-
-// --update: rewrites the golden unless the render is the same image.
-void updateGolden(const std::string& name, const Image& actual, const fs::path& goldenFile, bool hadGolden,
-                  const std::optional<Comparison>& cmp, const std::string& figures, CheckLog& log) {
-    std::string error;
-    if (cmp && cmp->sameSize && cmp->maxDifference == 0) {
-        log.pass("SAME     " + name);
-    } else if (!writePng(actual, goldenFile, error)) {
-        log.fail("ERROR    " + name + ": " + error);
-    } else {
-        log.pass((hadGolden ? "UPDATED  " : "CREATED  ") + name + (figures.empty() ? "" : "  (" + figures + ")"));
-    }
-}
-
-// A render that differs: the actual and diff images go to the report folder, named in the line.
-void reportFailure(const std::string& name, const Image& actual, const Comparison& cmp, const std::string& figures,
-                   const fs::path& reportFolder, CheckLog& log) {
-    std::error_code ec;
-    fs::create_directories(reportFolder, ec);
-    fs::path actualFile = reportFolder / (name + ".actual.png");
-    fs::path diffFile = reportFolder / (name + ".diff.png");
-    std::string error, written;
-    if (writePng(actual, actualFile, error) && (!cmp.sameSize || writePng(cmp.diff, diffFile, error))) {
-        written = "  -> " + actualFile.string() + (cmp.sameSize ? ", " + diffFile.string() : "");
-    } else {
-        written = "  (could not write the images: " + error + ")";
-    }
-    log.fail("FAIL     " + name + "  " + figures + written);
-}
-
-// One preset: render, then compare with its golden (or, with --update, rewrite the golden).
-void checkPreset(Gpu& gpu, const LoadedPreset& preset, const std::string& name, const CheckOptions& options,
-                 CheckLog& log) {
-    Diagnostics diagnostics;
-    std::optional<Image> actual = gpu.renderer.render(preset, options.size.width, options.size.height, diagnostics);
-    if (!actual) {
-        printDiagnostics(diagnostics);
-        log.fail("ERROR    " + name + ": render failed");
-        return;
-    }
-    fs::path goldenFile = options.golden / (name + ".png");
-    std::string error;
-    std::optional<Image> golden;
-    if (std::error_code exists; fs::exists(goldenFile, exists)) {
-        golden = readPng(goldenFile, error);
-        if (!golden) {
-            log.fail("ERROR    " + name + ": golden " + goldenFile.string() + ": " + error);
-            return;
-        }
-    }
-    std::optional<Comparison> cmp;
-    if (golden) {
-        cmp = compareImages(*actual, *golden, options.tolerance);
-    }
-    std::string figures = comparisonFigures(cmp, *actual, golden);
-    if (options.update) {
-        updateGolden(name, *actual, goldenFile, golden.has_value(), cmp, figures, log);
-    } else if (!golden) {
-        log.fail("MISSING  " + name + ": no golden " + goldenFile.string() + " (create it with --update)");
-    } else if (cmp->passes(options.tolerance)) {
-        log.pass("PASS     " + name + "  " + figures);
-    } else {
-        reportFailure(name, *actual, *cmp, figures, options.report, log);
-    }
-}
-
-} // namespace
-
-int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) {
-    std::error_code ec;
-    if (!options.update && !fs::is_directory(options.golden, ec)) {
-        print(stderr, "lab check: --golden %s: no such folder\n", options.golden.string().c_str());
-        return kExitBadInput;
-    }
-    // Every folder check writes to must be one (a file in its place would fail each write later,
-    // as a check failure instead of the bad argument it is).
-    for (const auto& [flag, folder] : {std::pair{"--golden", &options.golden}, std::pair{"--report", &options.report}}) {
-        if (options.update != (flag == std::string_view("--golden"))) {
-            continue; // --update writes goldens only; a comparison writes the report only
-        }
-        fs::create_directories(*folder, ec);
-        std::error_code isFolder; // (the throwing form would end the program on a name too long or a folder not allowed)
-        if (!fs::is_directory(*folder, isFolder)) {
-            print(stderr, "lab check: " + std::string(flag) + " " + folder->string() + ": cannot be used as a folder (" +
-                              (ec ? ec.message() : "it is a file") + ")\n");
-            return kExitBadInput;
-        }
-    }
-    bool anyBad = false;
-    auto loaded = loadAll(presets, anyBad);
-    Gpu gpu;
-    if (!gpu.start()) {
-        return kExitFailure;
-    }
-    CheckLog log;
-    for (std::size_t i = 0; i < presets.size(); ++i) {
-        std::string name = presets[i].stem().string();
-        if (loaded[i]) {
-            checkPreset(gpu, *loaded[i], name, options, log);
-        } else {
-            log.fail("ERROR    " + name + ": the preset does not load (see above)");
-        }
-    }
-    log.line(std::to_string(log.passed) + " passed, " + std::to_string(log.failed) + " failed");
-    if (!options.update) {
-        std::string error;
-        if (!writeFileAtomic(options.report / "report.txt", log.text, error)) {
-            print(stderr, "lab check: " + error + "\n");
-        }
-    }
-    if (log.failed > 0) {
-        return anyBad ? kExitBadInput : kExitFailure;
     }
     return kExitOk;
 }

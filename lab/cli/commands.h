@@ -1,8 +1,8 @@
 // commands.h — the headless commands behind `lab render`, `lab plot` and `lab check`.
 //
 // Each returns the process exit status: 0 success, 2 bad input (a message on stderr naming the
-// file and place), 1 an internal failure or, for `check`, an image that differs or a missing
-// golden. Output files are written atomically. Nothing here parses argv (main.cpp does).
+// file and place; for `check` also a golden that does not read), 1 an internal failure or, for
+// `check`, an image or plot that differs or a missing golden. Output files are written atomically. Nothing here parses argv (main.cpp does).
 #pragma once
 
 #include "core/figures.h"
@@ -47,12 +47,22 @@ int runPlot(const std::filesystem::path& preset, const std::filesystem::path& ou
             std::optional<float> incidentDeg, const std::optional<std::filesystem::path>& albedoOut = std::nullopt,
             const FigureOutputs& figure = {});
 
+// `lab check` (check.cpp): each preset's render against <golden>/<name>.png, its sweep (a preset's
+// `sweep`) cell by cell against <name>.sweep.png, its lobe CSV against <name>.plot.csv where
+// that golden exists (every preset's with `plots`). A preset's `check` block overrides
+// `tolerance` and `plotTolerance` for it. The report folder gets report.txt, index.html and the
+// golden, actual and difference files of each failure.
 struct CheckOptions {
     std::filesystem::path golden;
-    std::filesystem::path report = "lab-check"; // where report.txt, actual and diff images go
+    std::filesystem::path report = "lab-check"; // where report.txt, index.html and the failures' files go
+    std::optional<std::filesystem::path> junit;  // JUnit XML
+    std::optional<std::filesystem::path> html;   // the HTML page again, elsewhere
     bool update = false;
+    bool plots = false; // every preset's plot is checked (else those with a golden CSV)
     Size size;
+    Size sweepSize{128, 128}; // each cell of a preset's sweep
     Tolerance tolerance;
+    double plotTolerance = 1e-5;
 };
 
 int runCheck(const std::vector<std::filesystem::path>& presets, const CheckOptions& options);

@@ -126,4 +126,13 @@ inline constexpr Range kPlotIncidentDeg{-90.0f, 90.0f, false, -90.0f, 90.0f, "in
 inline constexpr IntRange kSubdivisions{1, 1024};       // cube, plane
 inline constexpr IntRange kSubdivisionsRound{3, 1024};  // sphere, torus
 
+// `lab check`'s tolerances, in a preset's `check` block and as the command's options of the same
+// names: a pixel fails above pixel_tolerance levels in any channel; an image fails above
+// max_failing (a share of its pixels) or max_mean (levels); a plot fails where a value differs
+// from its golden by more than plot_tolerance.
+inline constexpr IntRange kPixelTolerance{0, 255};
+inline constexpr Range kMaxFailing{0.0f, 1.0f, false, 0.0f, 0.01f, "in [0, 1]"};
+inline constexpr Range kMaxMean{0.0f, 255.0f, false, 0.0f, 2.0f, "in [0, 255]"};
+inline constexpr Range kPlotTolerance{0.0f, 1.0e6f, false, 0.0f, 1.0e-3f, "in [0, 1000000]"};
+
 } // namespace lab::limits

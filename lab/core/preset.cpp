@@ -2,7 +2,7 @@
 //
 // Owns toString for every enumeration (the names preset files use, from preset_names.h),
 // defaultSubdivisions, presetToJson and savePreset: every key in the documented order (a
-// light's `orbit` only when it is not the default), numbers
+// light's `orbit`, `check` and `sweep` only when given), numbers
 // as the shortest decimal that reads back as the same float, written atomically.
 //
 // It does not read or validate presets (preset_read.cpp).
@@ -184,6 +184,23 @@ Json presetJson(const Preset& p) {
                   {"specular", p.terms.specular}};
     j["background"] = vec3(p.background);
     j["plot"] = {{"incident_deg", number(p.plotIncidentDeg)}};
+    // `check` and `sweep` only when given: presets without them are written as before they existed.
+    if (!p.check.empty()) {
+        Json check = Json::object();
+        if (p.check.pixelTolerance) {
+            check["pixel_tolerance"] = *p.check.pixelTolerance;
+        }
+        for (auto [key, value] : {std::pair{"max_failing", p.check.maxFailing}, std::pair{"max_mean", p.check.maxMean},
+                                  std::pair{"plot_tolerance", p.check.plotTolerance}}) {
+            if (value) {
+                check[key] = number(*value);
+            }
+        }
+        j["check"] = check;
+    }
+    if (!p.sweep.empty()) {
+        j["sweep"] = p.sweep;
+    }
     return j;
 }
 

@@ -106,6 +106,18 @@ struct TermSwitches {
     bool operator==(const TermSwitches&) const = default;
 };
 
+// How `lab check` compares this preset (its optional `check` block, limits.h's ranges): each
+// tolerance given replaces the command line's for this preset's render, sweep cells and plot.
+// Saved only when given. It changes no picture.
+struct CheckSettings {
+    std::optional<int> pixelTolerance;  // pixel_tolerance
+    std::optional<float> maxFailing;    // max_failing (a share: 0.001 is 0.1%)
+    std::optional<float> maxMean;       // max_mean (levels)
+    std::optional<float> plotTolerance; // plot_tolerance (absolute, for the lobe CSV)
+    bool empty() const { return !pixelTolerance && !maxFailing && !maxMean && !plotTolerance; }
+    bool operator==(const CheckSettings&) const = default;
+};
+
 struct Preset {
     std::string name = "Untitled";
     std::string description;
@@ -121,6 +133,10 @@ struct Preset {
     TermSwitches terms;
     glm::vec3 background{0.05f, 0.05f, 0.08f};
     float plotIncidentDeg = 45.0f;
+    CheckSettings check;            // `check`, only when given
+    std::vector<std::string> sweep; // `sweep`: one or two `lab render --sweep` arguments as typed
+                                    // ("material.shininess=10,20,50"), checked by core/sweep.h;
+                                    // `lab check` compares the grid with <name>.sweep.png
     bool operator==(const Preset&) const = default;
 };
 

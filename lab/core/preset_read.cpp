@@ -17,6 +17,7 @@
 #include "core/paths.h"
 #include "core/preset_names.h"
 #include "core/safe_text.h"
+#include "core/sweep.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -26,6 +27,7 @@
 #include <cmath>
 #include <set>
 #include <span>
+#include <tuple>
 
 namespace lab {
 
@@ -65,6 +67,8 @@ public:
     std::string elementPath(std::string_view key, std::size_t i) const {
         return pathOf(key) + "[" + std::to_string(i) + "]";
     }
+
+    std::size_t problems() const { return out_.size(); }
 
     void errorAt(std::string where, std::string message) {
         out_.push_back({file_, std::move(where), std::move(message)});
@@ -124,6 +128,13 @@ public:
             for (std::size_t i = 0; i < 2; ++i) {
                 readIntAt((*v)[i], elementPath(key, i), dst[static_cast<int>(i)], range);
             }
+        }
+    }
+
+    // An integer within `range`.
+    void readInt(std::string_view key, int& dst, const limits::IntRange& range) {
+        if (const Json* v = find(key)) {
+            readIntAt(*v, pathOf(key), dst, range);
         }
     }
 
@@ -304,7 +315,8 @@ bool readFormatAndVersion(Reader& r) {
 // The keys of each object, for finish(): anything else is reported as unknown.
 constexpr std::string_view kPresetKeys[] = {
     "format", "version",       "name",     "description",   "model",  "camera", "shading",    "normal_matrix",
-    "brdf",   "cook_torrance", "material", "ambient_light", "lights", "terms",  "background", "plot"};
+    "brdf",   "cook_torrance", "material", "ambient_light", "lights", "terms",  "background", "plot",
+    "check",  "sweep"};
 constexpr std::string_view kModelKeys[] = {"builtin", "gltf", "subdivisions", "scale", "rotate_deg", "translate"};
 constexpr std::string_view kCameraKeys[] = {"eye", "target", "up", "fovy_deg", "near", "far"};
 constexpr std::string_view kCookTorranceKeys[] = {"distribution", "roughness", "fresnel", "ior", "geometry"};
@@ -315,6 +327,7 @@ constexpr std::string_view kLightKeys[] = {"type",     "position",    "direction
 constexpr std::string_view kOrbitKeys[] = {"on", "axis", "degrees_per_second"};
 constexpr std::string_view kTermsKeys[] = {"emissive", "ambient", "diffuse", "specular"};
 constexpr std::string_view kPlotKeys[] = {"incident_deg"};
+constexpr std::string_view kCheckKeys[] = {"pixel_tolerance", "max_failing", "max_mean", "plot_tolerance"};
 
 // model.gltf: a .gltf or .glb file in or below the preset's folder.
 void readGltfPath(Reader& r, Model& model, const std::optional<fs::path>& folder) {
@@ -465,6 +478,55 @@ void readTerms(Reader& r, TermSwitches& terms) {
     }
 }
 
+// `check`: lab check's tolerances for this preset, each optional.
+void readCheck(Reader& r, CheckSettings& check) {
+    if (r.has("pixel_tolerance")) {
+        int v = 0;
+        std::size_t before = r.problems();
+        r.readInt("pixel_tolerance", v, limits::kPixelTolerance);
+        if (r.problems() == before) {
+            check.pixelTolerance = v;
+        }
+    }
+    for (auto [key, dst, range] : {std::tuple{"max_failing", &check.maxFailing, &limits::kMaxFailing},
+                                   std::tuple{"max_mean", &check.maxMean, &limits::kMaxMean},
+                                   std::tuple{"plot_tolerance", &check.plotTolerance, &limits::kPlotTolerance}}) {
+        if (r.has(key)) {
+            float v = 0.0f;
+            std::size_t before = r.problems();
+            r.readNumber(key, v, *range);
+            if (r.problems() == before) {
+                *dst = v;
+            }
+        }
+    }
+}
+
+// `sweep`: one or two `lab render --sweep` arguments, each checked for its syntax here; whether
+// the keys and values suit the preset is asked of core/sweep.h once the preset is whole.
+void readSweep(Reader& top, std::vector<std::string>& sweep) {
+    const Json* json = top.find("sweep");
+    if (!json) {
+        return;
+    }
+    if (!json->is_array() || json->empty() || json->size() > kMaxSweepKeys) {
+        top.error("sweep", "expected an array of 1 or 2 strings such as \"material.shininess=10,20,50\", got " +
+                               Reader::describe(*json));
+        return;
+    }
+    for (std::size_t i = 0; i < json->size(); ++i) {
+        const Json& axis = (*json)[i];
+        std::string error;
+        if (!axis.is_string()) {
+            top.errorAt(top.elementPath("sweep", i), "expected a string KEY=V1,V2,..., got " + Reader::describe(axis));
+        } else if (!parseSweepAxis(axis.get<std::string>(), error)) {
+            top.errorAt(top.elementPath("sweep", i), error);
+        } else {
+            sweep.push_back(axis.get<std::string>());
+        }
+    }
+}
+
 // Every key after format and version, in the documented order.
 void readPresetKeys(Reader& r, Preset& p, const std::optional<fs::path>& folder) {
     r.readString("name", p.name);
@@ -482,6 +544,8 @@ void readPresetKeys(Reader& r, Preset& p, const std::optional<fs::path>& folder)
     r.readVec3("background", p.background, limits::kBackground);
     r.readObject("plot", kPlotKeys,
                  [&](Reader& pl) { pl.readNumber("incident_deg", p.plotIncidentDeg, limits::kPlotIncidentDeg); });
+    r.readObject("check", kCheckKeys, [&](Reader& c) { readCheck(c, p.check); });
+    readSweep(r, p.sweep);
     r.finish(kPresetKeys);
 }
 
@@ -532,6 +596,17 @@ std::optional<Preset> parsePreset(std::string_view text, const std::string& disp
     Preset preset;
     if (readFormatAndVersion(r)) {
         readPresetKeys(r, preset, folder);
+    }
+    if (out.empty() && !preset.sweep.empty()) {
+        // The sweep's keys and values against the preset they vary, as `lab render --sweep` checks them.
+        std::vector<SweepAxis> axes;
+        std::string error;
+        for (const std::string& axis : preset.sweep) {
+            axes.push_back(*parseSweepAxis(axis, error)); // its syntax was checked by readSweep
+        }
+        if (!sweepCells(LoadedPreset{preset, {}, {}}, axes, error)) {
+            out.push_back({displayName, "sweep", error});
+        }
     }
     if (!out.empty()) {
         diagnostics.insert(diagnostics.end(), out.begin(), out.end());

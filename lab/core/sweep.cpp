@@ -116,7 +116,7 @@ Json* findKey(Json& json, const std::string& key, std::string& error) {
         error = shown(key) + ": not a preset key (a path such as material.shininess or lights[0].attenuation)";
         return nullptr;
     }
-    static constexpr std::string_view kFixed[] = {"format", "version", "name", "description", "model"};
+    static constexpr std::string_view kFixed[] = {"format", "version", "name", "description", "model", "check", "sweep"};
     if (std::find(std::begin(kFixed), std::end(kFixed), steps->front().name) != std::end(kFixed)) {
         error = shown(key) + ": not a key a sweep varies (it varies the material, the BRDF, the shading, the lights, "
                              "the camera, not the model or the file's name)";
@@ -259,6 +259,8 @@ std::optional<SweepCells> sweepCells(const LoadedPreset& base, const std::vector
     const std::string saved = presetToJson(base.preset);
     Json json = Json::parse(std::string_view(saved));
     json.erase("model");
+    json.erase("check"); // how lab check compares the base, and the base's own sweep: not the cells'
+    json.erase("sweep");
     // Each value is checked on its own (so the message is about it), then each cell made.
     std::vector<std::vector<Json>> values(axes.size());
     for (std::size_t a = 0; a < axes.size(); ++a) {

@@ -223,5 +223,122 @@ expect check-size-mismatch 1 'size 32x32 vs golden 64x64' -- "$lab" check "$phon
 expect check-no-golden-folder 2 'no such folder' -- "$lab" check "$phong" --golden "$tmp/none"
 expect check-broken-preset 2 'ERROR +broken' -- "$lab" check "$src/tests/data/broken.json" --golden "$tmp/golden" --report "$tmp/report"
 
+# --- check: reports, per-preset tolerances, plot and sweep goldens (issue 23) ---------------
+# JSON edits with Python's json module: edit FILE OUT 'p["material"]["shininess"] = 33'
+edit() { python3 -c 'import json, sys; p = json.load(open(sys.argv[1])); exec(sys.argv[3]); json.dump(p, open(sys.argv[2], "w"))' "$@"; }
+g=$tmp/g23
+r=$tmp/r23
+mkdir -p "$g" "$tmp/page"
+weird="$tmp/a<b & \"c\" 'd'.json" # a name that XML and HTML must escape
+cp "$phong" "$weird"
+expect check-update-plots 0 'CREATED +05-full-phong\.plot' -- "$lab" check "$phong" "$weird" --golden "$g" --update --plots --size 64x64
+check check-plot-golden-is-plot-csv test "$(head -1 "$g/05-full-phong.plot.csv")" = "theta_out_deg,diffuse,specular,total"
+"$lab" render "$src/presets/01-ambient-only.json" --out "$g/05-full-phong.png" --size 64x64 >/dev/null
+expect check-report-run 1 '^3 passed, 1 failed$' -- "$lab" check "$phong" "$weird" --golden "$g" --report "$r" \
+    --junit "$tmp/j.xml" --html "$tmp/page/p.html" --size 64x64
+# The JUnit file, read by a real XML parser: four cases, the one failure with its figures.
+junit_py='
+import sys, xml.etree.ElementTree as ET
+suite = ET.parse(sys.argv[1]).getroot().find("testsuite")
+cases = suite.findall("testcase")
+assert (suite.get("tests"), suite.get("failures"), suite.get("errors")) == ("4", "1", "0"), suite.attrib
+names = [c.get("name") for c in cases]
+assert names == ["05-full-phong", "05-full-phong.plot", "a<b & \"c\" \x27d\x27", "a<b & \"c\" \x27d\x27.plot"], names
+failed = [c for c in cases if c.find("failure") is not None]
+assert [c.get("name") for c in failed] == ["05-full-phong"], [c.get("name") for c in failed]
+failure = failed[0].find("failure")
+assert "over tolerance" in failure.get("message") and "max_mean 0.5 [command line]" in failure.text, failure.text
+'
+check check-junit-parses python3 -c "$junit_py" "$tmp/j.xml"
+# The pages: every image and link names a file that exists; the name is escaped, never raw.
+html_py='
+import os, sys, urllib.parse
+from html.parser import HTMLParser
+page = sys.argv[1]
+class Links(HTMLParser):
+    def __init__(self):
+        super().__init__(); self.files = []
+    def handle_starttag(self, tag, attrs):
+        for k, v in attrs:
+            if k in ("src", "href"): self.files.append(v)
+links = Links(); text = open(page).read(); links.feed(text)
+assert len(links.files) >= 6, links.files
+for f in links.files:
+    path = os.path.join(os.path.dirname(page), urllib.parse.unquote(f))
+    assert os.path.isfile(path), path
+assert "a&lt;b &amp; &quot;c&quot; &#39;d&#39;" in text and "a<b" not in text
+assert text.index("05-full-phong.golden.png") < text.index("a&lt;b")  # failures first
+'
+check check-html-in-report python3 -c "$html_py" "$r/index.html"
+check check-html-elsewhere python3 -c "$html_py" "$tmp/page/p.html"
+check check-report-keeps-golden test -f "$r/05-full-phong.golden.png" -a -f "$r/05-full-phong.diff.png"
+
+# Per-preset tolerances change the verdict both ways. tol.json's golden is the same sphere with
+# shininess 33: within the default tolerance, not within a strict one the preset sets.
+edit "$phong" "$tmp/tol-golden.json" 'p["material"]["shininess"] = 33'
+"$lab" render "$tmp/tol-golden.json" --out "$g/tol.png" --size 64x64 >/dev/null
+cp "$phong" "$tmp/tol.json"
+expect check-default-tolerance-passes 0 'PASS +tol ' -- "$lab" check "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
+edit "$phong" "$tmp/tol.json" 'p["check"] = {"pixel_tolerance": 0, "max_failing": 0, "max_mean": 0}'
+expect check-preset-tolerance-fails 1 'FAIL +tol .*' -- "$lab" check "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
+check check-report-names-preset-tolerance grep -q 'pixel_tolerance 0 \[preset\]' "$r/index.html"
+# ...and the other way: a golden of another picture passes where the preset allows anything.
+"$lab" render "$src/presets/01-ambient-only.json" --out "$g/tol.png" --size 64x64 >/dev/null
+expect check-default-tolerance-fails 1 'FAIL +tol ' -- "$lab" check "$phong" "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
+edit "$phong" "$tmp/tol.json" 'p["check"] = {"pixel_tolerance": 255, "max_mean": 255}'
+expect check-preset-tolerance-passes 0 'PASS +tol ' -- "$lab" check "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
+edit "$phong" "$tmp/tol.json" 'p["check"] = {"pixel_tolerance": -1}'
+expect check-negative-tolerance 2 'tol\.json: check\.pixel_tolerance: must be from 0 to 255, got -1' -- \
+    "$lab" check "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
+
+# Plot goldens: one value changed fails, naming its line and column; a looser tolerance passes.
+cp "$g/05-full-phong.plot.csv" "$tmp/plot.keep"
+awk -F, -v OFS=, 'NR == 50 { $3 = $3 + 0.001 } { print }' "$tmp/plot.keep" >"$g/05-full-phong.plot.csv"
+expect check-plot-differs 1 'FAIL +05-full-phong\.plot +line 50 \(theta_out_deg -42\), column specular' -- \
+    "$lab" check "$phong" --golden "$g" --report "$r" --size 64x64
+expect check-plot-tolerance 0 'PASS +05-full-phong\.plot' -- \
+    "$lab" check "$phong" --golden "$g" --report "$r" --size 64x64 --plot-tolerance 0.01 --pixel-tolerance 255 --max-mean 255
+printf 'theta_out_deg,diffuse\n-90,zero\n' >"$g/05-full-phong.plot.csv"
+expect check-plot-not-csv 2 'ERROR +05-full-phong\.plot: golden .*05-full-phong\.plot\.csv is not a CSV of numbers: line 2, column 2: "zero" is not a number' -- \
+    "$lab" check "$phong" --golden "$g" --report "$r" --size 64x64
+cp "$tmp/plot.keep" "$g/05-full-phong.plot.csv"
+
+# Sweep goldens: written by --update, compared cell by cell; one changed value fails its cell only.
+edit "$phong" "$tmp/sw.json" 'p["sweep"] = ["material.shininess=8,32,128"]'
+expect check-sweep-update 0 'CREATED +sw\.sweep' -- "$lab" check "$tmp/sw.json" --golden "$g" --update --size 64x64 --sweep-size 48x48
+expect check-sweep-passes 0 'PASS +sw\.sweep\[material\.shininess=128\]' -- \
+    "$lab" check "$tmp/sw.json" --golden "$g" --report "$r" --size 64x64 --sweep-size 48x48
+edit "$phong" "$tmp/sw.json" 'p["sweep"] = ["material.shininess=8,32,2"]'
+out=$("$lab" check "$tmp/sw.json" --golden "$g" --report "$r" --size 64x64 --sweep-size 48x48 2>&1)
+rc=$?
+check check-sweep-cell-fails test $rc -eq 1
+check check-sweep-failing-cell grep -q '^FAIL  *sw\.sweep\[material\.shininess=2\]' <<<"$out"
+check check-sweep-other-cells-pass test "$(grep -c '^PASS  *sw\.sweep\[' <<<"$out")" -eq 2
+check check-sweep-cell-images test -f "$r/sw.sweep.r0c2.actual.png" -a -f "$r/sw.sweep.r0c2.golden.png"
+check check-sweep-cell-size test "$(png_size "$r/sw.sweep.r0c2.actual.png")" = "48 48"
+edit "$phong" "$tmp/sw.json" 'p["sweep"] = ["material.shinines=8"]'
+expect check-sweep-bad-key 2 'sw\.json: sweep: material\.shinines: unknown key \(did you mean "material\.shininess"\?\)' -- \
+    "$lab" check "$tmp/sw.json" --golden "$g" --report "$r"
+
+# The orphan-golden check knows every golden name.
+mkdir -p "$tmp/orphans"
+touch "$tmp/orphans/05-full-phong.sweep.png"
+expect orphan-sweep-golden 1 '05-full-phong\.sweep\.png \(05-full-phong\.json has no "sweep"\)' -- \
+    cmake -DGOLDEN="$tmp/orphans" -DPRESETS="$src/presets" -P "$src/tests/check_goldens.cmake"
+rm "$tmp/orphans/05-full-phong.sweep.png"
+touch "$tmp/orphans/05-full-phong.plot.csv" "$tmp/orphans/05-full-phong.png"
+expect goldens-with-presets 0 '2 goldens, each with its preset' -- \
+    cmake -DGOLDEN="$tmp/orphans" -DPRESETS="$src/presets" -P "$src/tests/check_goldens.cmake"
+
+# Report files that could not be written are refused first; nothing is written.
+rm -rf "$tmp/r-none"
+expect check-junit-no-folder 2 '^lab check: --junit .*/none/j\.xml: no such folder' -- \
+    "$lab" check "$phong" --golden "$g" --report "$tmp/r-none" --junit "$tmp/none/j.xml"
+check check-junit-nothing-written test ! -e "$tmp/r-none"
+expect check-html-is-folder 2 '^lab check: --html .*: is a folder' -- "$lab" check "$phong" --golden "$g" --html "$tmp"
+expect check-html-same-as-junit 2 '^lab check: --html .*x\.xml: --junit writes that file too' -- \
+    "$lab" check "$phong" --golden "$g" --junit "$tmp/x.xml" --html "$tmp/x.xml"
+check check-same-file-nothing-written test ! -e "$tmp/x.xml"
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -253,6 +253,11 @@ inline std::string runParsedCommand(CommandLine line) {
     for (std::filesystem::path& p : line.presets) {
         paths.push_back(&p);
     }
+    for (std::optional<std::filesystem::path>* p : {&line.check.junit, &line.check.html}) {
+        if (*p) {
+            paths.push_back(&**p);
+        }
+    }
     for (std::filesystem::path* p : paths) {
         if (p->empty()) {
             continue; // not used by this command (an empty --out is refused by the parser)
@@ -263,7 +268,7 @@ inline std::string runParsedCommand(CommandLine line) {
         }
         *p = *moved;
     }
-    for (Size* s : {&line.size, &line.check.size}) {
+    for (Size* s : {&line.size, &line.check.size, &line.check.sweepSize}) {
         s->width = std::min(s->width, 16);
         s->height = std::min(s->height, 16);
     }

@@ -1,0 +1,517 @@
+// check.cpp — `lab check`: each preset's render, sweep cells and plot against their goldens,
+// and the report (report.txt, index.html, JUnit XML: check_report.h).
+//
+// Golden names, in the golden folder: <name>.png (the render), <name>.sweep.png (the grid of the
+// preset's `sweep`), <name>.plot.csv (the lobe CSV of `lab plot --out`); <name>.<view>.png is
+// kept free for other views (tests/check_goldens.cmake knows all of them).
+#include "cli/commands.h"
+
+#include "cli/check_report.h"
+#include "cli/csv_compare.h"
+#include "cli/gpu.h"
+#include "cli/output.h"
+#include "core/file_io.h"
+#include "core/plot.h"
+#include "core/preset.h"
+#include "core/safe_text.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+
+namespace lab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t kMaxGoldenCsvBytes = 16u << 20;
+
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+std::string shortNumber(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The tolerances for one preset: the command line's, with each one its `check` block gives
+// replaced, and how the report names them.
+struct Tolerances {
+    Tolerance image;
+    double plot = 0.0;
+    std::string imageText, plotText;
+};
+
+Tolerances tolerancesFor(const Preset& preset, const CheckOptions& options) {
+    const CheckSettings& own = preset.check;
+    auto from = [](bool fromPreset) { return fromPreset ? " [preset]" : " [command line]"; };
+    Tolerances t;
+    t.image = options.tolerance;
+    t.image.pixelTolerance = own.pixelTolerance.value_or(t.image.pixelTolerance);
+    t.image.maxFailingShare = own.maxFailing ? double(*own.maxFailing) : t.image.maxFailingShare;
+    t.image.maxMeanDifference = own.maxMean ? double(*own.maxMean) : t.image.maxMeanDifference;
+    t.plot = own.plotTolerance ? double(*own.plotTolerance) : options.plotTolerance;
+    t.imageText = "pixel_tolerance " + std::to_string(t.image.pixelTolerance) + from(own.pixelTolerance.has_value()) +
+                  ", max_failing " + shortNumber(t.image.maxFailingShare) + from(own.maxFailing.has_value()) +
+                  ", max_mean " + shortNumber(t.image.maxMeanDifference) + from(own.maxMean.has_value());
+    t.plotText = "plot_tolerance " + shortNumber(t.plot) + from(own.plotTolerance.has_value());
+    return t;
+}
+
+// "max M  mean X  over tolerance P%", or both sizes when they differ.
+std::string imageFigures(const Comparison& cmp, const Image& actual, const Image& golden) {
+    if (cmp.sameSize) {
+        return "max " + std::to_string(cmp.maxDifference) + "  mean " + fixed(cmp.meanDifference, 3) + "  over tolerance " +
+               fixed(cmp.failingShare * 100.0, 3) + "%";
+    }
+    return "size " + std::to_string(actual.width) + "x" + std::to_string(actual.height) + " vs golden " +
+           std::to_string(golden.width) + "x" + std::to_string(golden.height);
+}
+
+Image crop(const Image& image, int x, int y, int width, int height) {
+    Image out{width, height, std::vector<std::uint8_t>(std::size_t(width) * std::size_t(height) * 3)};
+    for (int row = 0; row < height; ++row) {
+        const std::uint8_t* from = image.rgb.data() + (std::size_t(y + row) * std::size_t(image.width) + std::size_t(x)) * 3;
+        std::copy(from, from + std::size_t(width) * 3, out.rgb.data() + std::size_t(row) * std::size_t(width) * 3);
+    }
+    return out;
+}
+
+// A file `lab check` will write at the end (--junit, --html): refused now, before anything
+// renders, when it could not be written then. "" when it can.
+std::string unwritable(const fs::path& file) {
+    std::error_code ec;
+    if (fs::is_directory(file, ec)) {
+        return "is a folder";
+    }
+    fs::path parent = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    if (!fs::is_directory(parent, ec)) {
+        return "no such folder " + parent.string();
+    }
+    if (::access(parent.c_str(), W_OK) != 0) {
+        return "cannot write in " + parent.string() + ": " + std::strerror(errno);
+    }
+    return "";
+}
+
+// `folder` as seen from `from` (both folders), each part URL-encoded, with a trailing '/'; "" when
+// they are the same.
+std::string linkPrefix(const fs::path& from, const fs::path& folder) {
+    std::error_code ec;
+    fs::path a = fs::weakly_canonical(fs::absolute(from, ec), ec), b = fs::weakly_canonical(fs::absolute(folder, ec), ec);
+    fs::path relative = b.lexically_relative(a);
+    if (relative.empty() || relative == ".") {
+        return relative.empty() && a != b ? b.generic_string() + "/" : "";
+    }
+    std::string out;
+    for (const fs::path& part : relative) {
+        out += urlEncoded(part.string()) + "/";
+    }
+    return out;
+}
+
+//----------------------------------------------------------------------------------------
+// The cases of one run
+//----------------------------------------------------------------------------------------
+
+class Checker {
+public:
+    Checker(Gpu& gpu, const CheckOptions& options) : gpu_(gpu), options_(options) {}
+
+    std::vector<CheckCase> cases;
+    bool badInput = false;
+
+    void preset(const fs::path& file, const std::optional<LoadedPreset>& loaded) {
+        std::string stem = file.stem().string();
+        if (!loaded) {
+            CheckCase c = start(CheckCase::Kind::Render, stem, stem, file);
+            c.verdict = CheckCase::Verdict::Error;
+            c.message = "the preset does not load (see above)";
+            badInput = true;
+            finish(c, std::chrono::steady_clock::now());
+            return;
+        }
+        Tolerances tolerances = tolerancesFor(loaded->preset, options_);
+        render(*loaded, stem, tolerances);
+        if (!loaded->preset.sweep.empty()) {
+            sweep(*loaded, stem, tolerances);
+        }
+        std::error_code ec;
+        if (options_.plots || fs::exists(options_.golden / (stem + ".plot.csv"), ec)) {
+            plot(*loaded, stem, tolerances);
+        }
+    }
+
+private:
+    CheckCase start(CheckCase::Kind kind, const std::string& stem, const std::string& name, const fs::path& file) {
+        CheckCase c;
+        c.kind = kind;
+        c.preset = stem;
+        c.name = name;
+        c.presetFile = file.string();
+        return c;
+    }
+
+    void finish(CheckCase& c, std::chrono::steady_clock::time_point began) {
+        c.seconds = secondsSince(began);
+        print(stdout, checkLine(c, options_.report.string()) + "\n");
+        cases.push_back(std::move(c));
+    }
+
+    // A file in the report folder; its name relative to the folder, or "" when it could not be
+    // written (the case's message then says why).
+    std::string reportImage(const std::string& name, const Image& image, CheckCase& c) {
+        std::string error;
+        if (writePng(image, options_.report / name, error, WriteSafety::Renewable)) {
+            return name;
+        }
+        c.message += (c.message.empty() ? "" : "; ") + std::string("could not write the report's images: ") + error;
+        return "";
+    }
+    std::string reportText(const std::string& name, const std::string& text, CheckCase& c) {
+        std::string error;
+        if (writeFileAtomic(options_.report / name, text, error, WriteSafety::Renewable)) {
+            return name;
+        }
+        c.message += (c.message.empty() ? "" : "; ") + std::string("could not write the report's files: ") + error;
+        return "";
+    }
+
+    // The golden image, if there is one; an unreadable one is an error case (bad input), except
+    // with --update, which replaces it.
+    bool readGolden(const fs::path& file, std::optional<Image>& golden, CheckCase& c) {
+        std::error_code ec;
+        if (!fs::exists(file, ec)) {
+            return true;
+        }
+        std::string error;
+        golden = readPng(file, error);
+        if (!golden && !options_.update) {
+            c.verdict = CheckCase::Verdict::Error;
+            c.message = "golden " + file.string() + ": " + error;
+            badInput = true;
+            return false;
+        }
+        return true;
+    }
+
+    // --update: writes `actual` as the golden unless it is the same image.
+    void update(CheckCase& c, const Image& actual, const std::optional<Image>& golden, const fs::path& goldenFile) {
+        std::optional<Comparison> cmp;
+        if (golden) {
+            cmp = compareImages(actual, *golden, Tolerance{});
+            c.figures = imageFigures(*cmp, actual, *golden);
+        }
+        std::string error;
+        if (cmp && cmp->sameSize && cmp->maxDifference == 0) {
+            c.verdict = CheckCase::Verdict::Same;
+        } else if (!writePng(actual, goldenFile, error)) {
+            c.verdict = CheckCase::Verdict::Error;
+            c.message = error;
+        } else {
+            c.verdict = golden ? CheckCase::Verdict::Updated : CheckCase::Verdict::Created;
+        }
+    }
+
+    // Compares `actual` with `golden`; on a failure the three images go to the report folder
+    // under `files` (<files>.golden.png, .actual.png, .diff.png).
+    void compare(CheckCase& c, const Image& actual, const Image& golden, const Tolerance& tolerance, const std::string& files) {
+        Comparison cmp = compareImages(actual, golden, tolerance);
+        c.figures = imageFigures(cmp, actual, golden);
+        if (cmp.passes(tolerance)) {
+            c.verdict = CheckCase::Verdict::Pass;
+            return;
+        }
+        c.verdict = CheckCase::Verdict::Fail;
+        c.golden = reportImage(files + ".golden.png", golden, c);
+        c.actual = reportImage(files + ".actual.png", actual, c);
+        if (cmp.sameSize) {
+            c.diff = reportImage(files + ".diff.png", cmp.diff, c);
+        }
+    }
+
+    void missing(CheckCase& c, const fs::path& goldenFile, const Image* actual, const std::string& files) {
+        c.verdict = CheckCase::Verdict::Missing;
+        c.message = "no golden " + goldenFile.string() + " (create it with --update)";
+        if (actual) {
+            c.actual = reportImage(files + ".actual.png", *actual, c);
+        }
+    }
+
+    void render(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances) {
+        auto began = std::chrono::steady_clock::now();
+        CheckCase c = start(CheckCase::Kind::Render, stem, stem, preset.file);
+        c.tolerance = tolerances.imageText;
+        Diagnostics diagnostics;
+        std::optional<Image> actual = gpu_.renderer.render(preset, options_.size.width, options_.size.height, diagnostics);
+        fs::path goldenFile = options_.golden / (stem + ".png");
+        std::optional<Image> golden;
+        if (!actual) {
+            printDiagnostics(diagnostics);
+            c.verdict = CheckCase::Verdict::Error;
+            c.message = "render failed";
+        } else if (!readGolden(goldenFile, golden, c)) {
+            // an unreadable golden: c says so
+        } else if (options_.update) {
+            update(c, *actual, golden, goldenFile);
+        } else if (!golden) {
+            missing(c, goldenFile, &*actual, stem);
+        } else {
+            compare(c, *actual, *golden, tolerances.image, stem);
+        }
+        finish(c, began);
+    }
+
+    // The preset's sweep as one grid, compared cell by cell (one case a cell).
+    void sweep(const LoadedPreset& base, const std::string& stem, const Tolerances& tolerances) {
+        auto began = std::chrono::steady_clock::now();
+        const std::string whole = stem + ".sweep";
+        CheckCase c = start(CheckCase::Kind::SweepCell, stem, whole, base.file);
+        c.tolerance = tolerances.imageText;
+        std::vector<SweepAxis> axes;
+        std::string error;
+        for (const std::string& text : base.preset.sweep) {
+            axes.push_back(*parseSweepAxis(text, error)); // checked when the preset was read
+        }
+        LoadedPreset preset = base;
+        Diagnostics diagnostics;
+        bool renderFailed = false;
+        std::optional<Image> grid;
+        if (frameForCells(preset, options_.sweepSize, diagnostics)) {
+            grid = renderSweepGrid(gpu_, preset, axes, options_.sweepSize, error, renderFailed);
+        } else {
+            error = diagnostics.empty() ? "the model does not load" : diagnostics.front().str();
+        }
+        fs::path goldenFile = options_.golden / (whole + ".png");
+        std::optional<Image> golden;
+        if (!grid) {
+            c.verdict = CheckCase::Verdict::Error;
+            c.message = "sweep: " + error;
+            badInput = badInput || !renderFailed;
+            finish(c, began);
+            return;
+        }
+        if (!readGolden(goldenFile, golden, c)) {
+            finish(c, began);
+            return;
+        }
+        if (options_.update) {
+            update(c, *grid, golden, goldenFile);
+            finish(c, began);
+            return;
+        }
+        if (!golden) {
+            missing(c, goldenFile, &*grid, whole);
+            finish(c, began);
+            return;
+        }
+        if (golden->width != grid->width || golden->height != grid->height) {
+            compare(c, *grid, *golden, tolerances.image, whole); // fails, naming both sizes
+            finish(c, began);
+            return;
+        }
+        // Cell by cell: each compared on its own, named by its values.
+        SweepGridLayout layout = sweepGridLayout(axes, options_.sweepSize.width, options_.sweepSize.height);
+        double shared = secondsSince(began) / double(layout.columns * layout.rows);
+        for (int row = 0; row < layout.rows; ++row) {
+            for (int column = 0; column < layout.columns; ++column) {
+                auto cellBegan = std::chrono::steady_clock::now();
+                std::string values = axes[0].key + "=" + axes[0].values[std::size_t(column)];
+                if (axes.size() > 1) {
+                    values += ", " + axes[1].key + "=" + axes[1].values[std::size_t(row)];
+                }
+                CheckCase cell = start(CheckCase::Kind::SweepCell, stem, whole + "[" + values + "]", base.file);
+                cell.tolerance = tolerances.imageText;
+                int x = layout.cellX(column), y = layout.cellY(row);
+                compare(cell, crop(*grid, x, y, layout.cellWidth, layout.cellHeight),
+                        crop(*golden, x, y, layout.cellWidth, layout.cellHeight), tolerances.image,
+                        whole + ".r" + std::to_string(row) + "c" + std::to_string(column));
+                finish(cell, cellBegan);
+                cases.back().seconds += shared;
+            }
+        }
+    }
+
+    // The lobe CSV `lab plot --out` writes, against <name>.plot.csv within the plot tolerance.
+    void plot(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances) {
+        auto began = std::chrono::steady_clock::now();
+        CheckCase c = start(CheckCase::Kind::Plot, stem, stem + ".plot", preset.file);
+        c.tolerance = tolerances.plotText;
+        const std::string text = plotCsv(reflectedIntensity(preset.preset, preset.preset.plotIncidentDeg));
+        fs::path goldenFile = options_.golden / (stem + ".plot.csv");
+        std::string error;
+        std::error_code ec;
+        std::optional<std::string> goldenText;
+        if (fs::exists(goldenFile, ec)) {
+            goldenText = readFile(goldenFile, kMaxGoldenCsvBytes, error);
+            if (!goldenText && !options_.update) {
+                c.verdict = CheckCase::Verdict::Error;
+                c.message = "golden " + goldenFile.string() + ": " + error;
+                badInput = true;
+                finish(c, began);
+                return;
+            }
+        }
+        std::optional<NumberCsv> golden = goldenText ? parseNumberCsv(*goldenText, error) : std::nullopt;
+        if (options_.update) {
+            if (goldenText && *goldenText == text) {
+                c.verdict = CheckCase::Verdict::Same;
+            } else if (!writeFileAtomic(goldenFile, text, error)) {
+                c.verdict = CheckCase::Verdict::Error;
+                c.message = error;
+            } else {
+                c.verdict = goldenText ? CheckCase::Verdict::Updated : CheckCase::Verdict::Created;
+            }
+        } else if (!goldenText) {
+            c.verdict = CheckCase::Verdict::Missing;
+            c.message = "no golden " + goldenFile.string() + " (create it with --update --plots)";
+            c.actual = reportText(stem + ".plot.actual.csv", text, c);
+        } else if (!golden) {
+            c.verdict = CheckCase::Verdict::Error;
+            c.message = "golden " + goldenFile.string() + " is not a CSV of numbers: " + error;
+            badInput = true;
+        } else {
+            std::string parseError;
+            CsvComparison cmp = compareCsv(*parseNumberCsv(text, parseError), *golden, tolerances.plot);
+            c.figures = cmp.figures;
+            if (cmp.passes) {
+                c.verdict = CheckCase::Verdict::Pass;
+            } else {
+                c.verdict = CheckCase::Verdict::Fail;
+                c.message = cmp.firstDifference;
+                c.golden = reportText(stem + ".plot.golden.csv", *goldenText, c);
+                c.actual = reportText(stem + ".plot.actual.csv", text, c);
+            }
+        }
+        finish(c, began);
+    }
+
+    Gpu& gpu_;
+    const CheckOptions& options_;
+};
+
+// Loads every preset, reporting all problems; nullopt entries for those that failed.
+std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<fs::path>& files) {
+    std::vector<std::optional<LoadedPreset>> loaded;
+    for (const fs::path& f : files) {
+        Diagnostics diagnostics;
+        loaded.push_back(loadPreset(f, diagnostics));
+        if (!loaded.back()) {
+            printDiagnostics(diagnostics);
+        }
+    }
+    return loaded;
+}
+
+// Everything that could stop the report being written, before anything renders or is written.
+bool usable(const CheckOptions& options) {
+    std::vector<std::pair<const char*, fs::path>> files;
+    if (!options.update) {
+        files.push_back({"--report", options.report / "index.html"});
+    }
+    for (auto [flag, file] : {std::pair{"--junit", options.junit}, std::pair{"--html", options.html}}) {
+        if (!file) {
+            continue;
+        }
+        if (std::string why = unwritable(*file); !why.empty()) {
+            print(stderr, "lab check: %s %s: %s\n", flag, file->string().c_str(), why.c_str());
+            return false;
+        }
+        for (const auto& [other, seen] : files) {
+            if (fs::absolute(*file).lexically_normal() == fs::absolute(seen).lexically_normal()) {
+                print(stderr, "lab check: %s %s: %s writes that file too\n", flag, file->string().c_str(), other);
+                return false;
+            }
+        }
+        files.push_back({flag, *file});
+    }
+    std::error_code ec;
+    if (!options.update && !fs::is_directory(options.golden, ec)) {
+        print(stderr, "lab check: --golden %s: no such folder\n", options.golden.string().c_str());
+        return false;
+    }
+    // Every folder check writes to must be one (a file in its place would fail each write later,
+    // as a check failure instead of the bad argument it is).
+    for (const auto& [flag, folder] : {std::pair{"--golden", &options.golden}, std::pair{"--report", &options.report}}) {
+        if (options.update != (flag == std::string_view("--golden"))) {
+            continue; // --update writes goldens only; a comparison writes the report only
+        }
+        fs::create_directories(*folder, ec);
+        std::error_code isFolder; // (the throwing form would end the program on a name too long or a folder not allowed)
+        if (!fs::is_directory(*folder, isFolder)) {
+            print(stderr, "lab check: " + std::string(flag) + " " + folder->string() + ": cannot be used as a folder (" +
+                              (ec ? ec.message() : "it is a file") + ")\n");
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) {
+    if (!usable(options)) {
+        return kExitBadInput;
+    }
+    auto began = std::chrono::steady_clock::now();
+    auto loaded = loadAll(presets);
+    Gpu gpu;
+    if (!gpu.start()) {
+        return kExitFailure;
+    }
+    Checker checker(gpu, options);
+    for (std::size_t i = 0; i < presets.size(); ++i) {
+        checker.preset(presets[i], loaded[i]);
+    }
+    const std::vector<CheckCase>& cases = checker.cases;
+    const auto failed = std::count_if(cases.begin(), cases.end(), [](const CheckCase& c) { return c.failed(); });
+    std::string summary = std::to_string(cases.size() - std::size_t(failed)) + " passed, " + std::to_string(failed) + " failed";
+    print(stdout, summary + "\n");
+
+    // The report: written whole or not at all (each file atomically).
+    CheckRun run{options.golden.string(),
+                 std::to_string(options.size.width) + "x" + std::to_string(options.size.height),
+                 std::to_string(options.sweepSize.width) + "x" + std::to_string(options.sweepSize.height), options.update};
+    bool written = true;
+    auto write = [&](const char* flag, const fs::path& file, const std::string& text) {
+        std::string error;
+        if (!writeFileAtomic(file, text, error)) {
+            print(stderr, "lab check: %s %s\n", flag, error.c_str());
+            written = false;
+        }
+    };
+    if (!options.update) {
+        std::string text;
+        for (const CheckCase& c : cases) {
+            text += checkLine(c, options.report.string()) + "\n";
+        }
+        write("--report", options.report / "report.txt", text + summary + "\n");
+        write("--report", options.report / "index.html", checkHtml(cases, run, ""));
+    }
+    if (options.html) {
+        fs::path parent = options.html->parent_path().empty() ? fs::path(".") : options.html->parent_path();
+        write("--html", *options.html, checkHtml(cases, run, linkPrefix(parent, options.report)));
+    }
+    if (options.junit) {
+        write("--junit", *options.junit, checkJunit(cases, secondsSince(began)));
+    }
+    if (checker.badInput || !written) {
+        return kExitBadInput;
+    }
+    return failed > 0 ? kExitFailure : kExitOk;
+}
+
+} // namespace lab

@@ -1,0 +1,38 @@
+// gpu.h — the headless GL context and renderer the commands draw with, made on first use, and
+// the one way a preset's sweep grid is rendered (`lab render --sweep` and `lab check`).
+#pragma once
+
+#include "cli/commands.h"
+#include "core/diagnostics.h"
+#include "core/sweep.h"
+#include "platform/headless_gl.h"
+#include "render/offscreen.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lab {
+
+struct Gpu {
+    HeadlessGl gl;
+    OffscreenRenderer renderer;
+
+    // Makes the context and compiles the shaders; false after a message on stderr.
+    bool start();
+};
+
+// Every diagnostic, one a line, on stderr.
+void printDiagnostics(const Diagnostics& diagnostics);
+
+// A glTF preset without a camera or lights in its file framed for cells of `cell`'s shape, as
+// `lab render` frames it (core/model_loader.h frameOmitted); false when its model does not load.
+bool frameForCells(LoadedPreset& preset, Size cell, Diagnostics& diagnostics);
+
+// `preset` (framed: frameForCells) swept along `axes` as one labelled grid of `cell`-sized
+// renders (core/sweep.h). Nullopt with a one-line `error`: `renderFailed` tells a render that
+// failed (an internal failure) from a key or value the preset refuses (bad input).
+std::optional<Image> renderSweepGrid(Gpu& gpu, const LoadedPreset& preset, const std::vector<SweepAxis>& axes,
+                                     Size cell, std::string& error, bool& renderFailed);
+
+} // namespace lab
