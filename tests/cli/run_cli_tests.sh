@@ -204,23 +204,27 @@ out=$("$lab" render "$shin" --sweep "material.${esc}[2J=1" --out "$tmp/s.png" 2>
 check sweep-escaped-key grep -qF 'material.\x1B[2J: not a preset key' <<<"$out"
 
 # --- check --------------------------------------------------------------------------------
-mkdir -p "$tmp/golden"
-expect check-missing-golden 1 'MISSING +05-full-phong' -- "$lab" check "$phong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
-expect check-update 0 'CREATED +05-full-phong' -- "$lab" check "$phong" --golden "$tmp/golden" --update --size 64x64
-expect check-pass 0 'PASS +05-full-phong +max 0 +mean 0\.000' -- "$lab" check "$phong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
-expect check-max-mean-nan 2 '^--max-mean: must be a finite number, got nan' -- "$lab" check "$phong" --golden "$tmp/golden" \
+mkdir -p "$tmp/golden" "$tmp/plain"
+# The shipped preset carries a sweep; these cases are about its render and plot alone.
+python3 -c 'import json, sys; p = json.load(open(sys.argv[1])); del p["sweep"]; json.dump(p, open(sys.argv[2], "w"))' \
+    "$phong" "$tmp/plain/05-full-phong.json"
+cphong=$tmp/plain/05-full-phong.json
+expect check-missing-golden 1 'MISSING +05-full-phong' -- "$lab" check "$cphong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
+expect check-update 0 'CREATED +05-full-phong' -- "$lab" check "$cphong" --golden "$tmp/golden" --update --size 64x64
+expect check-pass 0 'PASS +05-full-phong +max 0 +mean 0\.000' -- "$lab" check "$cphong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
+expect check-max-mean-nan 2 '^--max-mean: must be a finite number, got nan' -- "$lab" check "$cphong" --golden "$tmp/golden" \
     --max-mean nan --size 64x64
-expect check-max-failing-nan 2 '^--max-failing: must be a finite number, got -nan' -- "$lab" check "$phong" \
+expect check-max-failing-nan 2 '^--max-failing: must be a finite number, got -nan' -- "$lab" check "$cphong" \
     --golden "$tmp/golden" --max-failing -nan --size 64x64
-expect check-summary 0 '^1 passed, 0 failed$' -- "$lab" check "$phong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
+expect check-summary 0 '^1 passed, 0 failed$' -- "$lab" check "$cphong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
 # A golden of another picture under this name: the check fails and leaves actual and diff images.
 "$lab" render "$src/presets/01-ambient-only.json" --out "$tmp/golden/05-full-phong.png" --size 64x64 >/dev/null
-expect check-differs 1 'FAIL +05-full-phong' -- "$lab" check "$phong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
+expect check-differs 1 'FAIL +05-full-phong' -- "$lab" check "$cphong" --golden "$tmp/golden" --report "$tmp/report" --size 64x64
 check check-writes-actual test -f "$tmp/report/05-full-phong.actual.png"
 check check-writes-diff test -f "$tmp/report/05-full-phong.diff.png"
 check check-writes-report grep -q 'FAIL' "$tmp/report/report.txt"
-expect check-size-mismatch 1 'size 32x32 vs golden 64x64' -- "$lab" check "$phong" --golden "$tmp/golden" --report "$tmp/report" --size 32x32
-expect check-no-golden-folder 2 'no such folder' -- "$lab" check "$phong" --golden "$tmp/none"
+expect check-size-mismatch 1 'size 32x32 vs golden 64x64' -- "$lab" check "$cphong" --golden "$tmp/golden" --report "$tmp/report" --size 32x32
+expect check-no-golden-folder 2 'no such folder' -- "$lab" check "$cphong" --golden "$tmp/none"
 expect check-broken-preset 2 'ERROR +broken' -- "$lab" check "$src/tests/data/broken.json" --golden "$tmp/golden" --report "$tmp/report"
 
 # --- check: reports, per-preset tolerances, plot and sweep goldens (issue 23) ---------------
@@ -230,11 +234,11 @@ g=$tmp/g23
 r=$tmp/r23
 mkdir -p "$g" "$tmp/page"
 weird="$tmp/a<b & \"c\" 'd'.json" # a name that XML and HTML must escape
-cp "$phong" "$weird"
-expect check-update-plots 0 'CREATED +05-full-phong\.plot' -- "$lab" check "$phong" "$weird" --golden "$g" --update --plots --size 64x64
+cp "$cphong" "$weird"
+expect check-update-plots 0 'CREATED +05-full-phong\.plot' -- "$lab" check "$cphong" "$weird" --golden "$g" --update --plots --size 64x64
 check check-plot-golden-is-plot-csv test "$(head -1 "$g/05-full-phong.plot.csv")" = "theta_out_deg,diffuse,specular,total"
 "$lab" render "$src/presets/01-ambient-only.json" --out "$g/05-full-phong.png" --size 64x64 >/dev/null
-expect check-report-run 1 '^3 passed, 1 failed$' -- "$lab" check "$phong" "$weird" --golden "$g" --report "$r" \
+expect check-report-run 1 '^3 passed, 1 failed$' -- "$lab" check "$cphong" "$weird" --golden "$g" --report "$r" \
     --junit "$tmp/j.xml" --html "$tmp/page/p.html" --size 64x64
 # The JUnit file, read by a real XML parser: four cases, the one failure with its figures.
 junit_py='
@@ -275,19 +279,19 @@ check check-report-keeps-golden test -f "$r/05-full-phong.golden.png" -a -f "$r/
 
 # Per-preset tolerances change the verdict both ways. tol.json's golden is the same sphere with
 # shininess 33: within the default tolerance, not within a strict one the preset sets.
-edit "$phong" "$tmp/tol-golden.json" 'p["material"]["shininess"] = 33'
+edit "$cphong" "$tmp/tol-golden.json" 'p["material"]["shininess"] = 33'
 "$lab" render "$tmp/tol-golden.json" --out "$g/tol.png" --size 64x64 >/dev/null
-cp "$phong" "$tmp/tol.json"
+cp "$cphong" "$tmp/tol.json"
 expect check-default-tolerance-passes 0 'PASS +tol ' -- "$lab" check "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
-edit "$phong" "$tmp/tol.json" 'p["check"] = {"pixel_tolerance": 0, "max_failing": 0, "max_mean": 0}'
+edit "$cphong" "$tmp/tol.json" 'p["check"] = {"pixel_tolerance": 0, "max_failing": 0, "max_mean": 0}'
 expect check-preset-tolerance-fails 1 'FAIL +tol .*' -- "$lab" check "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
 check check-report-names-preset-tolerance grep -q 'pixel_tolerance 0 \[preset\]' "$r/index.html"
 # ...and the other way: a golden of another picture passes where the preset allows anything.
 "$lab" render "$src/presets/01-ambient-only.json" --out "$g/tol.png" --size 64x64 >/dev/null
-expect check-default-tolerance-fails 1 'FAIL +tol ' -- "$lab" check "$phong" "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
-edit "$phong" "$tmp/tol.json" 'p["check"] = {"pixel_tolerance": 255, "max_mean": 255}'
+expect check-default-tolerance-fails 1 'FAIL +tol ' -- "$lab" check "$cphong" "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
+edit "$cphong" "$tmp/tol.json" 'p["check"] = {"pixel_tolerance": 255, "max_mean": 255}'
 expect check-preset-tolerance-passes 0 'PASS +tol ' -- "$lab" check "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
-edit "$phong" "$tmp/tol.json" 'p["check"] = {"pixel_tolerance": -1}'
+edit "$cphong" "$tmp/tol.json" 'p["check"] = {"pixel_tolerance": -1}'
 expect check-negative-tolerance 2 'tol\.json: check\.pixel_tolerance: must be from 0 to 255, got -1' -- \
     "$lab" check "$tmp/tol.json" --golden "$g" --report "$r" --size 64x64
 
@@ -295,20 +299,20 @@ expect check-negative-tolerance 2 'tol\.json: check\.pixel_tolerance: must be fr
 cp "$g/05-full-phong.plot.csv" "$tmp/plot.keep"
 awk -F, -v OFS=, 'NR == 50 { $3 = $3 + 0.001 } { print }' "$tmp/plot.keep" >"$g/05-full-phong.plot.csv"
 expect check-plot-differs 1 'FAIL +05-full-phong\.plot +line 50 \(theta_out_deg -42\), column specular' -- \
-    "$lab" check "$phong" --golden "$g" --report "$r" --size 64x64
+    "$lab" check "$cphong" --golden "$g" --report "$r" --size 64x64
 expect check-plot-tolerance 0 'PASS +05-full-phong\.plot' -- \
-    "$lab" check "$phong" --golden "$g" --report "$r" --size 64x64 --plot-tolerance 0.01 --pixel-tolerance 255 --max-mean 255
+    "$lab" check "$cphong" --golden "$g" --report "$r" --size 64x64 --plot-tolerance 0.01 --pixel-tolerance 255 --max-mean 255
 printf 'theta_out_deg,diffuse\n-90,zero\n' >"$g/05-full-phong.plot.csv"
 expect check-plot-not-csv 2 'ERROR +05-full-phong\.plot: golden .*05-full-phong\.plot\.csv is not a CSV of numbers: line 2, column 2: "zero" is not a number' -- \
-    "$lab" check "$phong" --golden "$g" --report "$r" --size 64x64
+    "$lab" check "$cphong" --golden "$g" --report "$r" --size 64x64
 cp "$tmp/plot.keep" "$g/05-full-phong.plot.csv"
 
 # Sweep goldens: written by --update, compared cell by cell; one changed value fails its cell only.
-edit "$phong" "$tmp/sw.json" 'p["sweep"] = ["material.shininess=8,32,128"]'
+edit "$cphong" "$tmp/sw.json" 'p["sweep"] = ["material.shininess=8,32,128"]'
 expect check-sweep-update 0 'CREATED +sw\.sweep' -- "$lab" check "$tmp/sw.json" --golden "$g" --update --size 64x64 --sweep-size 48x48
 expect check-sweep-passes 0 'PASS +sw\.sweep\[material\.shininess=128\]' -- \
     "$lab" check "$tmp/sw.json" --golden "$g" --report "$r" --size 64x64 --sweep-size 48x48
-edit "$phong" "$tmp/sw.json" 'p["sweep"] = ["material.shininess=8,32,2"]'
+edit "$cphong" "$tmp/sw.json" 'p["sweep"] = ["material.shininess=8,32,2"]'
 out=$("$lab" check "$tmp/sw.json" --golden "$g" --report "$r" --size 64x64 --sweep-size 48x48 2>&1)
 rc=$?
 check check-sweep-cell-fails test $rc -eq 1
@@ -316,16 +320,16 @@ check check-sweep-failing-cell grep -q '^FAIL  *sw\.sweep\[material\.shininess=2
 check check-sweep-other-cells-pass test "$(grep -c '^PASS  *sw\.sweep\[' <<<"$out")" -eq 2
 check check-sweep-cell-images test -f "$r/sw.sweep.r0c2.actual.png" -a -f "$r/sw.sweep.r0c2.golden.png"
 check check-sweep-cell-size test "$(png_size "$r/sw.sweep.r0c2.actual.png")" = "48 48"
-edit "$phong" "$tmp/sw.json" 'p["sweep"] = ["material.shinines=8"]'
+edit "$cphong" "$tmp/sw.json" 'p["sweep"] = ["material.shinines=8"]'
 expect check-sweep-bad-key 2 'sw\.json: sweep: material\.shinines: unknown key \(did you mean "material\.shininess"\?\)' -- \
     "$lab" check "$tmp/sw.json" --golden "$g" --report "$r"
 
 # The orphan-golden check knows every golden name.
 mkdir -p "$tmp/orphans"
-touch "$tmp/orphans/05-full-phong.sweep.png"
-expect orphan-sweep-golden 1 '05-full-phong\.sweep\.png \(05-full-phong\.json has no "sweep"\)' -- \
+touch "$tmp/orphans/12-blinn-phong.sweep.png"
+expect orphan-sweep-golden 1 '12-blinn-phong\.sweep\.png \(12-blinn-phong\.json has no "sweep"\)' -- \
     cmake -DGOLDEN="$tmp/orphans" -DPRESETS="$src/presets" -P "$src/tests/check_goldens.cmake"
-rm "$tmp/orphans/05-full-phong.sweep.png"
+rm "$tmp/orphans/12-blinn-phong.sweep.png"
 touch "$tmp/orphans/05-full-phong.plot.csv" "$tmp/orphans/05-full-phong.png"
 expect goldens-with-presets 0 '2 goldens, each with its preset' -- \
     cmake -DGOLDEN="$tmp/orphans" -DPRESETS="$src/presets" -P "$src/tests/check_goldens.cmake"
@@ -333,11 +337,11 @@ expect goldens-with-presets 0 '2 goldens, each with its preset' -- \
 # Report files that could not be written are refused first; nothing is written.
 rm -rf "$tmp/r-none"
 expect check-junit-no-folder 2 '^lab check: --junit .*/none/j\.xml: no such folder' -- \
-    "$lab" check "$phong" --golden "$g" --report "$tmp/r-none" --junit "$tmp/none/j.xml"
+    "$lab" check "$cphong" --golden "$g" --report "$tmp/r-none" --junit "$tmp/none/j.xml"
 check check-junit-nothing-written test ! -e "$tmp/r-none"
-expect check-html-is-folder 2 '^lab check: --html .*: is a folder' -- "$lab" check "$phong" --golden "$g" --html "$tmp"
+expect check-html-is-folder 2 '^lab check: --html .*: is a folder' -- "$lab" check "$cphong" --golden "$g" --html "$tmp"
 expect check-html-same-as-junit 2 '^lab check: --html .*x\.xml: --junit writes that file too' -- \
-    "$lab" check "$phong" --golden "$g" --junit "$tmp/x.xml" --html "$tmp/x.xml"
+    "$lab" check "$cphong" --golden "$g" --junit "$tmp/x.xml" --html "$tmp/x.xml"
 check check-same-file-nothing-written test ! -e "$tmp/x.xml"
 
 echo "$passed passed, $failed failed"

@@ -70,7 +70,7 @@ verify() {
     local dir=$1 status=0
     local have want
     have=$(cd "$dir" && ls *.json 2>/dev/null | sed 's/\.json$//' | sort)
-    want=$(cd "$src/tests/golden" && ls *.png | sed 's/\.png$//' | sort)
+    want=$(cd "$src/tests/golden" && ls *.png | sed 's/\.png$//' | grep -v '\.' | sort) # renders, not <name>.sweep.png
     if [[ "$have" != "$want" ]]; then
         echo "     installed presets and goldens differ:"; diff <(echo "$want") <(echo "$have") | sed 's/^/       /'
         return 1
