@@ -61,9 +61,11 @@ TEST(PlotGolden, OneValuePastTheToleranceFailsNamingItsLineAndColumn) {
 }
 
 TEST(CheckReport, NamesAreEscapedForXmlAndUrls) {
-    EXPECT_EQ(xmlEscaped(R"(<a & "b" 'c'>)"), "&lt;a &amp; &quot;b&quot; &#39;c&#39;&gt;");
+    EXPECT_EQ(xmlEscaped(R"(<a & "b" 'c'>)"), "&lt;a &amp; &quot;b&quot; &apos;c&apos;&gt;");
     EXPECT_EQ(xmlEscaped("bell\x07 and \xff"), "bell\\x07 and \\xFF"); // XML 1.0 forbids C0 controls; invalid UTF-8
     EXPECT_EQ(xmlEscaped("caf\xc3\xa9"), "caf\xc3\xa9");               // valid UTF-8 stays
+    EXPECT_EQ(xmlEscaped("two\nlines", false), "two\nlines");          // a failure's details keep their lines
+    EXPECT_EQ(xmlEscaped("two\nlines"), "two\\nlines");
     EXPECT_EQ(urlEncoded("a b&c<\"d\".png"), "a%20b%26c%3C%22d%22.png");
     EXPECT_EQ(urlEncoded("05-full_phong.~x.png"), "05-full_phong.~x.png");
 }

@@ -8,7 +8,7 @@
 
 #include "cli/check_report.h"
 #include "cli/csv_compare.h"
-#include "cli/gpu.h"
+#include "cli/command_kit.h"
 #include "cli/output.h"
 #include "core/file_io.h"
 #include "core/plot.h"
@@ -402,19 +402,6 @@ private:
     Gpu& gpu_;
     const CheckOptions& options_;
 };
-
-// Loads every preset, reporting all problems; nullopt entries for those that failed.
-std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<fs::path>& files) {
-    std::vector<std::optional<LoadedPreset>> loaded;
-    for (const fs::path& f : files) {
-        Diagnostics diagnostics;
-        loaded.push_back(loadPreset(f, diagnostics));
-        if (!loaded.back()) {
-            printDiagnostics(diagnostics);
-        }
-    }
-    return loaded;
-}
 
 // Everything that could stop the report being written, before anything renders or is written.
 bool usable(const CheckOptions& options) {

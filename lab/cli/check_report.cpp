@@ -70,22 +70,6 @@ std::string checkLine(const CheckCase& c, const std::string& reportFolder) {
     return line + files;
 }
 
-std::string xmlEscaped(std::string_view text) {
-    std::string safe = printable(text), out; // line feeds and tabs are kept: XML allows them
-    out.reserve(safe.size());
-    for (char ch : safe) {
-        switch (ch) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&#39;"; break;
-        default: out += ch;
-        }
-    }
-    return out;
-}
-
 std::string urlEncoded(std::string_view name) {
     static constexpr char kHex[] = "0123456789ABCDEF";
     std::string out;
@@ -272,7 +256,7 @@ std::string checkJunit(const std::vector<CheckCase>& cases, double seconds) {
         }
         const char* element = c.verdict == CheckCase::Verdict::Error ? "error" : "failure";
         out += ">\n      <" + std::string(element) + " type=\"" + toString(c.verdict) + "\" message=\"" + xmlEscaped(what) +
-               "\">" + xmlEscaped(detail) + "</" + element + ">\n    </testcase>\n";
+               "\">" + xmlEscaped(detail, false) + "</" + element + ">\n    </testcase>\n";
     }
     return out + "  </testsuite>\n</testsuites>\n";
 }

@@ -6,7 +6,10 @@
 // only formats: it renders nothing, compares nothing and writes no files (check.cpp does).
 #pragma once
 
+#include "core/safe_text.h" // xmlEscaped
+
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lab {
@@ -56,10 +59,6 @@ std::string checkHtml(const std::vector<CheckCase>& cases, const CheckRun& run, 
 // case's name, file the preset), <failure> for a differing or missing golden, <error> for a case
 // that could not be compared. Valid XML 1.0 whatever the names hold.
 std::string checkJunit(const std::vector<CheckCase>& cases, double seconds);
-
-// `text` escaped for XML and HTML text and attribute values: & < > " ', characters XML 1.0
-// forbids (C0 controls but tab, LF, CR) and invalid UTF-8 shown as \xNN.
-std::string xmlEscaped(std::string_view text);
 
 // `name` as a relative URL path segment: every byte but [A-Za-z0-9._~-] percent-encoded.
 std::string urlEncoded(std::string_view name);

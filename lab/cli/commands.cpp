@@ -1,6 +1,7 @@
-// commands.cpp — render, plot, check and the preview fallback.
+// commands.cpp — render, plot and the preview fallback (check: check.cpp), and command_kit.h.
 #include "cli/commands.h"
 
+#include "cli/command_kit.h"
 #include "cli/output.h"
 #include "core/energy.h"
 #include "core/file_io.h"
@@ -9,7 +10,6 @@
 #include "core/plot.h"
 #include "core/preset.h"
 #include "core/safe_text.h"
-#include "cli/gpu.h"
 
 #include <algorithm>
 #include <charconv>
@@ -23,20 +23,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Loads every preset, reporting all problems; nullopt entries for those that failed.
-std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<fs::path>& files, bool& anyBad) {
-    std::vector<std::optional<LoadedPreset>> loaded;
-    for (const fs::path& f : files) {
-        Diagnostics diagnostics;
-        loaded.push_back(loadPreset(f, diagnostics));
-        if (!loaded.back()) {
-            printDiagnostics(diagnostics);
-            anyBad = true;
-        }
-    }
-    return loaded;
-}
-
 void printNotes(const fs::path& preset, const std::vector<std::string>& notes) {
     for (const std::string& n : notes) {
         print(stderr, preset.string() + ": note: " + n + "\n");
@@ -47,6 +33,21 @@ void printNotes(const fs::path& preset, const std::vector<std::string>& notes) {
 
 void printDiagnostics(const Diagnostics& diagnostics) {
     print(stderr, toString(diagnostics));
+}
+
+std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<fs::path>& files, bool* anyBad) {
+    std::vector<std::optional<LoadedPreset>> loaded;
+    for (const fs::path& f : files) {
+        Diagnostics diagnostics;
+        loaded.push_back(loadPreset(f, diagnostics));
+        if (!loaded.back()) {
+            printDiagnostics(diagnostics);
+            if (anyBad) {
+                *anyBad = true;
+            }
+        }
+    }
+    return loaded;
 }
 
 bool frameForCells(LoadedPreset& preset, Size cell, Diagnostics& diagnostics) {
@@ -117,7 +118,7 @@ std::optional<Size> parseSize(const std::string& text, std::string& error) {
 
 int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size size) {
     bool anyBad = false;
-    auto loaded = loadAll(presets, anyBad);
+    auto loaded = loadAll(presets, &anyBad);
     bool toFolder = presets.size() > 1;
     if (toFolder) {
         std::error_code ec;

@@ -24,22 +24,8 @@ std::string colour(FigureColor c) {
     return text;
 }
 
-// Character data and attribute values: the five XML specials escaped, and before that every
-// control character and invalid byte made a visible escape (printable), which XML 1.0 needs.
-std::string xml(std::string_view text) {
-    std::string out;
-    for (char c : printable(text, true)) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&apos;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
+// Character data and attribute values, one line each (core/safe_text.h).
+std::string xml(std::string_view text) { return xmlEscaped(text, true); }
 
 std::string points(const std::vector<glm::vec2>& ps) {
     std::string out;

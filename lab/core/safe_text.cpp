@@ -110,4 +110,19 @@ std::string shortened(std::string_view text, std::size_t maxBytes) {
     return std::string(cutAt(text, maxBytes)) + "\u2026 (" + std::to_string(text.size()) + " bytes)";
 }
 
+std::string xmlEscaped(std::string_view text, bool oneLine) {
+    std::string out;
+    for (char c : printable(text, oneLine)) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        case '\'': out += "&apos;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
 } // namespace lab

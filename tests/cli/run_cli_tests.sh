@@ -270,7 +270,7 @@ assert len(links.files) >= 6, links.files
 for f in links.files:
     path = os.path.join(os.path.dirname(page), urllib.parse.unquote(f))
     assert os.path.isfile(path), path
-assert "a&lt;b &amp; &quot;c&quot; &#39;d&#39;" in text and "a<b" not in text
+assert "a&lt;b &amp; &quot;c&quot; &apos;d&apos;" in text and "a<b" not in text
 assert text.index("05-full-phong.golden.png") < text.index("a&lt;b")  # failures first
 '
 check check-html-in-report python3 -c "$html_py" "$r/index.html"

@@ -1,5 +1,6 @@
-// gpu.h — the headless GL context and renderer the commands draw with, made on first use, and
-// the one way a preset's sweep grid is rendered (`lab render --sweep` and `lab check`).
+// command_kit.h — what the headless commands share (commands.cpp, check.cpp): the GL context and
+// renderer they draw with, presets loaded with their messages on stderr, and the one way a
+// preset's sweep grid is rendered (`lab render --sweep` and `lab check`).
 #pragma once
 
 #include "cli/commands.h"
@@ -8,6 +9,7 @@
 #include "platform/headless_gl.h"
 #include "render/offscreen.h"
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +26,10 @@ struct Gpu {
 
 // Every diagnostic, one a line, on stderr.
 void printDiagnostics(const Diagnostics& diagnostics);
+
+// Loads every preset, printing all problems; nullopt entries for those that failed (and then
+// `anyBad`, when given, is set).
+std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<std::filesystem::path>& files, bool* anyBad = nullptr);
 
 // A glTF preset without a camera or lights in its file framed for cells of `cell`'s shape, as
 // `lab render` frames it (core/model_loader.h frameOmitted); false when its model does not load.
