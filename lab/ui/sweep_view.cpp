@@ -22,6 +22,22 @@ std::vector<std::string> sweepArguments(const SweepViewState& s) {
     return arguments;
 }
 
+void followPresetSweep(SweepViewState& s, const Preset& preset) {
+    if (preset.sweep == s.fromPreset) {
+        return;
+    }
+    s.fromPreset = preset.sweep;
+    if (preset.sweep.empty()) {
+        return; // a preset without one leaves the window's choices as they were
+    }
+    for (std::size_t i = 0; i < 2; ++i) {
+        std::string_view axis = i < preset.sweep.size() ? std::string_view(preset.sweep[i]) : std::string_view();
+        std::size_t equals = axis.find('='); // the reader checked there is one
+        s.key[i] = equals == std::string_view::npos ? std::string() : std::string(axis.substr(0, equals));
+        s.values[i] = equals == std::string_view::npos ? std::string() : std::string(axis.substr(equals + 1));
+    }
+}
+
 namespace {
 
 // One axis: its key typed, or picked from the suggestions beside it (the second may be none), and
@@ -70,6 +86,7 @@ void axisRow(SweepViewState& s, int i, const std::vector<SweepKeySuggestion>& ke
 } // namespace
 
 void sweepWindow(SweepViewState& s, const Preset& preset, std::vector<Request>& requests) {
+    followPresetSweep(s, preset);
     s.editing = false;
     if (!s.open) {
         return;

@@ -25,6 +25,7 @@ struct SweepViewState {
     std::string values[2] = {"10,20,30,50", "0.2,0.5,1"};
     int cellSize = 256;
     bool editing = false; // a key or values field has the keyboard: the grid waits for Enter or a click away
+    std::vector<std::string> fromPreset; // the preset's own `sweep` last shown (followPresetSweep)
     // From the app: the grid to show (0: none yet) and its size, or why there is none.
     unsigned texture = 0;
     int textureWidth = 0, textureHeight = 0;
@@ -34,7 +35,12 @@ struct SweepViewState {
 // The "KEY=V1,..." arguments of the current choices, as `lab render --sweep` takes them.
 std::vector<std::string> sweepArguments(const SweepViewState& state);
 
-// The window (when open): each key typed, or picked from those offered for `preset` (core/sweep.h
+// A preset that carries its own `sweep` (the one `lab check` compares) shows it: when the preset's
+// sweep differs from the one last shown, its keys and values become the window's choices. Edits in
+// the window stay the window's (they do not change the preset).
+void followPresetSweep(SweepViewState& state, const Preset& preset);
+
+// The window (when open; it follows the preset's sweep first, open or not): each key typed, or picked from those offered for `preset` (core/sweep.h
 // sweepKeySuggestions, each with a range to start from), and its values typed.
 void sweepWindow(SweepViewState& state, const Preset& preset, std::vector<Request>& requests);
 
