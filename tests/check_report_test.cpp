@@ -66,6 +66,7 @@ TEST(CheckReport, NamesAreEscapedForXmlAndUrls) {
     EXPECT_EQ(xmlEscaped("caf\xc3\xa9"), "caf\xc3\xa9");               // valid UTF-8 stays
     EXPECT_EQ(xmlEscaped("two\nlines", false), "two\nlines");          // a failure's details keep their lines
     EXPECT_EQ(xmlEscaped("two\nlines"), "two\\nlines");
+    EXPECT_EQ(xmlEscaped("a\xEF\xBF\xBF b\xEF\xBF\xBE c\xEF\xBF\xBD"), "a\\uFFFF b\\uFFFE c\xEF\xBF\xBD"); // not XML; U+FFFD is
     EXPECT_EQ(urlEncoded("a b&c<\"d\".png"), "a%20b%26c%3C%22d%22.png");
     EXPECT_EQ(urlEncoded("05-full_phong.~x.png"), "05-full_phong.~x.png");
 }

@@ -160,11 +160,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{R"("sweep": ["a=1", "b=2", "c=3"])", "sweep", "expected an array of 1 or 2 strings"},
         BadCase{R"("sweep": [5])", "sweep[0]", "expected a string KEY=V1,V2,..."},
         BadCase{R"("sweep": ["material.shininess"])", "sweep[0]", "expected KEY=V1,V2,..."},
-        BadCase{R"("sweep": ["material.shininess=10,,20"])", "sweep[0]", "value 2 is empty"},
-        BadCase{R"("sweep": ["material.shininess=10,-3"])", "sweep", "material.shininess=-3: must be in [0.001, 1000000]"},
-        BadCase{R"("sweep": ["material.shinines=10"])", "sweep", "did you mean \"material.shininess\""},
-        BadCase{R"("sweep": ["check.max_mean=1,2"])", "sweep", "not a key a sweep varies"},
-        BadCase{R"("sweep": ["brdf=phong", "brdf=blinn-phong"])", "sweep", "the same key twice"}));
+        BadCase{R"("sweep": ["material.shininess=10,,20"])", "sweep[0]", "value 2 is empty"}));
 
 TEST(Preset, EveryProblemOfAFileIsReported) {
     Diagnostics d;
@@ -274,6 +270,18 @@ TEST(Preset, CheckAndSweepAreWrittenOnlyWhenGiven) {
     ASSERT_TRUE(back) << toString(d);
     EXPECT_EQ(back->check.plotTolerance, 1e-4f);
     EXPECT_FALSE(back->check.pixelTolerance);
+}
+
+TEST(Preset, ASweepThatNoLongerFitsStillSavesAndLoads) {
+    // A sweep naming the second light, then the light removed (as the panel does): the preset
+    // round-trips as it is; lab check and the sweep window say what is wrong with the sweep.
+    Diagnostics d;
+    std::optional<Preset> p = parse(R"("lights": [{}, {}], "sweep": ["lights[1].diffuse=0.2,0.5"])", d);
+    ASSERT_TRUE(p) << toString(d);
+    p->lights.pop_back();
+    std::optional<Preset> back = parsePreset(presetToJson(*p), "saved.json", std::nullopt, d);
+    ASSERT_TRUE(back) << toString(d);
+    EXPECT_EQ(*back, *p);
 }
 
 TEST(Preset, SweepValuesAreKeptAsTyped) {

@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <map>
 
 namespace lab {
 
@@ -90,14 +91,25 @@ Image crop(const Image& image, int x, int y, int width, int height) {
     return out;
 }
 
+// Whether `a` and `b` name one file: the same path once made absolute, or one file reached by two
+// paths (a link).
+bool sameFile(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    return fs::absolute(a, ec).lexically_normal() == fs::absolute(b, ec).lexically_normal() || fs::equivalent(a, b, ec);
+}
+
 // A file `lab check` will write at the end (--junit, --html): refused now, before anything
 // renders, when it could not be written then. "" when it can.
-std::string unwritable(const fs::path& file) {
+// `comingFolder` is a folder that is made before the file is written (the report folder).
+std::string unwritable(const fs::path& file, const std::optional<fs::path>& comingFolder) {
     std::error_code ec;
     if (fs::is_directory(file, ec)) {
         return "is a folder";
     }
     fs::path parent = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    if (comingFolder && sameFile(parent, *comingFolder)) {
+        return ""; // checked as the report folder itself
+    }
     if (!fs::is_directory(parent, ec)) {
         return "no such folder " + parent.string();
     }
@@ -108,10 +120,11 @@ std::string unwritable(const fs::path& file) {
 }
 
 // `folder` as seen from `from` (both folders), each part URL-encoded, with a trailing '/'; "" when
-// they are the same.
+// they are the same. Lexical, as a browser resolves a relative link from the path the page was
+// opened by (a folder reached through a symbolic link included).
 std::string linkPrefix(const fs::path& from, const fs::path& folder) {
     std::error_code ec;
-    fs::path a = fs::weakly_canonical(fs::absolute(from, ec), ec), b = fs::weakly_canonical(fs::absolute(folder, ec), ec);
+    fs::path a = fs::absolute(from, ec).lexically_normal(), b = fs::absolute(folder, ec).lexically_normal();
     fs::path relative = b.lexically_relative(a);
     if (relative.empty() || relative == ".") {
         return relative.empty() && a != b ? b.generic_string() + "/" : "";
@@ -165,6 +178,15 @@ private:
         return c;
     }
 
+    // A case that cannot be compared for its input (a golden that does not read, a sweep the preset
+    // refuses): an error line, the message on stderr too, and exit status 2.
+    void badInputCase(CheckCase& c, std::string message) {
+        c.verdict = CheckCase::Verdict::Error;
+        c.message = std::move(message);
+        print(stderr, "lab check: " + c.presetFile + ": " + c.message + "\n");
+        badInput = true;
+    }
+
     void finish(CheckCase& c, std::chrono::steady_clock::time_point began) {
         c.seconds = secondsSince(began);
         print(stdout, checkLine(c, options_.report.string()) + "\n");
@@ -200,9 +222,7 @@ private:
         std::string error;
         golden = readPng(file, error);
         if (!golden && !options_.update) {
-            c.verdict = CheckCase::Verdict::Error;
-            c.message = "golden " + file.string() + ": " + error;
-            badInput = true;
+            badInputCase(c, "golden " + file.string() + ": " + error);
             return false;
         }
         return true;
@@ -297,10 +317,13 @@ private:
         }
         fs::path goldenFile = options_.golden / (whole + ".png");
         std::optional<Image> golden;
-        if (!grid) {
+        if (!grid && renderFailed) {
             c.verdict = CheckCase::Verdict::Error;
             c.message = "sweep: " + error;
-            badInput = badInput || !renderFailed;
+        } else if (!grid) { // a key or value the preset refuses (the JSON path "sweep")
+            badInputCase(c, "sweep: " + error);
+        }
+        if (!grid) {
             finish(c, began);
             return;
         }
@@ -358,9 +381,7 @@ private:
         if (fs::exists(goldenFile, ec)) {
             goldenText = readFile(goldenFile, kMaxGoldenCsvBytes, error);
             if (!goldenText && !options_.update) {
-                c.verdict = CheckCase::Verdict::Error;
-                c.message = "golden " + goldenFile.string() + ": " + error;
-                badInput = true;
+                badInputCase(c, "golden " + goldenFile.string() + ": " + error);
                 finish(c, began);
                 return;
             }
@@ -380,9 +401,7 @@ private:
             c.message = "no golden " + goldenFile.string() + " (create it with --update --plots)";
             c.actual = reportText(stem + ".plot.actual.csv", text, c);
         } else if (!golden) {
-            c.verdict = CheckCase::Verdict::Error;
-            c.message = "golden " + goldenFile.string() + " is not a CSV of numbers: " + error;
-            badInput = true;
+            badInputCase(c, "golden " + goldenFile.string() + " is not a CSV of numbers: " + error);
         } else {
             std::string parseError;
             CsvComparison cmp = compareCsv(*parseNumberCsv(text, parseError), *golden, tolerances.plot);
@@ -406,19 +425,22 @@ private:
 // Everything that could stop the report being written, before anything renders or is written.
 bool usable(const CheckOptions& options) {
     std::vector<std::pair<const char*, fs::path>> files;
+    std::optional<fs::path> report;
     if (!options.update) {
+        report = options.report;
         files.push_back({"--report", options.report / "index.html"});
+        files.push_back({"--report", options.report / "report.txt"});
     }
     for (auto [flag, file] : {std::pair{"--junit", options.junit}, std::pair{"--html", options.html}}) {
         if (!file) {
             continue;
         }
-        if (std::string why = unwritable(*file); !why.empty()) {
+        if (std::string why = unwritable(*file, report); !why.empty()) {
             print(stderr, "lab check: %s %s: %s\n", flag, file->string().c_str(), why.c_str());
             return false;
         }
         for (const auto& [other, seen] : files) {
-            if (fs::absolute(*file).lexically_normal() == fs::absolute(seen).lexically_normal()) {
+            if (sameFile(*file, seen)) {
                 print(stderr, "lab check: %s %s: %s writes that file too\n", flag, file->string().c_str(), other);
                 return false;
             }
@@ -443,6 +465,32 @@ bool usable(const CheckOptions& options) {
                               (ec ? ec.message() : "it is a file") + ")\n");
             return false;
         }
+        if (::access(folder->c_str(), W_OK) != 0) { // found now, not after every render
+            print(stderr, "lab check: %s %s: cannot write in it: %s\n", flag, folder->string().c_str(), std::strerror(errno));
+            return false;
+        }
+    }
+    return true;
+}
+
+// Goldens are named after the preset's file: two presets of one name in a run would share theirs,
+// and a preset named like another's sweep or plot golden (x.sweep.json) would share that.
+bool namesDistinct(const std::vector<fs::path>& presets) {
+    std::map<std::string, fs::path> names;
+    for (const fs::path& p : presets) {
+        std::string stem = p.stem().string();
+        std::string last = fs::path(stem).extension().string();
+        if (last == ".sweep" || last == ".plot") {
+            print(stderr, "lab check: %s: a preset named *%s.json would share its golden with another preset's %s "
+                          "golden; rename it\n", p.string().c_str(), last.c_str(), last.c_str() + 1);
+            return false;
+        }
+        auto [it, fresh] = names.emplace(stem, p);
+        if (!fresh && !sameFile(it->second, p)) {
+            print(stderr, "lab check: %s and %s would both be checked against %s.png\n", it->second.string().c_str(),
+                  p.string().c_str(), stem.c_str());
+            return false;
+        }
     }
     return true;
 }
@@ -450,7 +498,7 @@ bool usable(const CheckOptions& options) {
 } // namespace
 
 int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) {
-    if (!usable(options)) {
+    if (!namesDistinct(presets) || !usable(options)) {
         return kExitBadInput;
     }
     auto began = std::chrono::steady_clock::now();

@@ -111,8 +111,16 @@ std::string shortened(std::string_view text, std::size_t maxBytes) {
 }
 
 std::string xmlEscaped(std::string_view text, bool oneLine) {
+    const std::string safe = printable(text, oneLine);
     std::string out;
-    for (char c : printable(text, oneLine)) {
+    for (std::size_t i = 0; i < safe.size(); ++i) {
+        const char c = safe[i];
+        // U+FFFE and U+FFFF (EF BF BE, EF BF BF) are valid UTF-8 but no XML 1.0 character.
+        if (c == '\xEF' && i + 2 < safe.size() && safe[i + 1] == '\xBF' && (safe[i + 2] == '\xBE' || safe[i + 2] == '\xBF')) {
+            out += safe[i + 2] == '\xBE' ? "\\uFFFE" : "\\uFFFF";
+            i += 2;
+            continue;
+        }
         switch (c) {
         case '&': out += "&amp;"; break;
         case '<': out += "&lt;"; break;

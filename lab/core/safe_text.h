@@ -35,8 +35,8 @@ std::string shortened(std::string_view text, std::size_t maxBytes = 1000);
 std::string keyInPath(std::string_view key, std::size_t maxBytes = 60);
 
 // `text` for XML (and HTML) character data and attribute values: printable(text, oneLine) first —
-// XML 1.0 allows no control character but tab and line feed, even escaped — then & < > " '
-// as entities. The SVG figures and lab check's reports (JUnit XML, the HTML page) write it.
+// XML 1.0 allows no control character but tab and line feed, even escaped — then U+FFFE and
+// U+FFFF (no XML characters either) as \uFFFE, \uFFFF, and & < > " ' as entities. The SVG figures and lab check's reports (JUnit XML, the HTML page) write it.
 std::string xmlEscaped(std::string_view text, bool oneLine = true);
 
 // True when `text` holds a NUL byte (paths and keys with one are refused as such).

@@ -268,7 +268,8 @@ class Links(HTMLParser):
 links = Links(); text = open(page).read(); links.feed(text)
 assert len(links.files) >= 6, links.files
 for f in links.files:
-    path = os.path.join(os.path.dirname(page), urllib.parse.unquote(f))
+    # resolved as a browser resolves a relative link: lexically, from the path the page was opened by
+    path = os.path.normpath(os.path.join(os.path.dirname(page), urllib.parse.unquote(f)))
     assert os.path.isfile(path), path
 assert "a&lt;b &amp; &quot;c&quot; &apos;d&apos;" in text and "a<b" not in text
 assert text.index("05-full-phong.golden.png") < text.index("a&lt;b")  # failures first
@@ -322,7 +323,30 @@ check check-sweep-cell-images test -f "$r/sw.sweep.r0c2.actual.png" -a -f "$r/sw
 check check-sweep-cell-size test "$(png_size "$r/sw.sweep.r0c2.actual.png")" = "48 48"
 edit "$cphong" "$tmp/sw.json" 'p["sweep"] = ["material.shinines=8"]'
 expect check-sweep-bad-key 2 'sw\.json: sweep: material\.shinines: unknown key \(did you mean "material\.shininess"\?\)' -- \
-    "$lab" check "$tmp/sw.json" --golden "$g" --report "$r"
+    "$lab" check "$tmp/sw.json" --golden "$g" --report "$r" --size 64x64
+check check-sweep-bad-key-is-an-error-case grep -q '^ERROR  *sw\.sweep: sweep: material\.shinines' "$r/report.txt"
+
+# The README's CI line: --junit inside a report folder that does not exist yet.
+rm -rf "$tmp/r-new"
+expect check-junit-in-new-report 1 '^1 passed, 1 failed$' -- \
+    "$lab" check "$cphong" --golden "$g" --report "$tmp/r-new" --junit "$tmp/r-new/junit.xml" --size 64x64
+check check-junit-in-new-report-written test -s "$tmp/r-new/junit.xml" -a -s "$tmp/r-new/index.html"
+# --html in a folder reached through a symbolic link: its links are relative to the path as opened.
+mkdir -p "$tmp/real/a/b"
+ln -s "$tmp/real/a/b" "$tmp/link"
+"$lab" render "$src/presets/01-ambient-only.json" --out "$g/05-full-phong.png" --size 64x64 >/dev/null
+"$lab" check "$cphong" "$weird" --golden "$g" --report "$tmp/r-link" --html "$tmp/link/p.html" --size 64x64 >/dev/null 2>&1
+check check-html-through-a-link python3 -c "$html_py" "$tmp/link/p.html"
+"$lab" check "$cphong" --golden "$g" --update --size 64x64 >/dev/null
+expect check-junit-is-report-txt 2 '^lab check: --junit .*report\.txt: --report writes that file too' -- \
+    "$lab" check "$cphong" --golden "$g" --report "$r" --junit "$r/report.txt"
+mkdir -p "$tmp/dup"
+cp "$cphong" "$tmp/dup/05-full-phong.json"
+expect check-two-presets-one-name 2 'would both be checked against 05-full-phong\.png' -- \
+    "$lab" check "$cphong" "$tmp/dup/05-full-phong.json" --golden "$g" --report "$r"
+cp "$cphong" "$tmp/dup/x.sweep.json"
+expect check-preset-named-like-a-sweep-golden 2 'x\.sweep\.json: a preset named \*\.sweep\.json would share its golden' -- \
+    "$lab" check "$tmp/dup/x.sweep.json" --golden "$g" --report "$r"
 
 # The orphan-golden check knows every golden name.
 mkdir -p "$tmp/orphans"
@@ -332,6 +356,9 @@ expect orphan-sweep-golden 1 '12-blinn-phong\.sweep\.png \(12-blinn-phong\.json 
 rm "$tmp/orphans/12-blinn-phong.sweep.png"
 touch "$tmp/orphans/05-full-phong.plot.csv" "$tmp/orphans/05-full-phong.png"
 expect goldens-with-presets 0 '2 goldens, each with its preset' -- \
+    cmake -DGOLDEN="$tmp/orphans" -DPRESETS="$src/presets" -P "$src/tests/check_goldens.cmake"
+touch "$tmp/orphans/off.png" "$tmp/orphans/no.plot.csv" # names CMake reads as false
+expect orphans-named-false 1 'off\.png \(no preset off\.json\)' -- \
     cmake -DGOLDEN="$tmp/orphans" -DPRESETS="$src/presets" -P "$src/tests/check_goldens.cmake"
 
 # Report files that could not be written are refused first; nothing is written.
