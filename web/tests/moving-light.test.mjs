@@ -31,8 +31,9 @@ test('moving light: the orbiting preset moves its highlight over time, and its s
   await frames(page, 2);
   const framesAfter = await drawn();
   const second = PNG.sync.read(await page.screenshot({ clip }));
-  // The page keeps drawing by itself (60 a second asked for; SwiftShader may manage fewer)...
-  assert.ok(framesAfter - framesBefore >= 10, `frames drawn in 1 s of orbit: ${framesAfter - framesBefore}`);
+  // The page keeps drawing by itself (60 a second asked for; SwiftShader may manage fewer, and a
+  // loaded machine far fewer: 8 with a build beside it, so how many is the benchmark's question)...
+  assert.ok(framesAfter - framesBefore >= 3, `frames drawn in 1 s of orbit: ${framesAfter - framesBefore}`);
   // ... and what it draws changes: the highlight has moved.
   const moved = compare(first, second, { pixel: 8 });
   assert.ok(moved.failingShare > 0.002, `the view should change as the light orbits: ${JSON.stringify(moved)}`);
