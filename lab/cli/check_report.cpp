@@ -244,11 +244,13 @@ std::string checkJunit(const std::vector<CheckCase>& cases, double seconds) {
             out += "/>\n";
             continue;
         }
-        std::string what = c.verdict == CheckCase::Verdict::Missing ? "no golden: " + c.message
-                           : c.message.empty()                      ? c.figures
-                                                                    : c.message;
+        std::string what = c.message.empty() ? c.figures : c.message; // a missing golden's says "no golden ..."
         std::string detail = what + (c.figures.empty() || what == c.figures ? "" : "\n" + c.figures) +
                              (c.tolerance.empty() ? "" : "\ntolerance: " + c.tolerance);
+        // The figures and the tolerance in the message too: some test views show only the message.
+        if (c.verdict == CheckCase::Verdict::Fail && !c.tolerance.empty()) {
+            what += " (tolerance: " + c.tolerance + ")";
+        }
         for (const std::string* f : {&c.golden, &c.actual, &c.diff}) {
             if (!f->empty()) {
                 detail += "\n" + *f;

@@ -251,7 +251,8 @@ assert names == ["05-full-phong", "05-full-phong.plot", "a<b & \"c\" \x27d\x27",
 failed = [c for c in cases if c.find("failure") is not None]
 assert [c.get("name") for c in failed] == ["05-full-phong"], [c.get("name") for c in failed]
 failure = failed[0].find("failure")
-assert "over tolerance" in failure.get("message") and "max_mean 0.5 [command line]" in failure.text, failure.text
+assert "over tolerance" in failure.get("message") and "max_mean 0.5 [command line]" in failure.get("message"), failure.get("message")
+assert "max_mean 0.5 [command line]" in failure.text, failure.text
 '
 check check-junit-parses python3 -c "$junit_py" "$tmp/j.xml"
 # The pages: every image and link names a file that exists; the name is escaped, never raw.
