@@ -30,13 +30,13 @@ TEST(PlotGolden, TextThatIsNotACsvOfNumbersIsNamedByLineAndColumn) {
     struct Bad {
         std::string text, message;
     };
-    for (const Bad& b : {Bad{"", "empty"}, Bad{"a,b\n", "a header but no rows"}, Bad{"a,,b\n1,2,3\n", "empty column name"},
-                         Bad{"a,b\n1,2\n3\n", "line 3: 1 fields, the header has 2"},
-                         Bad{"a,b\n1,x\n", "line 2, column 2: \"x\" is not a number"},
-                         Bad{"a,b\n1,nan\n", "line 2, column 2: \"nan\" is not a number"},
-                         Bad{"a,b\n1, 2\n", "line 2, column 2: \" 2\" is not a number"},
-                         Bad{"a,b\n1,2\n\n3,4\n", "line 3 is empty"},
-                         Bad{std::string("\x89PNG\r\n\x1a\n\0\0", 10), "line 2"}}) {
+    for (const Bad& b :
+         {Bad{"", "empty"}, Bad{"a,b\n", "a header but no rows"}, Bad{"a,,b\n1,2,3\n", "empty column name"},
+          Bad{"a,b\n1,2\n3\n", "line 3: 1 fields, the header has 2"},
+          Bad{"a,b\n1,x\n", "line 2, column 2: \"x\" is not a number"},
+          Bad{"a,b\n1,nan\n", "line 2, column 2: \"nan\" is not a number"},
+          Bad{"a,b\n1, 2\n", "line 2, column 2: \" 2\" is not a number"}, Bad{"a,b\n1,2\n\n3,4\n", "line 3 is empty"},
+          Bad{std::string("\x89PNG\r\n\x1a\n\0\0", 10), "line 2"}}) {
         std::string error;
         EXPECT_FALSE(parseNumberCsv(b.text, error)) << b.text;
         EXPECT_NE(error.find(b.message), std::string::npos) << error;
@@ -66,7 +66,8 @@ TEST(CheckReport, NamesAreEscapedForXmlAndUrls) {
     EXPECT_EQ(xmlEscaped("caf\xc3\xa9"), "caf\xc3\xa9");               // valid UTF-8 stays
     EXPECT_EQ(xmlEscaped("two\nlines", false), "two\nlines");          // a failure's details keep their lines
     EXPECT_EQ(xmlEscaped("two\nlines"), "two\\nlines");
-    EXPECT_EQ(xmlEscaped("a\xEF\xBF\xBF b\xEF\xBF\xBE c\xEF\xBF\xBD"), "a\\uFFFF b\\uFFFE c\xEF\xBF\xBD"); // not XML; U+FFFD is
+    EXPECT_EQ(xmlEscaped("a\xEF\xBF\xBF b\xEF\xBF\xBE c\xEF\xBF\xBD"),
+              "a\\uFFFF b\\uFFFE c\xEF\xBF\xBD"); // not XML; U+FFFD is
     EXPECT_EQ(urlEncoded("a b&c<\"d\".png"), "a%20b%26c%3C%22d%22.png");
     EXPECT_EQ(urlEncoded("05-full_phong.~x.png"), "05-full_phong.~x.png");
 }

@@ -7,8 +7,8 @@
 #include "cli/commands.h"
 
 #include "cli/check_report.h"
-#include "cli/csv_compare.h"
 #include "cli/command_kit.h"
+#include "cli/csv_compare.h"
 #include "cli/output.h"
 #include "core/file_io.h"
 #include "core/plot.h"
@@ -31,12 +31,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kMaxGoldenCsvBytes = 16u << 20;
-
-std::string fixed(double v, int digits) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
 
 std::string shortNumber(double v) {
     char buf[64];
@@ -75,8 +69,8 @@ Tolerances tolerancesFor(const Preset& preset, const CheckOptions& options) {
 // "max M  mean X  over tolerance P%", or both sizes when they differ.
 std::string imageFigures(const Comparison& cmp, const Image& actual, const Image& golden) {
     if (cmp.sameSize) {
-        return "max " + std::to_string(cmp.maxDifference) + "  mean " + fixed(cmp.meanDifference, 3) + "  over tolerance " +
-               fixed(cmp.failingShare * 100.0, 3) + "%";
+        return "max " + std::to_string(cmp.maxDifference) + "  mean " + fixedDecimals(cmp.meanDifference, 3) +
+               "  over tolerance " + fixedDecimals(cmp.failingShare * 100.0, 3) + "%";
     }
     return "size " + std::to_string(actual.width) + "x" + std::to_string(actual.height) + " vs golden " +
            std::to_string(golden.width) + "x" + std::to_string(golden.height);
@@ -85,7 +79,8 @@ std::string imageFigures(const Comparison& cmp, const Image& actual, const Image
 Image crop(const Image& image, int x, int y, int width, int height) {
     Image out{width, height, std::vector<std::uint8_t>(std::size_t(width) * std::size_t(height) * 3)};
     for (int row = 0; row < height; ++row) {
-        const std::uint8_t* from = image.rgb.data() + (std::size_t(y + row) * std::size_t(image.width) + std::size_t(x)) * 3;
+        const std::uint8_t* from =
+            image.rgb.data() + (std::size_t(y + row) * std::size_t(image.width) + std::size_t(x)) * 3;
         std::copy(from, from + std::size_t(width) * 3, out.rgb.data() + std::size_t(row) * std::size_t(width) * 3);
     }
     return out;
@@ -141,7 +136,7 @@ std::string linkPrefix(const fs::path& from, const fs::path& folder) {
 //----------------------------------------------------------------------------------------
 
 class Checker {
-public:
+  public:
     Checker(Gpu& gpu, const CheckOptions& options) : gpu_(gpu), options_(options) {}
 
     std::vector<CheckCase> cases;
@@ -150,7 +145,7 @@ public:
     void preset(const fs::path& file, const std::optional<LoadedPreset>& loaded) {
         std::string stem = file.stem().string();
         if (!loaded) {
-            CheckCase c = start(CheckCase::Kind::Render, stem, stem, file);
+            CheckCase c = start(CheckCase::Kind::Render, stem, file);
             c.verdict = CheckCase::Verdict::Error;
             c.message = "the preset does not load (see above)";
             badInput = true;
@@ -168,11 +163,10 @@ public:
         }
     }
 
-private:
-    CheckCase start(CheckCase::Kind kind, const std::string& stem, const std::string& name, const fs::path& file) {
+  private:
+    CheckCase start(CheckCase::Kind kind, const std::string& name, const fs::path& file) {
         CheckCase c;
         c.kind = kind;
-        c.preset = stem;
         c.name = name;
         c.presetFile = file.string();
         return c;
@@ -195,21 +189,16 @@ private:
 
     // A file in the report folder; its name relative to the folder, or "" when it could not be
     // written (the case's message then says why).
-    std::string reportImage(const std::string& name, const Image& image, CheckCase& c) {
+    std::string reportFile(const std::string& name, std::string_view bytes, CheckCase& c) {
         std::string error;
-        if (writePng(image, options_.report / name, error, WriteSafety::Renewable)) {
-            return name;
-        }
-        c.message += (c.message.empty() ? "" : "; ") + std::string("could not write the report's images: ") + error;
-        return "";
-    }
-    std::string reportText(const std::string& name, const std::string& text, CheckCase& c) {
-        std::string error;
-        if (writeFileAtomic(options_.report / name, text, error, WriteSafety::Renewable)) {
+        if (writeFileAtomic(options_.report / name, bytes, error, WriteSafety::Renewable)) {
             return name;
         }
         c.message += (c.message.empty() ? "" : "; ") + std::string("could not write the report's files: ") + error;
         return "";
+    }
+    std::string reportImage(const std::string& name, const Image& image, CheckCase& c) {
+        return reportFile(name, encodePng(image), c);
     }
 
     // The golden image, if there is one; an unreadable one is an error case (bad input), except
@@ -248,7 +237,8 @@ private:
 
     // Compares `actual` with `golden`; on a failure the three images go to the report folder
     // under `files` (<files>.golden.png, .actual.png, .diff.png).
-    void compare(CheckCase& c, const Image& actual, const Image& golden, const Tolerance& tolerance, const std::string& files) {
+    void compare(CheckCase& c, const Image& actual, const Image& golden, const Tolerance& tolerance,
+                 const std::string& files) {
         Comparison cmp = compareImages(actual, golden, tolerance);
         c.figures = imageFigures(cmp, actual, golden);
         if (cmp.passes(tolerance)) {
@@ -273,10 +263,11 @@ private:
 
     void render(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances) {
         auto began = std::chrono::steady_clock::now();
-        CheckCase c = start(CheckCase::Kind::Render, stem, stem, preset.file);
+        CheckCase c = start(CheckCase::Kind::Render, stem, preset.file);
         c.tolerance = tolerances.imageText;
         Diagnostics diagnostics;
-        std::optional<Image> actual = gpu_.renderer.render(preset, options_.size.width, options_.size.height, diagnostics);
+        std::optional<Image> actual =
+            gpu_.renderer.render(preset, options_.size.width, options_.size.height, diagnostics);
         fs::path goldenFile = options_.golden / (stem + ".png");
         std::optional<Image> golden;
         if (!actual) {
@@ -299,7 +290,7 @@ private:
     void sweep(const LoadedPreset& base, const std::string& stem, const Tolerances& tolerances) {
         auto began = std::chrono::steady_clock::now();
         const std::string whole = stem + ".sweep";
-        CheckCase c = start(CheckCase::Kind::SweepCell, stem, whole, base.file);
+        CheckCase c = start(CheckCase::Kind::SweepCell, whole, base.file);
         c.tolerance = tolerances.imageText;
         std::vector<SweepAxis> axes;
         std::string error;
@@ -356,7 +347,7 @@ private:
                 if (axes.size() > 1) {
                     values += ", " + axes[1].key + "=" + axes[1].values[std::size_t(row)];
                 }
-                CheckCase cell = start(CheckCase::Kind::SweepCell, stem, whole + "[" + values + "]", base.file);
+                CheckCase cell = start(CheckCase::Kind::SweepCell, whole + "[" + values + "]", base.file);
                 cell.tolerance = tolerances.imageText;
                 int x = layout.cellX(column), y = layout.cellY(row);
                 compare(cell, crop(*grid, x, y, layout.cellWidth, layout.cellHeight),
@@ -371,7 +362,7 @@ private:
     // The lobe CSV `lab plot --out` writes, against <name>.plot.csv within the plot tolerance.
     void plot(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances) {
         auto began = std::chrono::steady_clock::now();
-        CheckCase c = start(CheckCase::Kind::Plot, stem, stem + ".plot", preset.file);
+        CheckCase c = start(CheckCase::Kind::Plot, stem + ".plot", preset.file);
         c.tolerance = tolerances.plotText;
         const std::string text = plotCsv(reflectedIntensity(preset.preset, preset.preset.plotIncidentDeg));
         fs::path goldenFile = options_.golden / (stem + ".plot.csv");
@@ -399,7 +390,7 @@ private:
         } else if (!goldenText) {
             c.verdict = CheckCase::Verdict::Missing;
             c.message = "no golden " + goldenFile.string() + " (create it with --update --plots)";
-            c.actual = reportText(stem + ".plot.actual.csv", text, c);
+            c.actual = reportFile(stem + ".plot.actual.csv", text, c);
         } else if (!golden) {
             badInputCase(c, "golden " + goldenFile.string() + " is not a CSV of numbers: " + error);
         } else {
@@ -411,8 +402,8 @@ private:
             } else {
                 c.verdict = CheckCase::Verdict::Fail;
                 c.message = cmp.firstDifference;
-                c.golden = reportText(stem + ".plot.golden.csv", *goldenText, c);
-                c.actual = reportText(stem + ".plot.actual.csv", text, c);
+                c.golden = reportFile(stem + ".plot.golden.csv", *goldenText, c);
+                c.actual = reportFile(stem + ".plot.actual.csv", text, c);
             }
         }
         finish(c, began);
@@ -454,19 +445,22 @@ bool usable(const CheckOptions& options) {
     }
     // Every folder check writes to must be one (a file in its place would fail each write later,
     // as a check failure instead of the bad argument it is).
-    for (const auto& [flag, folder] : {std::pair{"--golden", &options.golden}, std::pair{"--report", &options.report}}) {
+    for (const auto& [flag, folder] :
+         {std::pair{"--golden", &options.golden}, std::pair{"--report", &options.report}}) {
         if (options.update != (flag == std::string_view("--golden"))) {
             continue; // --update writes goldens only; a comparison writes the report only
         }
         fs::create_directories(*folder, ec);
-        std::error_code isFolder; // (the throwing form would end the program on a name too long or a folder not allowed)
+        std::error_code
+            isFolder; // (the throwing form would end the program on a name too long or a folder not allowed)
         if (!fs::is_directory(*folder, isFolder)) {
-            print(stderr, "lab check: " + std::string(flag) + " " + folder->string() + ": cannot be used as a folder (" +
-                              (ec ? ec.message() : "it is a file") + ")\n");
+            print(stderr, "lab check: " + std::string(flag) + " " + folder->string() +
+                              ": cannot be used as a folder (" + (ec ? ec.message() : "it is a file") + ")\n");
             return false;
         }
         if (::access(folder->c_str(), W_OK) != 0) { // found now, not after every render
-            print(stderr, "lab check: %s %s: cannot write in it: %s\n", flag, folder->string().c_str(), std::strerror(errno));
+            print(stderr, "lab check: %s %s: cannot write in it: %s\n", flag, folder->string().c_str(),
+                  std::strerror(errno));
             return false;
         }
     }
@@ -481,8 +475,10 @@ bool namesDistinct(const std::vector<fs::path>& presets) {
         std::string stem = p.stem().string();
         std::string last = fs::path(stem).extension().string();
         if (last == ".sweep" || last == ".plot") {
-            print(stderr, "lab check: %s: a preset named *%s.json would share its golden with another preset's %s "
-                          "golden; rename it\n", p.string().c_str(), last.c_str(), last.c_str() + 1);
+            print(stderr,
+                  "lab check: %s: a preset named *%s.json would share its golden with another preset's %s "
+                  "golden; rename it\n",
+                  p.string().c_str(), last.c_str(), last.c_str() + 1);
             return false;
         }
         auto [it, fresh] = names.emplace(stem, p);
@@ -513,13 +509,14 @@ int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) 
     }
     const std::vector<CheckCase>& cases = checker.cases;
     const auto failed = std::count_if(cases.begin(), cases.end(), [](const CheckCase& c) { return c.failed(); });
-    std::string summary = std::to_string(cases.size() - std::size_t(failed)) + " passed, " + std::to_string(failed) + " failed";
+    std::string summary =
+        std::to_string(cases.size() - std::size_t(failed)) + " passed, " + std::to_string(failed) + " failed";
     print(stdout, summary + "\n");
 
     // The report: written whole or not at all (each file atomically).
-    CheckRun run{options.golden.string(),
-                 std::to_string(options.size.width) + "x" + std::to_string(options.size.height),
-                 std::to_string(options.sweepSize.width) + "x" + std::to_string(options.sweepSize.height), options.update};
+    CheckRun run{
+        options.golden.string(), std::to_string(options.size.width) + "x" + std::to_string(options.size.height),
+        std::to_string(options.sweepSize.width) + "x" + std::to_string(options.sweepSize.height), options.update};
     bool written = true;
     auto write = [&](const char* flag, const fs::path& file, const std::string& text) {
         std::string error;

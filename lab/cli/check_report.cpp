@@ -10,36 +10,47 @@ namespace lab {
 
 namespace {
 
-std::string fixed(double v, int digits) {
+int count(const std::vector<CheckCase>& cases, bool failed) {
+    return static_cast<int>(
+        std::count_if(cases.begin(), cases.end(), [&](const CheckCase& c) { return c.failed() == failed; }));
+}
+
+} // namespace
+
+std::string fixedDecimals(double v, int digits) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
     return buf;
 }
 
-int count(const std::vector<CheckCase>& cases, bool failed) {
-    return static_cast<int>(std::count_if(cases.begin(), cases.end(), [&](const CheckCase& c) { return c.failed() == failed; }));
-}
-
-} // namespace
-
 const char* toString(CheckCase::Verdict verdict) {
     switch (verdict) {
-    case CheckCase::Verdict::Pass: return "PASS";
-    case CheckCase::Verdict::Fail: return "FAIL";
-    case CheckCase::Verdict::Missing: return "MISSING";
-    case CheckCase::Verdict::Error: return "ERROR";
-    case CheckCase::Verdict::Created: return "CREATED";
-    case CheckCase::Verdict::Updated: return "UPDATED";
-    case CheckCase::Verdict::Same: return "SAME";
+    case CheckCase::Verdict::Pass:
+        return "PASS";
+    case CheckCase::Verdict::Fail:
+        return "FAIL";
+    case CheckCase::Verdict::Missing:
+        return "MISSING";
+    case CheckCase::Verdict::Error:
+        return "ERROR";
+    case CheckCase::Verdict::Created:
+        return "CREATED";
+    case CheckCase::Verdict::Updated:
+        return "UPDATED";
+    case CheckCase::Verdict::Same:
+        return "SAME";
     }
     return "?";
 }
 
 const char* toString(CheckCase::Kind kind) {
     switch (kind) {
-    case CheckCase::Kind::Render: return "render";
-    case CheckCase::Kind::SweepCell: return "sweep";
-    case CheckCase::Kind::Plot: return "plot";
+    case CheckCase::Kind::Render:
+        return "render";
+    case CheckCase::Kind::SweepCell:
+        return "sweep";
+    case CheckCase::Kind::Plot:
+        return "plot";
     }
     return "?";
 }
@@ -58,7 +69,8 @@ std::string checkLine(const CheckCase& c, const std::string& reportFolder) {
     case CheckCase::Verdict::Missing:
     case CheckCase::Verdict::Error:
         return line + ": " + c.message;
-    case CheckCase::Verdict::Fail: break;
+    case CheckCase::Verdict::Fail:
+        break;
     }
     line += "  " + (c.message.empty() ? c.figures : c.message);
     std::string files;
@@ -74,8 +86,8 @@ std::string urlEncoded(std::string_view name) {
     static constexpr char kHex[] = "0123456789ABCDEF";
     std::string out;
     for (unsigned char ch : name) {
-        if ((ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '.' || ch == '_' ||
-            ch == '~' || ch == '-') {
+        if ((ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '.' ||
+            ch == '_' || ch == '~' || ch == '-') {
             out += static_cast<char>(ch);
         } else {
             out += '%';
@@ -140,10 +152,14 @@ std::string image(const std::string& prefix, const std::string& file, const std:
 
 std::string failureBlock(const CheckCase& c, const std::string& prefix, int index) {
     std::string verdict = toString(c.verdict);
-    std::string cls = c.verdict == CheckCase::Verdict::Missing ? " missing" : c.verdict == CheckCase::Verdict::Error ? " error" : "";
-    std::string out = "<section class=\"case" + cls + "\" id=\"case-" + std::to_string(index) + "\">\n<h2><span class=\"verdict " +
-                      verdict + "\">" + verdict + "</span> " + xmlEscaped(c.name) + "</h2>\n";
-    out += "<p class=\"numbers\"><span>" + std::string(toString(c.kind)) + " of " + xmlEscaped(c.presetFile) + "</span>";
+    std::string cls = c.verdict == CheckCase::Verdict::Missing ? " missing"
+                      : c.verdict == CheckCase::Verdict::Error ? " error"
+                                                               : "";
+    std::string out = "<section class=\"case" + cls + "\" id=\"case-" + std::to_string(index) +
+                      "\">\n<h2><span class=\"verdict " + verdict + "\">" + verdict + "</span> " + xmlEscaped(c.name) +
+                      "</h2>\n";
+    out +=
+        "<p class=\"numbers\"><span>" + std::string(toString(c.kind)) + " of " + xmlEscaped(c.presetFile) + "</span>";
     if (!c.figures.empty()) {
         out += "<span>" + xmlEscaped(c.figures) + "</span>";
     }
@@ -167,13 +183,15 @@ std::string failureBlock(const CheckCase& c, const std::string& prefix, int inde
         if (!c.golden.empty()) {
             // Actual over golden, cut at the slider; the whole of either with a click.
             std::string id = "swipe-" + std::to_string(index);
-            out += "<figure><div class=\"swipe\" id=\"" + id + "\" onclick=\"if (event.target.tagName == 'IMG') labFlip('" + id +
-                   "')\">" + "<img src=\"" + xmlEscaped(prefix + urlEncoded(c.golden)) + "\" alt=\"golden\">" +
-                   "<img class=\"over\" src=\"" + xmlEscaped(prefix + urlEncoded(c.actual)) +
+            out += "<figure><div class=\"swipe\" id=\"" + id +
+                   "\" onclick=\"if (event.target.tagName == 'IMG') labFlip('" + id + "')\">" + "<img src=\"" +
+                   xmlEscaped(prefix + urlEncoded(c.golden)) + "\" alt=\"golden\">" + "<img class=\"over\" src=\"" +
+                   xmlEscaped(prefix + urlEncoded(c.actual)) +
                    "\" alt=\"actual\" style=\"clip-path: inset(0 50% 0 0)\">" +
                    "<input type=\"range\" min=\"0\" max=\"100\" value=\"50\" oninput=\"labSwipe(this)\" "
                    "aria-label=\"actual left of the divider, golden right\">" +
-                   "<button type=\"button\" onclick=\"labFlip('" + id + "')\">flip</button> <span class=\"which\">actual | golden</span>"
+                   "<button type=\"button\" onclick=\"labFlip('" + id +
+                   "')\">flip</button> <span class=\"which\">actual | golden</span>"
                    "</div><figcaption>slide: actual left, golden right; click to flip</figcaption></figure>";
         }
         out += "</div>\n";
@@ -197,9 +215,11 @@ std::string checkHtml(const std::vector<CheckCase>& cases, const CheckRun& run, 
     std::string title = "lab check: " + std::to_string(failed) + " failed, " + std::to_string(passed) + " passed";
     std::string out = "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-                      xmlEscaped(title) + "</title>\n<style>" + kStyle + "</style>\n<script>" + kScript + "</script>\n</head>\n<body>\n";
+                      xmlEscaped(title) + "</title>\n<style>" + kStyle + "</style>\n<script>" + kScript +
+                      "</script>\n</head>\n<body>\n";
     out += "<h1>" + xmlEscaped(title) + "</h1>\n<p class=\"run\">goldens in " + xmlEscaped(run.golden) + "; renders " +
-           xmlEscaped(run.size) + ", sweep cells " + xmlEscaped(run.sweepSize) + (run.update ? "; --update" : "") + "</p>\n";
+           xmlEscaped(run.size) + ", sweep cells " + xmlEscaped(run.sweepSize) + (run.update ? "; --update" : "") +
+           "</p>\n";
     int index = 0;
     for (const CheckCase& c : cases) {
         if (c.failed()) {
@@ -209,13 +229,15 @@ std::string checkHtml(const std::vector<CheckCase>& cases, const CheckRun& run, 
     }
     if (passed > 0) {
         out += "<h2>" + std::to_string(passed) + (failed ? " passing" : " cases, all passing") +
-               "</h2>\n<table>\n<tr><th></th><th>case</th><th>kind</th><th>figures</th><th>tolerance</th><th>s</th></tr>\n";
+               "</h2>\n<table>\n<tr><th></th><th>case</th><th>kind</th><th>figures</th><th>tolerance</th><th>s</th></"
+               "tr>\n";
         for (const CheckCase& c : cases) {
             if (!c.failed()) {
                 std::string verdict = toString(c.verdict);
-                out += "<tr><td class=\"" + verdict + "\">" + verdict + "</td><td class=\"name\">" + xmlEscaped(c.name) + "</td><td>" +
-                       toString(c.kind) + "</td><td>" + xmlEscaped(c.figures) + "</td><td>" + xmlEscaped(c.tolerance) +
-                       "</td><td>" + fixed(c.seconds, 2) + "</td></tr>\n";
+                out += "<tr><td class=\"" + verdict + "\">" + verdict + "</td><td class=\"name\">" +
+                       xmlEscaped(c.name) + "</td><td>" + toString(c.kind) + "</td><td>" + xmlEscaped(c.figures) +
+                       "</td><td>" + xmlEscaped(c.tolerance) + "</td><td>" + fixedDecimals(c.seconds, 2) +
+                       "</td></tr>\n";
             }
         }
         out += "</table>\n";
@@ -234,12 +256,14 @@ std::string checkJunit(const std::vector<CheckCase>& cases, double seconds) {
         errors += c.verdict == CheckCase::Verdict::Error;
     }
     std::string counts = "tests=\"" + std::to_string(cases.size()) + "\" failures=\"" + std::to_string(failures) +
-                         "\" errors=\"" + std::to_string(errors) + "\" skipped=\"0\" time=\"" + fixed(seconds, 3) + "\"";
+                         "\" errors=\"" + std::to_string(errors) + "\" skipped=\"0\" time=\"" +
+                         fixedDecimals(seconds, 3) + "\"";
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"lab check\" " + counts +
                       ">\n  <testsuite name=\"lab check\" " + counts + ">\n";
     for (const CheckCase& c : cases) {
-        out += "    <testcase classname=\"lab check." + std::string(toString(c.kind)) + "\" name=\"" + xmlEscaped(c.name) +
-               "\" file=\"" + xmlEscaped(c.presetFile) + "\" time=\"" + fixed(c.seconds, 3) + "\"";
+        out += "    <testcase classname=\"lab check." + std::string(toString(c.kind)) + "\" name=\"" +
+               xmlEscaped(c.name) + "\" file=\"" + xmlEscaped(c.presetFile) + "\" time=\"" +
+               fixedDecimals(c.seconds, 3) + "\"";
         if (!c.failed()) {
             out += "/>\n";
             continue;
@@ -257,8 +281,8 @@ std::string checkJunit(const std::vector<CheckCase>& cases, double seconds) {
             }
         }
         const char* element = c.verdict == CheckCase::Verdict::Error ? "error" : "failure";
-        out += ">\n      <" + std::string(element) + " type=\"" + toString(c.verdict) + "\" message=\"" + xmlEscaped(what) +
-               "\">" + xmlEscaped(detail, false) + "</" + element + ">\n    </testcase>\n";
+        out += ">\n      <" + std::string(element) + " type=\"" + toString(c.verdict) + "\" message=\"" +
+               xmlEscaped(what) + "\">" + xmlEscaped(detail, false) + "</" + element + ">\n    </testcase>\n";
     }
     return out + "  </testsuite>\n</testsuites>\n";
 }

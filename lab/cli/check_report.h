@@ -20,8 +20,7 @@ struct CheckCase {
 
     Kind kind = Kind::Render;
     Verdict verdict = Verdict::Pass;
-    std::string preset;    // the preset's file name without .json (what goldens are named after)
-    std::string name;      // "05-full-phong", "05-full-phong.plot", "05-full-phong.sweep[shininess=10]"
+    std::string name; // "05-full-phong", "05-full-phong.plot", "05-full-phong.sweep[shininess=10]"
     std::string presetFile;
     std::string figures;   // "max 3  mean 0.012  over tolerance 0.000%", or the first differing value
     std::string tolerance; // the tolerance that applied and where it came from
@@ -38,14 +37,17 @@ const char* toString(CheckCase::Verdict verdict);
 // "render", "sweep", "plot".
 const char* toString(CheckCase::Kind kind);
 
+// `v` with `digits` decimals, as the report's figures are written ("0.517").
+std::string fixedDecimals(double v, int digits);
+
 // The line `lab check` prints for the case: "FAIL     05-full-phong  max 40 ..." and the files.
 std::string checkLine(const CheckCase& c, const std::string& reportFolder);
 
 // Where the run looked and what it used, for the top of the page.
 struct CheckRun {
-    std::string golden;       // the golden folder as given
-    std::string size;         // "512x512"
-    std::string sweepSize;    // "128x128"
+    std::string golden;    // the golden folder as given
+    std::string size;      // "512x512"
+    std::string sweepSize; // "128x128"
     bool update = false;
 };
 

@@ -29,7 +29,8 @@ void printDiagnostics(const Diagnostics& diagnostics);
 
 // Loads every preset, printing all problems; nullopt entries for those that failed (and then
 // `anyBad`, when given, is set).
-std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<std::filesystem::path>& files, bool* anyBad = nullptr);
+std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<std::filesystem::path>& files,
+                                                 bool* anyBad = nullptr);
 
 // A glTF preset without a camera or lights in its file framed for cells of `cell`'s shape, as
 // `lab render` frames it (core/model_loader.h frameOmitted); false when its model does not load.

@@ -38,7 +38,8 @@ std::optional<NumberCsv> parseNumberCsv(std::string_view text, std::string& erro
     std::size_t lineNumber = 0, start = 0;
     while (start < text.size()) {
         std::size_t end = text.find('\n', start);
-        std::string_view line = text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
+        std::string_view line =
+            text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
         start = end == std::string_view::npos ? text.size() : end + 1;
         ++lineNumber;
         if (!line.empty() && line.back() == '\r') {
@@ -63,15 +64,17 @@ std::optional<NumberCsv> parseNumberCsv(std::string_view text, std::string& erro
             continue;
         }
         if (cells.size() != csv.columns.size()) {
-            error = "line " + std::to_string(lineNumber) + ": " + std::to_string(cells.size()) + " fields, the header has " +
-                    std::to_string(csv.columns.size());
+            error = "line " + std::to_string(lineNumber) + ": " + std::to_string(cells.size()) +
+                    " fields, the header has " + std::to_string(csv.columns.size());
             return std::nullopt;
         }
         std::vector<double>& row = csv.rows.emplace_back();
         for (std::size_t i = 0; i < cells.size(); ++i) {
             std::string cell(cells[i]); // strtod needs the NUL after it (the "C" locale: '.' decimals)
             char* parsed = nullptr;
-            double v = cell.empty() || std::isspace(static_cast<unsigned char>(cell[0])) ? NAN : std::strtod(cell.c_str(), &parsed);
+            double v = cell.empty() || std::isspace(static_cast<unsigned char>(cell[0]))
+                           ? NAN
+                           : std::strtod(cell.c_str(), &parsed);
             if (parsed != cell.c_str() + cell.size() || !std::isfinite(v)) {
                 error = "line " + std::to_string(lineNumber) + ", column " + std::to_string(i + 1) + ": " +
                         inQuotes(cells[i], 40) + " is not a number";
@@ -101,12 +104,14 @@ CsvComparison compareCsv(const NumberCsv& actual, const NumberCsv& golden, doubl
             }
             return s;
         };
-        out.firstDifference = "columns " + inQuotes(joined(actual.columns), 200) + " vs golden " + inQuotes(joined(golden.columns), 200);
+        out.firstDifference =
+            "columns " + inQuotes(joined(actual.columns), 200) + " vs golden " + inQuotes(joined(golden.columns), 200);
         out.figures = out.firstDifference;
         return out;
     }
     if (actual.rows.size() != golden.rows.size()) {
-        out.firstDifference = std::to_string(actual.rows.size()) + " rows vs golden " + std::to_string(golden.rows.size());
+        out.firstDifference =
+            std::to_string(actual.rows.size()) + " rows vs golden " + std::to_string(golden.rows.size());
         out.figures = out.firstDifference;
         return out;
     }

@@ -23,8 +23,8 @@ std::optional<NumberCsv> parseNumberCsv(std::string_view text, std::string& erro
 
 struct CsvComparison {
     bool passes = false;
-    double maxDifference = 0.0; // over the values compared (all of them when the shapes agree)
-    std::string figures;        // "max difference 3e-07 over 181 rows x 4 columns"
+    double maxDifference = 0.0;  // over the values compared (all of them when the shapes agree)
+    std::string figures;         // "max difference 3e-07 over 181 rows x 4 columns"
     std::string firstDifference; // "" when it passes: the shape, or the first value past the tolerance
 };
 
