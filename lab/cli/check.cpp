@@ -217,6 +217,20 @@ class Checker {
         return true;
     }
 
+    // --update's verdict for one golden (image or CSV): SAME when `same`, else `write(error)` writes
+    // it: UPDATED or CREATED, or an error.
+    template <typename Write> static void updateGolden(CheckCase& c, bool same, bool hadGolden, Write write) {
+        std::string error;
+        if (same) {
+            c.verdict = CheckCase::Verdict::Same;
+        } else if (!write(error)) {
+            c.verdict = CheckCase::Verdict::Error;
+            c.message = error;
+        } else {
+            c.verdict = hadGolden ? CheckCase::Verdict::Updated : CheckCase::Verdict::Created;
+        }
+    }
+
     // --update: writes `actual` as the golden unless it is the same image.
     void update(CheckCase& c, const Image& actual, const std::optional<Image>& golden, const fs::path& goldenFile) {
         std::optional<Comparison> cmp;
@@ -224,15 +238,8 @@ class Checker {
             cmp = compareImages(actual, *golden, Tolerance{});
             c.figures = imageFigures(*cmp, actual, *golden);
         }
-        std::string error;
-        if (cmp && cmp->sameSize && cmp->maxDifference == 0) {
-            c.verdict = CheckCase::Verdict::Same;
-        } else if (!writePng(actual, goldenFile, error)) {
-            c.verdict = CheckCase::Verdict::Error;
-            c.message = error;
-        } else {
-            c.verdict = golden ? CheckCase::Verdict::Updated : CheckCase::Verdict::Created;
-        }
+        updateGolden(c, cmp && cmp->sameSize && cmp->maxDifference == 0, golden.has_value(),
+                     [&](std::string& error) { return writePng(actual, goldenFile, error); });
     }
 
     // Compares `actual` with `golden`; on a failure the three images go to the report folder
@@ -377,21 +384,15 @@ class Checker {
                 return;
             }
         }
-        std::optional<NumberCsv> golden = goldenText ? parseNumberCsv(*goldenText, error) : std::nullopt;
+        std::optional<NumberCsv> golden; // parsed only for a comparison
         if (options_.update) {
-            if (goldenText && *goldenText == text) {
-                c.verdict = CheckCase::Verdict::Same;
-            } else if (!writeFileAtomic(goldenFile, text, error)) {
-                c.verdict = CheckCase::Verdict::Error;
-                c.message = error;
-            } else {
-                c.verdict = goldenText ? CheckCase::Verdict::Updated : CheckCase::Verdict::Created;
-            }
+            updateGolden(c, goldenText && *goldenText == text, goldenText.has_value(),
+                         [&](std::string& why) { return writeFileAtomic(goldenFile, text, why); });
         } else if (!goldenText) {
             c.verdict = CheckCase::Verdict::Missing;
             c.message = "no golden " + goldenFile.string() + " (create it with --update --plots)";
             c.actual = reportFile(stem + ".plot.actual.csv", text, c);
-        } else if (!golden) {
+        } else if (golden = parseNumberCsv(*goldenText, error); !golden) {
             badInputCase(c, "golden " + goldenFile.string() + " is not a CSV of numbers: " + error);
         } else {
             std::string parseError;
