@@ -45,7 +45,7 @@ add_library(lab_imgui STATIC
   "${imgui}/backends/imgui_impl_glfw.cpp" "${imgui}/backends/imgui_impl_opengl3.cpp")
 target_include_directories(lab_imgui SYSTEM PUBLIC "${imgui}" "${imgui}/misc/cpp")
 target_compile_definitions(lab_imgui PUBLIC IMGUI_IMPL_OPENGL_ES3 IMGUI_DISABLE_DEMO_WINDOWS)
-# One stb_truetype in the page: the font atlas uses the one lab/core/text_raster.cpp compiles for
+# One stb_truetype in the page: the font atlas uses the one lab/core/plots/text_raster.cpp compiles for
 # the figures' and sweeps' labels (Debian's stb_truetype.h 1.26 and the stb_rect_pack.h it packs
 # glyphs with, exported there when LAB_STB_TRUETYPE_EXTERN is set) instead of ImGui's own copies:
 # 4 KB less gzip-compressed. Both must come from the same headers: stb_truetype lays out its packing
@@ -62,8 +62,8 @@ target_compile_options(lab_imgui PUBLIC -fwasm-exceptions) # GLFW's header is in
 
 # The glTF loader's decoders (lab/core/gltf*), as the native build has them from libmeshoptimizer-dev
 # and libdraco-dev: compiled from the same Debian source packages, decoders only. Each is a static
-# library with its headers and a PUBLIC definition (LAB_HAVE_MESHOPT, LAB_HAVE_DRACO) that lab_core
-# gets through lab_web_headers. Compiled with -fwasm-exceptions like the rest, so a std::bad_alloc
+# library with its headers and a PUBLIC definition (LAB_HAVE_MESHOPT, LAB_HAVE_DRACO) that lab_gltf
+# gets through draco::draco and meshoptimizer::meshoptimizer (below). Compiled with -fwasm-exceptions like the rest, so a std::bad_alloc
 # from a decoder's allocation (sizes come from the file) unwinds to the loader.
 # meshoptimizer 0.18 (EXT_meshopt_compression): the vertex and index codecs and the filters
 # (+6 KB of gzip in lab.wasm).
@@ -73,7 +73,6 @@ add_library(lab_meshopt STATIC "${meshopt}/vertexcodec.cpp" "${meshopt}/indexcod
 target_include_directories(lab_meshopt SYSTEM PUBLIC "${meshopt}")
 target_compile_definitions(lab_meshopt PUBLIC LAB_HAVE_MESHOPT=1)
 target_compile_options(lab_meshopt PRIVATE -fwasm-exceptions)
-target_link_libraries(lab_web_headers INTERFACE lab_meshopt)
 
 # Draco 1.5.5 (KHR_draco_mesh_compression): Decoder::DecodeMeshFromBuffer with the features of the
 # bitstream glTF names (2.2, as Draco's own DRACO_GLTF_BITSTREAM option: meshes, sequential and
@@ -128,7 +127,17 @@ add_library(lab_draco STATIC
 target_include_directories(lab_draco SYSTEM PUBLIC "${LAB_DRACO_CONFIG}" "${LAB_DRACO_SOURCE_DIR}/src")
 target_compile_definitions(lab_draco PUBLIC LAB_HAVE_DRACO=1)
 target_compile_options(lab_draco PRIVATE -fwasm-exceptions)
-target_link_libraries(lab_web_headers INTERFACE lab_draco)
+
+# The native build's target names for what stands in for them here, so that each room of lab/
+# links the same names on both builds.
+foreach(name glm::glm nlohmann_json::nlohmann_json PkgConfig::STB)
+  add_library(${name} INTERFACE IMPORTED)
+  target_link_libraries(${name} INTERFACE lab_web_headers)
+endforeach()
+add_library(draco::draco INTERFACE IMPORTED)
+target_link_libraries(draco::draco INTERFACE lab_draco)
+add_library(meshoptimizer::meshoptimizer INTERFACE IMPORTED)
+target_link_libraries(meshoptimizer::meshoptimizer INTERFACE lab_meshopt)
 
 # The UI font, cut down to the characters the UI can show (the glyph ranges ImGuiHost asks for,
 # lab/platform/imgui_host.cpp: Latin-1, Greek, dashes and the ellipsis, arrows, minus, <= and >=)

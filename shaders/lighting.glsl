@@ -3,7 +3,7 @@
 // This file is compiled twice:
 //   * as GLSL ES 3.00, prepended (after lighting_api.glsl, which declares the constants, structs
 //     and prototypes) to lit.vert and lit.frag by lab/render/shader.cpp;
-//   * as C++20 with GLM, included by lab/core/lighting.cpp inside namespace lab::glsl,
+//   * as C++20 with GLM, included by lab/core/lighting/lighting.cpp inside namespace lab::glsl,
 //     where it feeds the polar plots, `lab plot` and the tests.
 // The CPU-GPU parity test (tests/gpu_parity_test.cpp) renders probes through the real
 // shaders and checks them against the C++ build of this very file.

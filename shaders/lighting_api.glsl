@@ -1,15 +1,15 @@
 // lighting_api.glsl - the lighting model's constants, structs and function prototypes.
 //
 // Valid GLSL ES 3.00 and valid C++20 with GLM, like lighting.glsl, which holds the definitions.
-// C++ includes this file from lab/core/lighting.h (any number of translation units may), and
-// lighting.glsl from lab/core/lighting.cpp only. The shaders get both, this one first.
+// C++ includes this file from lab/core/lighting/lighting.h (any number of translation units may), and
+// lighting.glsl from lab/core/lighting/lighting.cpp only. The shaders get both, this one first.
 // A definition that drifts from its prototype fails to link in both languages.
 
 const float PI = 3.14159265358979f;
 const int MAX_LIGHTS = 8;
 
 // The values of Light.type, Brdf.model, Brdf.distribution and Brdf.fresnel, one line each: the
-// order of preset.h's enums (lab/core/lighting.cpp checks that they agree).
+// order of preset.h's enums (lab/core/lighting/lighting.cpp checks that they agree).
 const int LIGHT_POINT = 0, LIGHT_DIRECTIONAL = 1, LIGHT_SPOT = 2;
 const int BRDF_PHONG = 0, BRDF_BLINN_PHONG = 1, BRDF_COOK_TORRANCE = 2;
 const int DISTRIBUTION_BECKMANN = 0, DISTRIBUTION_GAUSSIAN = 1, DISTRIBUTION_GGX = 2;

@@ -1,8 +1,8 @@
 // camera_test.cpp — orbit keeps the distance and never flips, zoom and pan move as documented,
 // framing puts the whole bounding sphere in view at any size.
-#include "core/camera.h"
-#include "core/preset.h"
-#include "core/limits.h"
+#include "core/scene/camera.h"
+#include "core/scene/preset.h"
+#include "core/scene/limits.h"
 
 #include <gtest/gtest.h>
 
@@ -106,7 +106,7 @@ Reach reach(const Camera& c, const Sphere& s, float aspect) {
     return r;
 }
 
-// A camera a preset may hold (the validator's ranges, core/limits.h).
+// A camera a preset may hold (the validator's ranges, core/scene/limits.h).
 void expectValid(const Camera& c) {
     for (int i = 0; i < 3; ++i) {
         EXPECT_TRUE(limits::contains(limits::kCoordinate, c.eye[i])) << c.eye[i];

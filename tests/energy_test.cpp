@@ -2,10 +2,10 @@
 //
 // The error bounds here are the README's ("Energy"): what the default rule (AlbedoRule{}) was
 // measured to achieve against the closed forms and against a rule four times finer.
-#include "core/energy.h"
+#include "core/plots/energy.h"
 
-#include "core/plot.h"
-#include "core/preset.h"
+#include "core/plots/plot_data.h"
+#include "core/scene/preset.h"
 
 #include <gtest/gtest.h>
 

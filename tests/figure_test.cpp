@@ -1,11 +1,11 @@
-// figure_test.cpp — the plot figures (core/figures.h) as SVG and PNG: the SVG parsed by a small
+// figure_test.cpp — the plot figures (core/plots/figures.h) as SVG and PNG: the SVG parsed by a small
 // strict XML reader and its curves compared with the CSV the same call returns, mapped by the
 // figure's placement; labels present; text escaped; the PNG at scale 1 and 2 read back, its size
 // and ink where the curve is.
-#include "core/figures.h"
+#include "core/plots/figures.h"
 
-#include "core/energy.h"
-#include "core/plot_layout.h"
+#include "core/plots/energy.h"
+#include "core/plots/plot_layout.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>

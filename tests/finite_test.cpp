@@ -1,5 +1,5 @@
 // finite_test.cpp — no accepted preset makes the lighting model's arithmetic leave the finite
-// floats (issue 14): the model evaluated at the corners of every range in core/limits.h.
+// floats (issue 14): the model evaluated at the corners of every range in core/scene/limits.h.
 //
 // On the CPU, every term of every light (glsl::lightContribution, the function both faces run)
 // and the shaded colour, at random points and normals and at the awkward ones (N.H = 1, N.L = 0,
@@ -9,9 +9,9 @@
 #include "gl_suite.h"
 #include "probes.h"
 
-#include "core/lighting.h"
-#include "core/limits.h"
-#include "core/plot.h"
+#include "core/lighting/lighting.h"
+#include "core/scene/limits.h"
+#include "core/plots/plot_data.h"
 
 #include <gtest/gtest.h>
 

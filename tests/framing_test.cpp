@@ -5,10 +5,10 @@
 // OffscreenRenderer that `lab render` and `lab check` use. The model must cover a similar share
 // of each image and touch no border; an explicit camera, a `lights` key and built-in models are
 // left as they are. The unit tests of framedCamera itself are in camera_test.cpp.
-#include "core/camera.h"
-#include "core/mesh_cache.h"
-#include "core/model_loader.h"
-#include "core/preset.h"
+#include "core/scene/camera.h"
+#include "core/gltf/mesh_cache.h"
+#include "core/gltf/model_loader.h"
+#include "core/scene/preset.h"
 #include "platform/headless_gl.h"
 #include "render/offscreen.h"
 #include "gl_suite.h"

@@ -1,8 +1,8 @@
 // gltf_test.cpp — glTF loading on real files: a valid base model, then one mutation per way a
 // file can be broken, each of which must be refused with an error naming the place.
-#include "core/gltf.h"
+#include "core/gltf/reader.h"
 
-#include "core/gltf_data_uri.h"
+#include "core/gltf/data_uri.h"
 
 #include "test_files.h"
 
@@ -637,7 +637,7 @@ TEST(Gltf, UrisWithANulOrControlsAreRefusedAndQuotedSafely) {
     EXPECT_NE(d[0].message.find("5011 bytes"), std::string::npos) << d[0].message;
 }
 
-// The quad's buffer as a base64 data: URI, decoded by the lab's own pass (core/gltf_data_uri.h).
+// The quad's buffer as a base64 data: URI, decoded by the lab's own pass (core/gltf/data_uri.h).
 std::string base64Of(const std::string& bytes) {
     static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::string out;
@@ -760,7 +760,7 @@ TEST(GltfDataUri, TextThePassDoesNotFollowIsLeftAsItWas) {
 }
 
 // Issue 14: a valid file with a large embedded data: buffer peaked at about 6.6 times its size.
-// Its base64 is now decoded once, from the file's bytes (core/gltf_data_uri.h). Measured as the
+// Its base64 is now decoded once, from the file's bytes (core/gltf/data_uri.h). Measured as the
 // growth of this process's peak resident memory (VmHWM, reset through /proc/self/clear_refs)
 // while one 24 MB file loads, against its size.
 TEST(Gltf, PeakMemoryForAnEmbeddedBufferStaysWithinTwoAndAHalfTimesTheFile) {

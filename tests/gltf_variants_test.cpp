@@ -5,9 +5,9 @@
 // one line (an unknown required extension, glTF 1.0). Each shown variant is rendered with EGL
 // beside its plain twin and must give the same pixels within the screenshot tests' tolerance.
 // Then the decoders' inputs, broken one field at a time, must be refused naming the place.
-#include "core/gltf.h"
-#include "core/image.h"
-#include "core/preset.h"
+#include "core/gltf/reader.h"
+#include "core/io/image.h"
+#include "core/scene/preset.h"
 #include "glb_writer.h"
 #include "gltf_variants.h"
 #include "render/offscreen.h"

@@ -7,7 +7,7 @@
 // Gouraud) evaluates in lit.vert, Phong shading in lit.frag: both paths are covered for every BRDF.
 #include "gl_suite.h"
 #include "probes.h"
-#include "core/lighting.h"
+#include "core/lighting/lighting.h"
 #include "platform/headless_gl.h"
 #include "render/renderer.h"
 

@@ -6,8 +6,8 @@
 // the lab like a file from the desktop. The lab must keep running, and a file that does not load
 // must leave the scene exactly as it was (its link, the whole preset, unchanged).
 #include "app/app.h"
-#include "core/gltf.h"
-#include "core/preset.h"
+#include "core/gltf/reader.h"
+#include "core/scene/preset.h"
 #include "platform/headless_app.h"
 #include "platform/headless_gl.h"
 #include "test_files.h"

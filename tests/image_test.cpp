@@ -1,5 +1,5 @@
 // image_test.cpp — the screenshot comparison's thresholds, and PNG round trips.
-#include "core/image.h"
+#include "core/io/image.h"
 
 #include "test_files.h"
 

@@ -1,10 +1,10 @@
 // input_test.cpp — input handed to frames without losing any, frames drawn only when due, and
-// the 3D view's resolution while dragging (app/input.h, app/frame_pacer.h, app/view_cache.h).
+// the 3D view's resolution while dragging (app/input.h, app/frame_pacer.h, app/viewport_cache.h).
 #include "app/app.h"
 #include "app/frame_pacer.h"
 #include "app/input.h"
-#include "app/view_cache.h"
-#include "core/commands.h"
+#include "app/viewport_cache.h"
+#include "ui/actions.h"
 
 #include <gtest/gtest.h>
 

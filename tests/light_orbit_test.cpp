@@ -1,7 +1,7 @@
 // light_orbit_test.cpp — the moving light (issue 16): positions over time follow the orbit, and
 // the preset's `orbit` setting reads, validates and round-trips.
-#include "core/light_orbit.h"
-#include "core/preset.h"
+#include "core/scene/light_orbit.h"
+#include "core/scene/preset.h"
 
 #include <gtest/gtest.h>
 

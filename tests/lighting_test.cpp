@@ -2,7 +2,7 @@
 //
 // The expected numbers come from the formulas in the README, evaluated independently in double
 // precision (a few lines of Python, noted beside each), not from this code.
-#include "core/lighting.h"
+#include "core/lighting/lighting.h"
 
 #include <gtest/gtest.h>
 

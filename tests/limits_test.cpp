@@ -1,8 +1,8 @@
 // limits_test.cpp — the ranges' arithmetic, and that the validator refuses exactly what they exclude.
-#include "core/limits.h"
+#include "core/scene/limits.h"
 
-#include "core/number_format.h"
-#include "core/preset.h"
+#include "core/io/number_format.h"
+#include "core/scene/preset.h"
 
 #include <gtest/gtest.h>
 

@@ -10,11 +10,11 @@
 //     L + V is along N: V = 2(N·L)N − L, the same mirror direction (there H = N exactly).
 // The test finds the V that makes H = N by its own reasoning (L + V ∥ N, |V| = 1) rather than
 // calling reflectionVector, and checks H at the found maximum.
-#include "core/lobe3d.h"
+#include "core/plots/lobe3d.h"
 
-#include "core/lighting.h"
-#include "core/plot.h"
-#include "core/preset.h"
+#include "core/lighting/lighting.h"
+#include "core/plots/plot_data.h"
+#include "core/scene/preset.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // mesh_test.cpp — the built-in shapes face outwards, and the flat expansion keeps the geometry.
-#include "core/mesh.h"
+#include "core/scene/mesh.h"
 
 #include <gtest/gtest.h>
 

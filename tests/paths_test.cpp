@@ -1,5 +1,5 @@
 // paths_test.cpp — folder containment: canonical paths, components, symbolic links.
-#include "core/paths.h"
+#include "core/io/paths.h"
 
 #include "test_files.h"
 

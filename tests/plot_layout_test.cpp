@@ -1,6 +1,6 @@
 // plot_layout_test.cpp — the plots fit whatever area they get: height split, arrangement, the
 // lobe's frame in its canvas, ring values and readout wrapping.
-#include "core/plot_layout.h"
+#include "core/plots/plot_layout.h"
 
 #include <gtest/gtest.h>
 

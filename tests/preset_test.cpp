@@ -1,5 +1,5 @@
 // preset_test.cpp — defaults, every validation error with its path, round trips, shipped presets.
-#include "core/preset.h"
+#include "core/scene/preset.h"
 
 #include "test_files.h"
 

@@ -8,9 +8,9 @@
 // through the same matrices.
 #pragma once
 
-#include "core/lighting.h"
-#include "core/image.h"
-#include "core/mesh.h"
+#include "core/lighting/lighting.h"
+#include "core/io/image.h"
+#include "core/scene/mesh.h"
 #include "render/offscreen.h"
 #include "render/renderer.h"
 

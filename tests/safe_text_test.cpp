@@ -1,6 +1,6 @@
 // safe_text_test.cpp — what files contain cannot reach a terminal raw (issue 14): escapes for C0,
 // DEL and C1 controls, \xNN for invalid UTF-8, no loss at a NUL, bounded quotes.
-#include "core/safe_text.h"
+#include "core/io/safe_text.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // bodies compiled on the headless GL context, compile errors and non-ASCII text named by file and
 // line, the previous programs kept on failure, and the built-in ones restored by a revert.
 #include "gl_suite.h"
-#include "core/mesh_cache.h"
-#include "core/preset.h"
+#include "core/gltf/mesh_cache.h"
+#include "core/scene/preset.h"
 #include "platform/headless_gl.h"
 #include "render/renderer.h"
 #include "render/shader.h"

@@ -1,7 +1,8 @@
-// sweep_test.cpp — sweeps (core/sweep.h): the arguments, their validation as a preset's, the
+// sweep_test.cpp — sweeps (core/scene/sweep.h): the arguments, their validation as a preset's, the
 // cells' presets, and the grid against single renders of the same values, pixel for pixel.
 #include "cli/commands.h"
-#include "core/sweep.h"
+#include "core/plots/sweep_grid.h"
+#include "core/scene/sweep.h"
 #include "render/offscreen.h"
 #include "gl_suite.h"
 #include "test_files.h"

@@ -1,6 +1,6 @@
 // text_raster_test.cpp — the CPU text rasterizer: ink inside the measured box, nothing for "",
 // widths that grow with the text and the size, the fallback font, UTF-8 decoding.
-#include "core/text_raster.h"
+#include "core/plots/text_raster.h"
 
 #include <gtest/gtest.h>
 

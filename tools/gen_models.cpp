@@ -10,7 +10,7 @@
 // gzip-compressed; its render is within 1 level of the plain file's on 5 of 786,432 channels. The
 // output is deterministic; a test regenerates it and compares it byte for byte with
 // presets/models/trefoil.glb.
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 #include "glb_writer.h"
 
 #include <glm/glm.hpp>

@@ -3,8 +3,8 @@
 
 #include "glb_writer.h"
 
-#include "core/file_io.h"
-#include "core/mesh.h"
+#include "core/io/file_io.h"
+#include "core/scene/mesh.h"
 
 #include <draco/compression/encode.h>
 #include <draco/mesh/triangle_soup_mesh_builder.h>

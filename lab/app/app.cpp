@@ -3,12 +3,12 @@
 
 #include "app/figure_export.h"
 #include "app/sweep_image.h"
-#include "app/view_cache.h"
-#include "core/file_io.h"
-#include "core/light_orbit.h"
-#include "core/model_loader.h"
-#include "core/probe.h"
-#include "core/safe_text.h"
+#include "app/viewport_cache.h"
+#include "core/io/file_io.h"
+#include "core/scene/light_orbit.h"
+#include "core/gltf/model_loader.h"
+#include "core/lighting/probe.h"
+#include "core/io/safe_text.h"
 #include "render/renderer.h"
 #include "render/shader.h"
 #include "ui/screen.h"
@@ -83,7 +83,7 @@ struct App::Impl {
     unsigned long long frames = 0;
     bool screenshotRequested = false, toggleFullscreen = false, pickFile = false, copyLink = false;
 
-    // The moving lights (core/light_orbit.h). The document keeps the preset's positions (what Save
+    // The moving lights (core/scene/light_orbit.h). The document keeps the preset's positions (what Save
     // writes, what screenshots and `lab render` show); the live view, its markers and the probe
     // show orbitedScene(). Each light's clock runs while its orbit is on and nothing is being
     // dragged or edited, and starts again from 0 when its orbit is switched off or a scene opens.
@@ -347,7 +347,7 @@ bool App::Impl::updateViews(const ui::Layout& layout, const FrameInput& in, floa
     return drawn;
 }
 
-// The centre of the model's drawn bounds (core/model_loader.h), computed again only when the mesh
+// The centre of the model's drawn bounds (core/gltf/model_loader.h), computed again only when the mesh
 // or the model's transform changes.
 glm::vec3 App::Impl::centreOf(OrbitCentre& cache, const std::shared_ptr<const Mesh>& mesh, const Model& model) {
     if (mesh && (cache.mesh != mesh.get() || !(cache.model == model))) {

@@ -9,7 +9,7 @@
 // GLFW or the browser, and draws no ImGui itself.
 //
 // Frames are drawn only when something changes (app/frame_pacer.h), and the 3D view only when
-// what it shows changes (app/view_cache.h).
+// what it shows changes (app/viewport_cache.h).
 //
 // Implemented: live panel, plots, presets list, open/save/revert with unsaved-changes prompt,
 // drag-and-drop of presets and models, undo/redo, orbit/pan/zoom, light markers and dragging,
@@ -19,7 +19,7 @@
 
 #include "app/input.h"
 #include "app/workspace.h"
-#include "core/diagnostics.h"
+#include "core/io/diagnostics.h"
 
 #include <filesystem>
 #include <memory>
@@ -44,7 +44,7 @@ struct FrameInput {
     bool repaint = false;               // the window's picture was lost (uncovered, resized): draw it even if unchanged
     bool closeRequested = false; // the user closed the window
     bool touch = false;          // the pointer is a finger (app/touch.h): touch-sized widgets
-    std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/link.h)
+    std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/scene/share_link.h)
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
 };
 
@@ -80,7 +80,7 @@ struct AppOptions {
     std::filesystem::path userFolder;
     int viewSamples = 0; // multisampling of the 3D view (the desktop asks for 4 where the GL has them)
     // While dragging, the 3D view is drawn at a lower resolution when frames take longer than
-    // this (app/view_cache.h); 0 turns that off.
+    // this (app/viewport_cache.h); 0 turns that off.
     float frameBudgetSeconds = 0.05f;
 };
 

@@ -9,7 +9,7 @@
 // unsaved change (it is still undoable, and saved with the next save). No GL and no ImGui here.
 #pragma once
 
-#include "core/preset.h"
+#include "core/scene/preset.h"
 
 #include <filesystem>
 #include <string>

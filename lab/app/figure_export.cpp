@@ -1,7 +1,7 @@
 // figure_export.cpp — the plots as figure files for "Export figures" (figure_export.h).
 #include "app/figure_export.h"
 
-#include "core/figures.h"
+#include "core/plots/figures.h"
 
 namespace lab {
 

@@ -1,4 +1,4 @@
-// figure_export.h — the lab's "Export figures": the four plot figures (core/figures.h) with the
+// figure_export.h — the lab's "Export figures": the four plot figures (core/plots/figures.h) with the
 // GUI's current settings (the preset's incident angle, the overlay's angles, the radial scale, the
 // attenuation's light, compare set B), each as SVG, PNG (at the panel's scale, 2 for a projector
 // unless chosen otherwise) and CSV.

@@ -27,7 +27,7 @@ struct InputEvent {
     int code = 0;           // Button: 0 left, 1 right, 2 middle; Key: GLFW key code; Char: code point
     bool down = false;      // Button, Key: pressed (true) or released
     bool repeat = false;    // Key: the keyboard's own auto-repeat (down is true)
-    unsigned modifiers = 0; // Key: kCtrl | kShift | kAlt (core/commands.h)
+    unsigned modifiers = 0; // Key: kCtrl | kShift | kAlt (ui/actions.h)
 
     static InputEvent move(float x, float y) { return {Kind::Move, x, y}; }
     static InputEvent button(int b, bool down, float x, float y) { return {Kind::Button, x, y, b, down}; }

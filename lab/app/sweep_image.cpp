@@ -1,7 +1,7 @@
 // sweep_image.cpp — the grid rendered when its inputs change, uploaded as a texture.
 #include "app/sweep_image.h"
 
-#include "core/sweep.h"
+#include "core/scene/sweep.h"
 
 namespace lab {
 

@@ -4,13 +4,14 @@
 // keys and values, the cell size, the scene (set A as the panel edits it) or the shader programs;
 // never while a drag is in progress (the frame that ends it renders), and nothing at all while
 // the window is closed (its texture and image are released), so the lab's ordinary frames cost
-// the same with or without it. The cells go through core/sweep.h renderSweep with each cell
+// the same with or without it. The cells go through core/scene/sweep.h renderSweep with each cell
 // drawn into a Framebuffer by Renderer::draw, as `lab render` draws a preset; the image is the
 // one Save PNG writes.
 #pragma once
 
-#include "core/mesh.h"
-#include "core/preset.h"
+#include "core/plots/sweep_grid.h"
+#include "core/scene/mesh.h"
+#include "core/scene/preset.h"
 #include "render/image_texture.h"
 #include "render/renderer.h"
 #include "ui/sweep_view.h"

@@ -13,11 +13,11 @@
 #pragma once
 
 #include "app/document.h"
-#include "core/commands.h"
-#include "core/diagnostics.h"
-#include "core/image.h"
-#include "core/mesh_cache.h"
-#include "core/view_mode.h"
+#include "ui/actions.h"
+#include "core/io/diagnostics.h"
+#include "core/io/image.h"
+#include "core/gltf/mesh_cache.h"
+#include "core/scene/view_mode.h"
 
 #include <filesystem>
 #include <functional>
@@ -69,10 +69,10 @@ public:
     // Carries out a scene or file command; false if `request` is not the workspace's.
     bool run(const Request& request);
     void open(const std::filesystem::path& file);
-    void openLink(const std::string& fragment); // "preset=name" or "p=..." (core/link.h)
+    void openLink(const std::string& fragment); // "preset=name" or "p=..." (core/scene/share_link.h)
     bool saveTo(const std::filesystem::path& file);
     void useModel(const std::filesystem::path& file); // a .gltf/.glb becomes the model, framed
-    // The camera frames A's model (core/camera.h framedCamera) at the view's aspect (setViewAspect).
+    // The camera frames A's model (core/scene/camera.h framedCamera) at the view's aspect (setViewAspect).
     void frameModel();
     // The 3D view's width / height (A's half in compare mode), for framing; the app sets it each frame.
     void setViewAspect(float aspect) { viewAspect_ = aspect; }

@@ -10,10 +10,11 @@
 #include "cli/command_kit.h"
 #include "cli/csv_compare.h"
 #include "cli/output.h"
-#include "core/file_io.h"
-#include "core/plot.h"
-#include "core/preset.h"
-#include "core/safe_text.h"
+#include "core/plots/sweep_grid.h"
+#include "core/io/file_io.h"
+#include "core/plots/plot_data.h"
+#include "core/scene/preset.h"
+#include "core/io/safe_text.h"
 
 #include <unistd.h>
 

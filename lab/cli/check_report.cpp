@@ -1,7 +1,7 @@
 // check_report.cpp — report.txt lines, the HTML page and JUnit XML for `lab check`.
 #include "cli/check_report.h"
 
-#include "core/safe_text.h"
+#include "core/io/safe_text.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -6,7 +6,7 @@
 // only formats: it renders nothing, compares nothing and writes no files (check.cpp does).
 #pragma once
 
-#include "core/safe_text.h" // xmlEscaped
+#include "core/io/safe_text.h" // xmlEscaped
 
 #include <string>
 #include <string_view>

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "cli/commands.h"
-#include "core/diagnostics.h"
-#include "core/sweep.h"
+#include "core/io/diagnostics.h"
+#include "core/scene/sweep.h"
 #include "platform/headless_gl.h"
 #include "render/offscreen.h"
 
@@ -33,11 +33,11 @@ std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<std::filesyst
                                                  bool* anyBad = nullptr);
 
 // A glTF preset without a camera or lights in its file framed for cells of `cell`'s shape, as
-// `lab render` frames it (core/model_loader.h frameOmitted); false when its model does not load.
+// `lab render` frames it (core/gltf/model_loader.h frameOmitted); false when its model does not load.
 bool frameForCells(LoadedPreset& preset, Size cell, Diagnostics& diagnostics);
 
 // `preset` (framed: frameForCells) swept along `axes` as one labelled grid of `cell`-sized
-// renders (core/sweep.h). Nullopt with a one-line `error`: `renderFailed` tells a render that
+// renders (core/scene/sweep.h). Nullopt with a one-line `error`: `renderFailed` tells a render that
 // failed (an internal failure) from a key or value the preset refuses (bad input).
 std::optional<Image> renderSweepGrid(Gpu& gpu, const LoadedPreset& preset, const std::vector<SweepAxis>& axes,
                                      Size cell, std::string& error, bool& renderFailed);

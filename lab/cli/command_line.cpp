@@ -2,7 +2,7 @@
 #include "cli/command_line.h"
 
 #include "cli/output.h"
-#include "core/limits.h"
+#include "core/scene/limits.h"
 
 #include <CLI/CLI.hpp>
 

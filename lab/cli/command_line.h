@@ -5,7 +5,7 @@
 #pragma once
 
 #include "cli/commands.h"
-#include "core/sweep.h"
+#include "core/scene/sweep.h"
 
 #include <filesystem>
 #include <optional>
@@ -20,7 +20,7 @@ struct CommandLine {
     // lab (the interactive lab)
     std::optional<std::filesystem::path> preset;
     bool presenter = false, fullscreen = false;
-    float frameBudgetMs = 50.0f; // --frame-budget (app/view_cache.h)
+    float frameBudgetMs = 50.0f; // --frame-budget (app/viewport_cache.h)
     std::optional<Size> windowSize; // --size: else fitted to the screen
     std::filesystem::path screenshotFolder = ".";
     std::optional<std::filesystem::path> layoutFile;
@@ -31,7 +31,7 @@ struct CommandLine {
     std::optional<float> incidentDeg;
     std::optional<std::filesystem::path> albedoOut; // plot --albedo
     FigureOutputs figure;                           // plot --figure, --svg, --png, --csv
-    std::vector<SweepAxis> sweeps;                  // render --sweep (core/sweep.h), columns then rows
+    std::vector<SweepAxis> sweeps;                  // render --sweep (core/scene/sweep.h), columns then rows
     CheckOptions check;
 };
 

@@ -3,13 +3,14 @@
 
 #include "cli/command_kit.h"
 #include "cli/output.h"
-#include "core/energy.h"
-#include "core/file_io.h"
-#include "core/limits.h"
-#include "core/model_loader.h"
-#include "core/plot.h"
-#include "core/preset.h"
-#include "core/safe_text.h"
+#include "core/plots/sweep_grid.h"
+#include "core/plots/energy.h"
+#include "core/io/file_io.h"
+#include "core/scene/limits.h"
+#include "core/gltf/model_loader.h"
+#include "core/plots/plot_data.h"
+#include "core/scene/preset.h"
+#include "core/io/safe_text.h"
 
 #include <algorithm>
 #include <charconv>

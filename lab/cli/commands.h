@@ -5,9 +5,9 @@
 // `check`, an image or plot that differs or a missing golden. Output files are written atomically. Nothing here parses argv (main.cpp does).
 #pragma once
 
-#include "core/figures.h"
-#include "core/image.h"
-#include "core/sweep.h"
+#include "core/plots/figures.h"
+#include "core/io/image.h"
+#include "core/scene/sweep.h"
 
 #include <filesystem>
 #include <optional>
@@ -29,11 +29,11 @@ std::optional<Size> parseSize(const std::string& text, std::string& error);
 int runRender(const std::vector<std::filesystem::path>& presets, const std::filesystem::path& out, Size size);
 
 // `lab render PRESET --sweep KEY=V1,... [--sweep KEY2=...] --out FILE.png`: one preset as a
-// labelled grid (core/sweep.h), each cell `size` and rendered as `lab render` renders a preset.
+// labelled grid (core/scene/sweep.h), each cell `size` and rendered as `lab render` renders a preset.
 int runSweep(const std::vector<std::filesystem::path>& presets, const std::vector<SweepAxis>& sweeps,
              const std::filesystem::path& out, Size size);
 
-// `lab plot --figure KIND --svg/--png/--csv`: one figure (core/figures.h) and where it goes; the
+// `lab plot --figure KIND --svg/--png/--csv`: one figure (core/plots/figures.h) and where it goes; the
 // incident angle is runPlot's.
 struct FigureOutputs {
     FigureRequest request;
@@ -41,7 +41,7 @@ struct FigureOutputs {
     bool any() const { return files.svg || files.png || files.csv; }
 };
 
-// `out` (the polar plot; none when empty) and `albedoOut` (core/energy.h's albedoCsv), each written
+// `out` (the polar plot; none when empty) and `albedoOut` (core/plots/energy.h's albedoCsv), each written
 // when given, and the figure's files.
 int runPlot(const std::filesystem::path& preset, const std::filesystem::path& out,
             std::optional<float> incidentDeg, const std::optional<std::filesystem::path>& albedoOut = std::nullopt,

@@ -1,7 +1,7 @@
 // csv_compare.cpp — number CSVs, read and compared.
 #include "cli/csv_compare.h"
 
-#include "core/safe_text.h"
+#include "core/io/safe_text.h"
 
 #include <cctype>
 #include <cmath>

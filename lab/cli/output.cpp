@@ -1,7 +1,7 @@
 // output.cpp — formatted, escaped printing for the command line (see output.h).
 #include "cli/output.h"
 
-#include "core/safe_text.h"
+#include "core/io/safe_text.h"
 
 #include <cstdarg>
 #include <string>

@@ -1,5 +1,5 @@
 // output.h — the one way the command line prints: every line, on stdout or stderr, goes through
-// printable() (core/safe_text.h), so paths, names and messages that came from files or arguments
+// printable() (core/io/safe_text.h), so paths, names and messages that came from files or arguments
 // reach the terminal escaped, whole (a NUL does not cut them) and never as control sequences.
 #pragma once
 

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "app/app.h"
-#include "core/image.h"
+#include "core/io/image.h"
 
 #include <memory>
 #include <string>

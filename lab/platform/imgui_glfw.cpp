@@ -1,7 +1,7 @@
 // imgui_glfw.cpp — GLFW's events into the lab's input queue; ImGui's GLFW backend for the rest.
 #include "platform/imgui_glfw.h"
 
-#include "core/commands.h"
+#include "ui/actions.h"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>

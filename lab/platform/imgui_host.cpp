@@ -1,7 +1,7 @@
 // imgui_host.cpp — ImGui context, OpenGL3 backend, fonts and the frame order.
 #include "platform/imgui_host.h"
 
-#include "core/commands.h"
+#include "ui/actions.h"
 #include "render/gl.h"
 #include "render/renderer.h"
 

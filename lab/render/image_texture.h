@@ -1,4 +1,4 @@
-// image_texture.h — a CPU image (core/image.h) as a GL texture, for the UI to show with
+// image_texture.h — a CPU image (core/io/image.h) as a GL texture, for the UI to show with
 // ImGui::Image: the sweep view's grid. The UI gets only the texture's number (id()), never GL.
 //
 // Owns one texture object; upload() replaces it with a new one, so a new picture always has a
@@ -9,7 +9,7 @@
 // lives until the next dropPrevious(). It does not draw.
 #pragma once
 
-#include "core/image.h"
+#include "core/io/image.h"
 
 namespace lab {
 

@@ -4,9 +4,9 @@
 // Needs a current GL context (platform/headless_gl.h).
 #pragma once
 
-#include "core/image.h"
-#include "core/mesh_cache.h"
-#include "core/preset.h"
+#include "core/io/image.h"
+#include "core/gltf/mesh_cache.h"
+#include "core/scene/preset.h"
 #include "render/renderer.h"
 
 #include <memory>

@@ -1,7 +1,7 @@
 // renderer.cpp — programs, uniforms, mesh buffers and the draw.
 #include "render/renderer.h"
 
-#include "core/image.h"
+#include "core/io/image.h"
 
 #include <algorithm>
 #include <array>

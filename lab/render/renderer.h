@@ -2,15 +2,15 @@
 //
 // The renderer owns the GL programs (one per evaluation site: per vertex for flat and Gouraud,
 // per pixel for Phong) and the GPU copies of the meshes it draws: one per mesh, kept exactly as
-// long as someone else (core/mesh_cache.h, a caller) still holds that mesh. draw() reads the Preset and
+// long as someone else (core/gltf/mesh_cache.h, a caller) still holds that mesh. draw() reads the Preset and
 // writes into whatever framebuffer is bound; it never changes the Preset.
 // It does not create GL contexts (lab/platform) or load files (lab/core).
 #pragma once
 
-#include "core/image.h"
-#include "core/lighting.h"
-#include "core/mesh.h"
-#include "core/preset.h"
+#include "core/io/image.h"
+#include "core/lighting/lighting.h"
+#include "core/scene/mesh.h"
+#include "core/scene/preset.h"
 #include "render/gl.h"
 #include "render/shader.h"
 

@@ -10,7 +10,7 @@
 // reject it, and the drivers' messages about it are cryptic.
 #pragma once
 
-#include "core/diagnostics.h"
+#include "core/io/diagnostics.h"
 #include "render/gl.h"
 
 #include <optional>

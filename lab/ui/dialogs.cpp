@@ -1,7 +1,7 @@
 // dialogs.cpp — modal popups, centred in the window.
 #include "ui/dialogs.h"
 
-#include "core/safe_text.h"
+#include "core/io/safe_text.h"
 #include "ui/widgets.h"
 
 #include <imgui.h>
@@ -33,7 +33,7 @@ bool problemDialog(const Problem& problem) {
     if (!beginModal("Error")) {
         return false;
     }
-    // Messages quote what files contain: shown through printable() (core/safe_text.h), whole.
+    // Messages quote what files contain: shown through printable() (core/io/safe_text.h), whole.
     ImGui::TextUnformatted(printable(problem.title).c_str());
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 150, 140, 255));

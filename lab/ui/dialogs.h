@@ -2,8 +2,8 @@
 // ImGui only; the answers go back to the app, which carries them out.
 #pragma once
 
-#include "core/commands.h"
-#include "core/diagnostics.h"
+#include "ui/actions.h"
+#include "core/io/diagnostics.h"
 
 #include <optional>
 #include <string>

@@ -1,11 +1,11 @@
 // panel.cpp — the control panel's sections.
 #include "ui/panel.h"
 
-#include "core/camera.h"
-#include "core/enums.h"
-#include "core/lighting.h"
-#include "core/limits.h"
-#include "core/safe_text.h"
+#include "core/scene/camera.h"
+#include "core/scene/preset_choices.h"
+#include "core/lighting/lighting.h"
+#include "core/scene/limits.h"
+#include "core/io/safe_text.h"
 #include "ui/widgets.h"
 
 #include <glm/glm.hpp>
@@ -19,7 +19,7 @@ namespace lab::ui {
 
 namespace {
 
-// A combo over every value of an enumeration (core/enums.h), with one display name each.
+// A combo over every value of an enumeration (core/scene/preset_choices.h), with one display name each.
 template <typename E, std::size_t N>
 bool enumCombo(const char* label, E& value, const std::array<E, N>& values, const char* const (&names)[N]) {
     int current = 0;
@@ -296,7 +296,7 @@ void lightFalloffEditor(LightDesc& l, const std::string& prefix) {
     }
 }
 
-// The moving light (core/light_orbit.h): on, its speed and its axis. The position above stays
+// The moving light (core/scene/light_orbit.h): on, its speed and its axis. The position above stays
 // where the orbit starts; only the live view moves.
 void lightOrbitEditor(LightDesc& l, const std::string& prefix) {
     ImGui::Checkbox("orbit the model", &l.orbit.on);

@@ -1,14 +1,14 @@
 // panel.h — the control panel: every preset field, edited live, plus files and presets.
 //
 // The panel edits the Preset it is given, in place; there is no apply button and no copy. The
-// widgets allow exactly the ranges the preset validator accepts (core/limits.h). Anything that
+// widgets allow exactly the ranges the preset validator accepts (core/scene/limits.h). Anything that
 // needs more than an edit (open a file, save, undo, load a model) comes back as a Request
-// (core/commands.h) for the app to carry out. ImGui only: no GL, no file access.
+// (ui/actions.h) for the app to carry out. ImGui only: no GL, no file access.
 #pragma once
 
-#include "core/commands.h"
-#include "core/preset.h"
-#include "core/view_mode.h"
+#include "ui/actions.h"
+#include "core/scene/preset.h"
+#include "core/scene/view_mode.h"
 #include "ui/layout.h"
 
 #include <filesystem>

@@ -1,7 +1,7 @@
 // plot_cache.cpp — the plots' samples and curves, computed when their inputs are new.
 #include "ui/plot_cache.h"
 
-#include "core/plot_layout.h"
+#include "core/plots/plot_layout.h"
 
 namespace lab::ui {
 

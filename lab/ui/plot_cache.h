@@ -2,8 +2,8 @@
 //
 // The plots are drawn every frame, but what they show changes only when the preset, the plot
 // settings or the window do. The cache keeps
-//   * each lobe's samples, keyed on everything they are computed from (core/plot.h's LobeInputs:
-//     material, BRDF, term switches, incident angle), and its albedo (core/energy.h, about 0.5 ms);
+//   * each lobe's samples, keyed on everything they are computed from (core/plots/plot_data.h's LobeInputs:
+//     material, BRDF, term switches, incident angle), and its albedo (core/plots/energy.h, about 0.5 ms);
 //   * each curve as the screen points that are drawn, thinned to the points a line needs
 //     (thinPolyline, within kCurveTolerance pixels), keyed on its samples' inputs, the component,
 //     the outer ring's intensity, the radial scale and where it lies on screen; likewise Att(d).
@@ -12,8 +12,8 @@
 // shared and immutable, so what a frame holds stays valid while the cache changes.
 #pragma once
 
-#include "core/energy.h"
-#include "core/plot.h"
+#include "core/plots/energy.h"
+#include "core/plots/plot_data.h"
 
 #include <imgui.h>
 

@@ -1,14 +1,14 @@
 // plot_kit.h — the plots' drawing kit, shared by the plot files of lab/ui (not a public API):
 // colours and pens that grow with the font (presenter mode), number formatting, readouts of
 // coloured tokens that wrap into strips of their own, canvases, the polar frame, grid and axes.
-// ImGui's draw lists only; the numbers come from core/plot.h and core/plot_layout.h.
+// ImGui's draw lists only; the numbers come from core/plots/plot_data.h and core/plots/plot_layout.h.
 #pragma once
 
 #include "ui/plot_cache.h"
 #include "ui/plots.h"
 #include "ui/widgets.h"
 
-#include "core/plot_layout.h"
+#include "core/plots/plot_layout.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>

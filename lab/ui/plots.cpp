@@ -1,8 +1,8 @@
 // plots.cpp — drawing the lobes, the arrows and the attenuation curve with ImDrawList.
 //
-// One frame: sample the lighting model (core/plot.h), or find the samples and curves of an
+// One frame: sample the lighting model (core/plots/plot_data.h), or find the samples and curves of an
 // earlier frame with the same inputs (ui/plot_cache.h); write the readouts as tokens and measure
-// them, ask core/plot_layout.h where each plot goes in the room left in the window, then draw
+// them, ask core/plots/plot_layout.h where each plot goes in the room left in the window, then draw
 // each plot's block there — readout strip, canvas, controls — with the cursor set explicitly, so
 // nothing reaches past the region and the window never scrolls.
 #include "ui/plots.h"
@@ -11,9 +11,9 @@
 
 #include "ui/widgets.h"
 
-#include "core/lighting.h"
-#include "core/limits.h"
-#include "core/plot_layout.h"
+#include "core/lighting/lighting.h"
+#include "core/scene/limits.h"
+#include "core/plots/plot_layout.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
@@ -76,7 +76,7 @@ float largestTotal(std::initializer_list<const std::vector<PlotSample>*> sets) {
     return m;
 }
 
-// How much light each term reflects in all at the lobe's incident angle (core/energy.h: the
+// How much light each term reflects in all at the lobe's incident angle (core/plots/energy.h: the
 // reflected over the incident flux, a Lambertian Kd = 1 reflecting 1), as luminance: "diffuse +
 // specular = total" in the curves' colours, and B's total. Short tokens without labels, so that a
 // narrow column keeps room for the lobe.
@@ -149,7 +149,7 @@ Attenuation attenuationData(const Preset& a, PlotSettings& s, const Pens& p) {
         t.readout.add(name + " is directional:", kLabel);
         t.readout.add("Att = 1 at every distance", kSpecular);
     } else {
-        const AttenuationSpan span = attenuationSpan(*t.light, a.model); // as the figure's (core/plot.h)
+        const AttenuationSpan span = attenuationSpan(*t.light, a.model); // as the figure's (core/plots/plot_data.h)
         t.distance = span.distance;
         t.maxD = span.maxDistance;
         t.att = glsl::attenuation(t.light->attenuation, t.distance);

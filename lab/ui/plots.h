@@ -4,13 +4,13 @@
 //   * the reflection lobe in the plane of incidence for the preset's incident angle: diffuse,
 //     specular and total, with N, L, R, V (and H for Blinn-Phong and Cook-Torrance) as arrows;
 //     drag L to change the incident angle, drag V to read the intensities in that direction;
-//   * the albedo of each term at that angle, under the lobe's readout (core/energy.h; B's total too);
+//   * the albedo of each term at that angle, under the lobe's readout (core/plots/energy.h; B's total too);
 //   * the lobes for several incident angles overlaid (the classic 60°/25°/10° figure);
 //   * linear or logarithmic radial scale, polar or Cartesian, with the ring values, angle ticks
 //     and decade marks written on the plot; the scale can be locked;
 //   * the attenuation curve Att(d) of a light, with a marker at its distance to the model.
-// The numbers come from core/plot.h (the same code as `lab plot`), where each plot goes and what
-// its rings are from core/plot_layout.h; this file measures text and draws.
+// The numbers come from core/plots/plot_data.h (the same code as `lab plot`), where each plot goes and what
+// its rings are from core/plots/plot_layout.h; this file measures text and draws.
 //
 // What it promises the window it draws in: everything fits the content region that is left
 // when it is called, whatever its size and the UI scale — side by side in a wide band, stacked in
@@ -19,8 +19,8 @@
 // and text offsets scale with the font (ImGui::GetFontSize() / 13).
 #pragma once
 
-#include "core/plot.h"
-#include "core/probe.h"
+#include "core/plots/plot_data.h"
+#include "core/lighting/probe.h"
 #include "ui/plot_cache.h"
 #include "ui/plots_3d.h"
 

@@ -1,6 +1,6 @@
 // plots_3d.cpp — the 3D lobe and the intensity map, drawn with ImDrawList.
 //
-// One frame: the hemisphere grids of A (and B) from the state's cache (core/lobe3d.h, computed
+// One frame: the hemisphere grids of A (and B) from the state's cache (core/plots/lobe3d.h, computed
 // when the inputs change), the options row and the readout, then the two canvases, placed side
 // by side in a wide region and stacked in a tall one. The meshes (the surface projected by the
 // orbit camera and sorted far to near, the map's disc, B's wireframe) are made once per view and
@@ -9,7 +9,7 @@
 #include "ui/plot_kit.h"
 #include "ui/plots.h"
 
-#include "core/lighting.h"
+#include "core/lighting/lighting.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>

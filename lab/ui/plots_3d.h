@@ -2,7 +2,7 @@
 // the whole hemisphere, as a surface (radius = intensity, like BRDF Explorer) and as a map seen
 // from above.
 //
-//   * the surface of core/lobe3d.h's grid (θo by 1°, φ by 4°) for the chosen component (diffuse,
+//   * the surface of core/plots/lobe3d.h's grid (θo by 1°, φ by 4°) for the chosen component (diffuse,
 //     specular or total), coloured by intensity and shaded, drawn back to front (painter's
 //     algorithm) over the surface plane's disc grid, with N, L, R, V and H as arrows and the peak
 //     marked; the compare set B as a wireframe over it, at the same scale;
@@ -10,7 +10,7 @@
 //     at 0°/0° it looks along the plane plot's view, R to the right);
 //   * the intensity map: the same values as a disc seen from above (θo as the radius, the plane
 //     of incidence as the horizontal axis, R's side to the right), with its colour legend.
-// The numbers come from core/lobe3d.h (the same lighting function as the plane plots, whose
+// The numbers come from core/plots/lobe3d.h (the same lighting function as the plane plots, whose
 // samples it reproduces in the plane of incidence). The grid is computed once per LobeInputs and
 // the projected, sorted mesh once per view (inputs, component, scale, camera and canvas), both
 // kept in Lobe3dState's cache with the peak: a frame in which nothing changed copies the kept
@@ -18,9 +18,9 @@
 // not do: call GL (ImGui draw lists only), or scroll (it fits the region it is given).
 #pragma once
 
-#include "core/lobe3d.h"
-#include "core/plot.h"
-#include "core/preset.h"
+#include "core/plots/lobe3d.h"
+#include "core/plots/plot_data.h"
+#include "core/scene/preset.h"
 #include "ui/plot_cache.h"
 
 #include <imgui.h>

@@ -7,9 +7,9 @@
 #include "ui/plots_energy.h"
 #include "ui/plot_kit.h"
 
-#include "core/energy.h"
-#include "core/lighting.h"
-#include "core/limits.h"
+#include "core/plots/energy.h"
+#include "core/lighting/lighting.h"
+#include "core/scene/limits.h"
 
 #include <algorithm>
 #include <cmath>

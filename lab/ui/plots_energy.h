@@ -2,7 +2,7 @@
 // angle.
 //
 //   * the directional-hemispherical reflectance ρ(θi) of the diffuse and specular terms and their
-//     total, as luminance, for θi = 0°…89° (core/energy.h: the same numbers `lab plot --albedo`
+//     total, as luminance, for θi = 0°…89° (core/plots/energy.h: the same numbers `lab plot --albedo`
 //     writes), A's three curves and the compare set's total;
 //   * a line at 1, "all the light that arrives", so that a model reflecting more than arrives (a
 //     Phong lobe with a large Ks and a small exponent at grazing light) shows at a glance, and so

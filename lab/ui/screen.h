@@ -6,16 +6,16 @@
 // and carries out the ScreenEvents that come back. ImGui only: no GL, no files.
 #pragma once
 
-#include "core/commands.h"
-#include "core/diagnostics.h"
-#include "core/probe.h"
+#include "ui/actions.h"
+#include "core/io/diagnostics.h"
+#include "core/lighting/probe.h"
 #include "ui/layout.h"
 #include "ui/panel.h"
 #include "ui/plots.h"
 #include "ui/shader_editor.h"
 #include "ui/sweep_view.h"
-#include "ui/tools.h"
-#include "ui/view.h"
+#include "ui/small_windows.h"
+#include "ui/viewport.h"
 
 #include <optional>
 #include <string>
@@ -40,7 +40,7 @@ struct ScreenModel {
     bool* probeOpen = nullptr;
     bool* showHelp = nullptr;
     bool lightShapes = true; // spot cones and directional rays in the view
-    const LightMotion* motion = nullptr; // while A's lights orbit: where the view shows them (core/light_orbit.h)
+    const LightMotion* motion = nullptr; // while A's lights orbit: where the view shows them (core/scene/light_orbit.h)
     std::vector<std::pair<float, float>> clicks; // the frame's left clicks (window units), queued by the platform
     const Problem* problem = nullptr;           // shown until closed
     const std::string* unsavedQuestion = nullptr; // "open x.json": discard unsaved changes to do it?

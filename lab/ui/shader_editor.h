@@ -4,7 +4,7 @@
 // renderer's); lighting_api.glsl (prototypes, structs, constants) is not edited here.
 #pragma once
 
-#include "core/commands.h"
+#include "ui/actions.h"
 
 #include <optional>
 #include <string>

@@ -1,8 +1,8 @@
 // sweep_view.cpp — the sweep window: two rows of key and values, the cell size, Save PNG, the grid.
 #include "ui/sweep_view.h"
 
-#include "core/safe_text.h"
-#include "core/sweep.h"
+#include "core/io/safe_text.h"
+#include "core/scene/sweep.h"
 #include "ui/widgets.h"
 
 #include <imgui_stdlib.h>

@@ -1,5 +1,5 @@
 // sweep_view.h — the sweep view: one or two keys of the current preset, their values typed, and
-// the grid of renders the app made of them (core/sweep.h), labelled, with Save PNG.
+// the grid of renders the app made of them (core/scene/sweep.h), labelled, with Save PNG.
 //
 // ImGui only. The window edits SweepViewState's choices; the app (app/sweep_image.h) renders
 // the grid through its renderer when they or the scene change, and hands back a texture number
@@ -7,8 +7,8 @@
 // SaveSweep request. Nothing here when the window is closed.
 #pragma once
 
-#include "core/commands.h"
-#include "core/preset.h"
+#include "ui/actions.h"
+#include "core/scene/preset.h"
 
 #include <string>
 #include <vector>
@@ -40,7 +40,7 @@ std::vector<std::string> sweepArguments(const SweepViewState& state);
 // the window stay the window's (they do not change the preset).
 void followPresetSweep(SweepViewState& state, const Preset& preset);
 
-// The window (when open; it follows the preset's sweep first, open or not): each key typed, or picked from those offered for `preset` (core/sweep.h
+// The window (when open; it follows the preset's sweep first, open or not): each key typed, or picked from those offered for `preset` (core/scene/sweep.h
 // sweepKeySuggestions, each with a range to start from), and its values typed.
 void sweepWindow(SweepViewState& state, const Preset& preset, std::vector<Request>& requests);
 

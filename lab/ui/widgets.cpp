@@ -1,7 +1,7 @@
 // widgets.cpp — shared ImGui helpers.
 #include "ui/widgets.h"
 
-#include "core/limits.h"
+#include "core/scene/limits.h"
 
 #include <glm/common.hpp>
 

@@ -3,7 +3,7 @@
 // ImGui only: no GL, no files. mark() (ui/widget_map.h) names the last item for the GUI tests.
 #pragma once
 
-#include "core/commands.h"
+#include "ui/actions.h"
 #include "ui/widget_map.h"
 
 #include <glm/vec3.hpp>

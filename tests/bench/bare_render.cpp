@@ -3,8 +3,8 @@
 // No argument parsing beyond the output path, no preset file, no validation: just the work.
 //
 //   bare_render OUT.png
-#include "core/lighting.h"
-#include "core/mesh.h"
+#include "core/lighting/lighting.h"
+#include "core/scene/mesh.h"
 #include "render/gl.h"
 #include "render/shader.h"
 

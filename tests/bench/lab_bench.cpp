@@ -19,10 +19,10 @@
 //      the file's bytes.
 // Wall-clock times; every GL benchmark ends its iteration with glFinish.
 #include "app/app.h"
-#include "core/file_io.h"
-#include "core/gltf.h"
-#include "core/lighting.h"
-#include "core/mesh.h"
+#include "core/io/file_io.h"
+#include "core/gltf/reader.h"
+#include "core/lighting/lighting.h"
+#include "core/scene/mesh.h"
 #include "platform/headless_app.h"
 #include "platform/headless_gl.h"
 #include "render/renderer.h"

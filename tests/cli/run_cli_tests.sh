@@ -139,7 +139,7 @@ expect plot-same-file 2 'same file' -- "$lab" plot "$phong" --out "$tmp/d.csv" -
 check plot-same-file-nothing-written test ! -e "$tmp/d.csv"
 expect plot-albedo-unwritable 2 'lab plot: ' -- "$lab" plot "$phong" --albedo "$tmp/none/x.csv"
 
-# --- plot --figure: SVG, PNG and CSV of one figure (core/figures.h) --------------------------
+# --- plot --figure: SVG, PNG and CSV of one figure (core/plots/figures.h) --------------------------
 for fig in lobe overlay attenuation albedo; do
   expect "figure-$fig" 0 "f-$fig\.svg" -- "$lab" plot "$phong" --figure $fig --svg "$tmp/f-$fig.svg" --png "$tmp/f-$fig.png" --csv "$tmp/f-$fig.csv"
   check "figure-$fig-svg" grep -q '</svg>' "$tmp/f-$fig.svg"
@@ -169,7 +169,7 @@ check figure-no-such-light-nothing-written test ! -e "$tmp/x.svg"
 expect figure-same-file 2 '--svg and --png are the same file' -- "$lab" plot "$phong" --svg "$tmp/y.svg" --png "$tmp/./y.svg"
 expect figure-unwritable 2 'lab plot: .*none' -- "$lab" plot "$phong" --svg "$tmp/none/x.svg"
 
-# --- render --sweep: one preset as a labelled grid (core/sweep.h) ---------------------------
+# --- render --sweep: one preset as a labelled grid (core/scene/sweep.h) ---------------------------
 shin=$src/presets/06-shininess-10.json
 expect sweep-grid 0 'grid\.png' -- "$lab" render "$shin" --sweep material.shininess=10,20,30,50 \
     --sweep material.specular=0.2,0.5,1 --size 48x40 --out "$tmp/grid.png"

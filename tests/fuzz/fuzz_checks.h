@@ -9,13 +9,13 @@
 
 #include "cli/command_line.h"
 #include "cli/commands.h"
-#include "core/file_io.h"
-#include "core/gltf.h"
-#include "core/image.h"
-#include "core/lighting.h"
-#include "core/plot.h"
-#include "core/preset.h"
-#include "core/safe_text.h"
+#include "core/io/file_io.h"
+#include "core/gltf/reader.h"
+#include "core/io/image.h"
+#include "core/lighting/lighting.h"
+#include "core/plots/plot_data.h"
+#include "core/scene/preset.h"
+#include "core/io/safe_text.h"
 #include "platform/headless_gl.h"
 #include "render/offscreen.h" // kMaxRenderSide
 
@@ -78,7 +78,7 @@ inline OffscreenRenderer* sharedRenderer() {
     return state == 1 ? &renderer : nullptr;
 }
 
-// A preset that validates keeps the lighting model finite (core/limits.h): its colour at a few
+// A preset that validates keeps the lighting model finite (core/scene/limits.h): its colour at a few
 // points and normals, and `lab plot`'s samples, are finite numbers; and it renders (at 8 x 8).
 inline std::string checkPresetRenders(std::string_view text) {
     Diagnostics d;

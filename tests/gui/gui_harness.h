@@ -11,8 +11,8 @@
 
 #include "x11_driver.h"
 
-#include "core/image.h"
-#include "core/preset.h"
+#include "core/io/image.h"
+#include "core/scene/preset.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // for screenshots of the screen. Everything goes through the X server, as a user's input would.
 #pragma once
 
-#include "core/image.h"
+#include "core/io/image.h"
 
 #include <string>
 

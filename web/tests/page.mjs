@@ -85,7 +85,7 @@ export async function viewShot(page) {
   return PNG.sync.read(fs.readFileSync(await download.path()));
 }
 
-// The screenshot tests' comparison (core/image.h): a pixel fails above `pixel` levels in any
+// The screenshot tests' comparison (core/io/image.h): a pixel fails above `pixel` levels in any
 // channel; an image fails when more than `share` of its pixels fail or the mean exceeds `mean`.
 export function compare(a, b, { pixel = 3, share = 0.001, mean = 0.5 } = {}) {
   if (a.width !== b.width || a.height !== b.height) return { sameSize: false, passes: false };

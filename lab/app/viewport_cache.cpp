@@ -1,0 +1,57 @@
+// viewport_cache.cpp — the offscreen 3D view and its resolution while dragging.
+#include "app/viewport_cache.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lab {
+
+bool CachedView::update(Renderer& renderer, const ViewKey& key, const Viewport& full, int samples) {
+    if (key_ && *key_ == key && target_) {
+        return false;
+    }
+    int w = std::max(full.width, key.width), h = std::max(full.height, key.height);
+    if (!target_ || target_->width() != w || target_->height() != h || target_->samples() != samples) {
+        target_.reset(); // its memory first
+        target_ = std::make_unique<ViewTarget>(w, h, samples);
+        if (!target_->complete() && samples > 0) { // a driver that offers samples it cannot attach
+            target_ = std::make_unique<ViewTarget>(w, h, 0);
+        }
+    }
+    target_->bind();
+    if (key.mesh) {
+        renderer.draw(key.preset, key.mesh, Viewport{0, 0, key.width, key.height}, DrawOptions{key.normals});
+    } else {
+        clearFramebuffer(key.preset.background, key.width, key.height);
+    }
+    target_->resolve(key.width, key.height);
+    key_ = key;
+    return true;
+}
+
+void CachedView::present(unsigned target, const Viewport& dest) const {
+    if (target_ && key_) {
+        target_->present(target, dest, key_->width, key_->height);
+    }
+}
+
+void CachedView::reset() {
+    key_.reset();
+    target_.reset();
+}
+
+float ViewResolution::update(bool dragging, float lastFrameSeconds, float budgetSeconds) {
+    if (!dragging || budgetSeconds <= 0.0f) {
+        scale_ = 1.0f;
+    } else if (lastFrameSeconds > budgetSeconds) {
+        // The shading cost goes with the pixels, the square of the scale; the UI's share does
+        // not shrink, so aim a little lower and never more than halve the pixels at once.
+        float factor = std::sqrt(budgetSeconds / lastFrameSeconds) * 0.9f;
+        scale_ = std::max(kLowest, scale_ * std::max(factor, std::sqrt(0.5f)));
+    } else if (lastFrameSeconds < 0.6f * budgetSeconds) {
+        scale_ = std::min(1.0f, scale_ * 1.15f);
+    }
+    return scale_;
+}
+
+} // namespace lab

@@ -1,0 +1,60 @@
+// viewport_cache.h — the 3D view drawn only when what it shows changes, and at a lower resolution
+// while the user drags on a machine too slow to draw it at full size in time.
+//
+// Hovering, opening a menu, dragging V in the plot or typing in a field changes nothing the 3D
+// view shows, so the window composites the view kept offscreen (render/renderer.h, ViewTarget)
+// instead of shading every pixel again; on Mesa's llvmpipe that is the difference between a
+// frame of a few milliseconds and one of a few hundred. Screenshots, `lab render` and the
+// goldens never go through here: they are always drawn at full resolution.
+#pragma once
+
+#include "core/scene/mesh.h"
+#include "core/scene/preset.h"
+#include "render/renderer.h"
+
+#include <memory>
+#include <optional>
+
+namespace lab {
+
+// Everything a drawn view depends on; the view is drawn again when any of it changes.
+struct ViewKey {
+    Preset preset;                     // as drawn (the view mode applied)
+    std::shared_ptr<const Mesh> mesh;  // held, so a new mesh can never reuse a cached one's address
+    int width = 0, height = 0;         // the pixels drawn (less than the view's while dragging)
+    bool normals = false;              // DrawOptions::showNormals
+    unsigned programs = 0;             // Renderer::generation()
+    bool operator==(const ViewKey&) const = default;
+};
+
+// One view's offscreen copy (A, or B in compare mode).
+class CachedView {
+public:
+    // Draws the view into the offscreen target if `key` differs from the last one drawn; true
+    // when it drew. `full`: the view's size in the window (key's size is at most that);
+    // `samples`: multisampling of the target (0 for none).
+    bool update(Renderer& renderer, const ViewKey& key, const Viewport& full, int samples);
+    // Copies the last drawn view into `dest` of framebuffer `target`, scaled to fit.
+    void present(unsigned target, const Viewport& dest) const;
+    void reset(); // forget it (the next update draws)
+
+private:
+    std::optional<ViewKey> key_;
+    std::unique_ptr<ViewTarget> target_;
+};
+
+// The fraction of the view's width and height that is drawn: 1 unless the user is dragging
+// and the frames are over budget, then lowered (at most halving the pixels a frame, never below
+// a quarter of the width) until a frame fits, raised again when there is room, and back to 1 on
+// the first frame after the drag.
+class ViewResolution {
+public:
+    static constexpr float kLowest = 0.25f;
+    float update(bool dragging, float lastFrameSeconds, float budgetSeconds);
+    float scale() const { return scale_; }
+
+private:
+    float scale_ = 1.0f;
+};
+
+} // namespace lab

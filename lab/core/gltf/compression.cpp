@@ -1,0 +1,382 @@
+// compression.cpp — EXT_meshopt_compression and KHR_draco_mesh_compression undone into plain buffers.
+#include "core/gltf/compression.h"
+
+#include "core/gltf/data_uri.h"
+#include "core/io/safe_text.h"
+
+#ifdef LAB_HAVE_MESHOPT
+#include <meshoptimizer.h>
+#endif
+#ifdef LAB_HAVE_DRACO
+#include <draco/compression/decode.h>
+#include <draco/mesh/mesh.h>
+#endif
+
+#include <cmath>
+#include <cstring>
+#include <optional>
+
+namespace lab::gltf_detail {
+
+bool meshoptSupported() {
+#ifdef LAB_HAVE_MESHOPT
+    return true;
+#else
+    return false;
+#endif
+}
+
+bool dracoSupported() {
+#ifdef LAB_HAVE_DRACO
+    return true;
+#else
+    return false;
+#endif
+}
+
+// A placeholder for tinygltf: the bytes are the loader's (see gltf_glb.h for the same trick).
+std::size_t ModelBuffers::add(nlohmann::json& doc, std::vector<unsigned char> data) {
+    owned.push_back(std::move(data));
+    bytes.push_back({owned.back().data(), owned.back().size()});
+    if (!doc.contains("buffers") || !doc["buffers"].is_array()) {
+        doc["buffers"] = nlohmann::json::array();
+    }
+    doc["buffers"].push_back({{"uri", kDecodedPlaceholder}, {"byteLength", 1}});
+    return bytes.size() - 1;
+}
+
+namespace {
+
+// The member `key` of `object` as an unsigned integer: `fallback` when absent, nullopt when
+// present but not one.
+[[maybe_unused]] std::optional<std::uint64_t> unsignedField(const nlohmann::json& object, const char* key,
+                                           std::optional<std::uint64_t> fallback = std::nullopt) {
+    auto it = object.find(key);
+    if (it == object.end()) {
+        return fallback;
+    }
+    return it->is_number_unsigned() ? std::optional<std::uint64_t>(it->get<std::uint64_t>()) : std::nullopt;
+}
+
+// The object at doc[list][i].extensions[name], or nullptr.
+[[maybe_unused]] nlohmann::json* extensionOf(nlohmann::json& object, const char* name) {
+    auto extensions = object.find("extensions");
+    if (extensions == object.end() || !extensions->is_object()) {
+        return nullptr;
+    }
+    auto ext = extensions->find(name);
+    return ext != extensions->end() && ext->is_object() ? &*ext : nullptr;
+}
+
+[[maybe_unused]] void eraseExtension(nlohmann::json& object, const char* name) {
+    nlohmann::json& extensions = object["extensions"];
+    extensions.erase(name);
+    if (extensions.empty()) {
+        object.erase("extensions");
+    }
+}
+
+// bytes [offset, offset + length) of buffer `index`, when they exist.
+[[maybe_unused]] std::optional<BufferBytes> range(const ModelBuffers& buffers, std::uint64_t index, std::uint64_t offset,
+                                 std::uint64_t length) {
+    if (index >= buffers.bytes.size()) {
+        return std::nullopt;
+    }
+    const BufferBytes& b = buffers.bytes[index];
+    if (offset > b.size || length > b.size - offset) {
+        return std::nullopt;
+    }
+    return BufferBytes{b.data + offset, static_cast<std::size_t>(length)};
+}
+
+[[maybe_unused]] bool fail(Diagnostics& diagnostics, const std::string& file, const std::string& where, const std::string& message) {
+    diagnostics.push_back({file, where, message});
+    return false;
+}
+
+#ifdef LAB_HAVE_MESHOPT
+// One EXT_meshopt_compression bufferView decoded; its fields checked first (the library asserts
+// on what it does not expect). Nullopt after a diagnostic.
+std::optional<std::vector<unsigned char>> decodeMeshoptView(const nlohmann::json& ext, const ModelBuffers& buffers,
+                                                            const DecodeLimits& limits, const std::string& file,
+                                                            const std::string& where, Diagnostics& diagnostics,
+                                                            bool& attributes, std::size_t& stride) {
+    auto buffer = unsignedField(ext, "buffer"), offset = unsignedField(ext, "byteOffset", 0),
+         length = unsignedField(ext, "byteLength"), byteStride = unsignedField(ext, "byteStride"),
+         count = unsignedField(ext, "count");
+    auto text = [&](const char* key, const char* fallback) -> std::optional<std::string> {
+        auto it = ext.find(key);
+        if (it == ext.end()) {
+            return fallback ? std::optional<std::string>(fallback) : std::nullopt;
+        }
+        return it->is_string() ? std::optional<std::string>(it->get<std::string>()) : std::nullopt;
+    };
+    std::optional<std::string> mode = text("mode", nullptr), filter = text("filter", "NONE");
+    for (auto [value, key] : {std::pair{buffer.has_value(), "buffer"}, {offset.has_value(), "byteOffset"},
+                              {length.has_value(), "byteLength"}, {byteStride.has_value(), "byteStride"},
+                              {count.has_value(), "count"}, {mode.has_value(), "mode"}, {filter.has_value(), "filter"}}) {
+        if (!value) {
+            fail(diagnostics, file, where + "." + key, "missing or of the wrong type");
+            return std::nullopt;
+        }
+    }
+    std::optional<BufferBytes> source = range(buffers, *buffer, *offset, *length);
+    if (!source) {
+        fail(diagnostics, file, where, "bytes [" + std::to_string(*offset) + ", +" + std::to_string(*length) +
+                                           ") of buffer " + std::to_string(*buffer) + " do not exist");
+        return std::nullopt;
+    }
+    stride = static_cast<std::size_t>(*byteStride);
+    attributes = *mode == "ATTRIBUTES";
+    if (*mode == "ATTRIBUTES") {
+        if (stride == 0 || stride > 252 || stride % 4 != 0) { // 252: glTF's largest bufferView byteStride
+            fail(diagnostics, file, where + ".byteStride", std::to_string(stride) + ": vertex data needs a multiple of 4 up to 252");
+            return std::nullopt;
+        }
+    } else if (*mode == "TRIANGLES" || *mode == "INDICES") {
+        if (stride != 2 && stride != 4) {
+            fail(diagnostics, file, where + ".byteStride", std::to_string(stride) + ": indices are 2 or 4 bytes");
+            return std::nullopt;
+        }
+        if (*mode == "TRIANGLES" && *count % 3 != 0) {
+            fail(diagnostics, file, where + ".count", std::to_string(*count) + " is not a multiple of 3 (mode TRIANGLES)");
+            return std::nullopt;
+        }
+    } else {
+        fail(diagnostics, file, where + ".mode", inQuotes(*mode) + " is not ATTRIBUTES, TRIANGLES or INDICES");
+        return std::nullopt;
+    }
+    if (*filter != "NONE" && (!attributes || (*filter == "OCTAHEDRAL" && stride != 4 && stride != 8) ||
+                              (*filter == "QUATERNION" && stride != 8) ||
+                              (*filter != "OCTAHEDRAL" && *filter != "QUATERNION" && *filter != "EXPONENTIAL"))) {
+        fail(diagnostics, file, where + ".filter", inQuotes(*filter) + " does not fit mode " + *mode + " and byteStride " + std::to_string(stride));
+        return std::nullopt;
+    }
+    std::uint64_t size = 0;
+    if (*count == 0 || __builtin_mul_overflow(*count, stride, &size) ||
+        size > limits.maxDecodedBytes - std::min(limits.maxDecodedBytes, buffers.decoded)) {
+        fail(diagnostics, file, where + ".count", std::to_string(*count) + " elements of " + std::to_string(stride) +
+                                                      " bytes: more than the " + std::to_string(limits.maxDecodedBytes) +
+                                                      " bytes the lab decodes for a file, all views together");
+        return std::nullopt;
+    }
+    std::vector<unsigned char> out(static_cast<std::size_t>(size));
+    const auto n = static_cast<std::size_t>(*count);
+    int rc = attributes           ? meshopt_decodeVertexBuffer(out.data(), n, stride, source->data, source->size)
+             : *mode == "TRIANGLES" ? meshopt_decodeIndexBuffer(out.data(), n, stride, source->data, source->size)
+                                    : meshopt_decodeIndexSequence(out.data(), n, stride, source->data, source->size);
+    if (rc != 0) {
+        fail(diagnostics, file, where, "the meshopt-compressed data does not decode (error " + std::to_string(rc) +
+                                           "): corrupt, or not " + std::to_string(*count) + " elements of " + std::to_string(stride) + " bytes");
+        return std::nullopt;
+    }
+    if (*filter == "OCTAHEDRAL") {
+        meshopt_decodeFilterOct(out.data(), n, stride);
+    } else if (*filter == "QUATERNION") {
+        meshopt_decodeFilterQuat(out.data(), n, stride);
+    } else if (*filter == "EXPONENTIAL") {
+        meshopt_decodeFilterExp(out.data(), n, stride);
+    }
+    return out;
+}
+#endif
+
+} // namespace
+
+bool decodeMeshopt(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits& limits,
+                   const std::string& displayName, Diagnostics& diagnostics) {
+#ifdef LAB_HAVE_MESHOPT
+    auto views = doc.find("bufferViews");
+    if (views == doc.end() || !views->is_array()) {
+        return true;
+    }
+    for (std::size_t i = 0; i < views->size(); ++i) {
+        if (!(*views)[i].is_object()) {
+            continue;
+        }
+        nlohmann::json* ext = extensionOf((*views)[i], "EXT_meshopt_compression");
+        if (!ext) {
+            continue;
+        }
+        const std::string where = "bufferViews[" + std::to_string(i) + "].extensions.EXT_meshopt_compression";
+        bool attributes = false;
+        std::size_t stride = 0;
+        std::optional<std::vector<unsigned char>> decoded =
+            decodeMeshoptView(*ext, buffers, limits, displayName, where, diagnostics, attributes, stride);
+        if (!decoded) {
+            return false;
+        }
+        const std::size_t size = decoded->size();
+        buffers.decoded += size;
+        const std::size_t index = buffers.add(doc, std::move(*decoded));
+        nlohmann::json& view = (*views)[i];
+        view["buffer"] = index;
+        view["byteOffset"] = 0;
+        view["byteLength"] = size;
+        if (attributes) {
+            view["byteStride"] = stride;
+        } else {
+            view.erase("byteStride");
+        }
+        eraseExtension(view, "EXT_meshopt_compression");
+    }
+#else
+    (void)doc, (void)buffers, (void)limits, (void)displayName, (void)diagnostics;
+#endif
+    return true;
+}
+
+bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits& limits, const std::string& displayName,
+                 Diagnostics& diagnostics) {
+#ifdef LAB_HAVE_DRACO
+    auto meshes = doc.find("meshes");
+    auto views = doc.find("bufferViews");
+    if (meshes == doc.end() || !meshes->is_array()) {
+        return true;
+    }
+    for (std::size_t mi = 0; mi < meshes->size(); ++mi) {
+        nlohmann::json& mesh = (*meshes)[mi];
+        if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) {
+            continue;
+        }
+        for (std::size_t pi = 0; pi < mesh["primitives"].size(); ++pi) {
+            nlohmann::json& prim = mesh["primitives"][pi];
+            nlohmann::json* ext = prim.is_object() ? extensionOf(prim, "KHR_draco_mesh_compression") : nullptr;
+            if (!ext) {
+                continue;
+            }
+            const std::string primWhere = "meshes[" + std::to_string(mi) + "].primitives[" + std::to_string(pi) + "]";
+            const std::string where = primWhere + ".extensions.KHR_draco_mesh_compression";
+            auto fieldFail = [&](const std::string& key, const std::string& message) {
+                return fail(diagnostics, displayName, where + key, message);
+            };
+            std::optional<std::uint64_t> viewIndex = unsignedField(*ext, "bufferView");
+            if (!viewIndex || views == doc.end() || !views->is_array() || *viewIndex >= views->size() ||
+                !(*views)[*viewIndex].is_object()) {
+                return fieldFail(".bufferView", "missing, or no such bufferView");
+            }
+            const nlohmann::json& view = (*views)[*viewIndex];
+            auto buffer = unsignedField(view, "buffer"), offset = unsignedField(view, "byteOffset", 0),
+                 length = unsignedField(view, "byteLength");
+            std::optional<BufferBytes> source =
+                buffer && offset && length ? range(buffers, *buffer, *offset, *length) : std::nullopt;
+            if (!source) {
+                return fail(diagnostics, displayName, "bufferViews[" + std::to_string(*viewIndex) + "]",
+                            "its byte range does not lie inside its buffer");
+            }
+            auto attributeIds = ext->find("attributes");
+            if (attributeIds == ext->end() || !attributeIds->is_object()) {
+                return fieldFail(".attributes", "missing or not an object");
+            }
+
+            // Decode. The library reports malformed data as a status; the catch is for allocation
+            // failures a hostile header might provoke.
+            std::unique_ptr<draco::Mesh> decoded;
+            std::string error;
+            try {
+                draco::DecoderBuffer input;
+                input.Init(reinterpret_cast<const char*>(source->data), source->size);
+                draco::Decoder decoder;
+                auto result = decoder.DecodeMeshFromBuffer(&input);
+                if (result.ok()) {
+                    decoded = std::move(result).value();
+                } else {
+                    error = result.status().error_msg_string();
+                }
+            } catch (const std::exception& e) {
+                error = e.what();
+            }
+            if (!decoded) {
+                return fail(diagnostics, displayName, where,
+                            "the Draco data does not decode: " + shortened(error.empty() ? "not a Draco mesh" : error));
+            }
+            const std::size_t points = decoded->num_points(), faces = decoded->num_faces();
+            if (faces == 0 || points == 0) {
+                return fail(diagnostics, displayName, where, "the Draco data decodes to no triangles");
+            }
+            if (points > limits.maxVertices || faces > limits.maxTriangles ||
+                24 * points + 12 * faces > limits.maxDecodedBytes - std::min(limits.maxDecodedBytes, buffers.decoded)) {
+                return fail(diagnostics, displayName, where, "the Draco data decodes to " + std::to_string(points) + " points and " +
+                                                                 std::to_string(faces) + " triangles, more than the lab reads");
+            }
+            // The accessors' own counts are not checked against what was decoded: the new accessors
+            // below take the decoded counts (Draco may split or merge points; readers such as
+            // three.js go by the decoded data too).
+            nlohmann::json& accessors = doc["accessors"];
+            std::vector<unsigned char> data;
+            nlohmann::json newAttributes = nlohmann::json::object();
+            for (const char* name : {"POSITION", "NORMAL"}) {
+                auto id = attributeIds->find(name);
+                if (id == attributeIds->end()) {
+                    continue;
+                }
+                const std::string attrWhere = ".attributes." + std::string(name);
+                const draco::PointAttribute* attribute =
+                    id->is_number_unsigned() && id->get<std::uint64_t>() <= 0xFFFFFFFFu
+                        ? decoded->GetAttributeByUniqueId(id->get<std::uint32_t>()) : nullptr;
+                if (!attribute) {
+                    return fieldFail(attrWhere, "names no attribute of the Draco data");
+                }
+                if (attribute->num_components() != 3) {
+                    return fieldFail(attrWhere, "the Draco attribute has " + std::to_string(attribute->num_components()) +
+                                                    " components, not 3");
+                }
+                if (!attribute->is_mapping_identity() && attribute->indices_map_size() < points) {
+                    return fieldFail(attrWhere, "the Draco attribute maps fewer values than the mesh has points");
+                }
+                if (!prim.contains("attributes") || !prim["attributes"].is_object() || !prim["attributes"].contains(name)) {
+                    continue; // the primitive does not use it
+                }
+                const std::size_t at = data.size();
+                data.resize(at + points * 12);
+                for (std::size_t p = 0; p < points; ++p) {
+                    draco::AttributeValueIndex value = attribute->mapped_index(draco::PointIndex(static_cast<std::uint32_t>(p)));
+                    float xyz[3];
+                    if (value.value() >= attribute->size() || !attribute->ConvertValue<float>(value, 3, xyz)) {
+                        return fieldFail(attrWhere, "point " + std::to_string(p) + " has no value in the Draco data");
+                    }
+                    std::memcpy(data.data() + at + p * 12, xyz, 12);
+                }
+                newAttributes[name] = at; // byte offset, turned into an accessor below
+            }
+            const std::size_t indicesAt = data.size();
+            data.resize(indicesAt + faces * 12);
+            for (std::size_t f = 0; f < faces; ++f) {
+                const draco::Mesh::Face& face = decoded->face(draco::FaceIndex(static_cast<std::uint32_t>(f)));
+                for (int k = 0; k < 3; ++k) {
+                    const std::uint32_t v = face[k].value();
+                    if (v >= points) {
+                        return fail(diagnostics, displayName, where, "triangle " + std::to_string(f) + " names point " +
+                                                                         std::to_string(v) + " of " + std::to_string(points));
+                    }
+                    std::memcpy(data.data() + indicesAt + (f * 3 + k) * 4, &v, 4);
+                }
+            }
+            // The decoded arrays as one new buffer, a view and an accessor each.
+            buffers.decoded += data.size();
+            const std::size_t bufferIndex = buffers.add(doc, std::move(data));
+            auto addAccessor = [&](std::size_t byteOffset, std::size_t byteLength, std::size_t count, int componentType,
+                                   const char* type) {
+                views->push_back({{"buffer", bufferIndex}, {"byteOffset", byteOffset}, {"byteLength", byteLength}});
+                if (!accessors.is_array()) {
+                    accessors = nlohmann::json::array();
+                }
+                accessors.push_back({{"bufferView", views->size() - 1}, {"componentType", componentType},
+                                     {"count", count}, {"type", type}});
+                return accessors.size() - 1;
+            };
+            for (auto& [name, at] : newAttributes.items()) {
+                prim["attributes"][name] = addAccessor(at.get<std::size_t>(), points * 12, points, 5126, "VEC3");
+            }
+            prim["indices"] = addAccessor(indicesAt, faces * 12, faces * 3, 5125, "SCALAR");
+            prim["mode"] = 4; // Draco decodes triangles, whatever mode the primitive named
+            eraseExtension(prim, "KHR_draco_mesh_compression");
+        }
+    }
+#else
+    (void)doc, (void)buffers, (void)limits, (void)displayName, (void)diagnostics;
+#endif
+    return true;
+}
+
+} // namespace lab::gltf_detail

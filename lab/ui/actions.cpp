@@ -1,0 +1,144 @@
+// actions.cpp — the command table and what is derived from it.
+#include "ui/actions.h"
+
+#include <array>
+
+namespace lab {
+
+namespace {
+
+using C = Command;
+
+// clang-format off
+constexpr std::array kRows = {
+    //          command               key                  modifiers      label               help                                                     typing
+    CommandRow{C::ToggleHelp,         keys::F1,            kNoModifier,   "?",                "show or hide this help",                                true},
+    CommandRow{C::CloseHelp,          keys::Escape,        kNoModifier,   "Close",            "close this help"},
+    CommandRow{C::PreviousPreset,     keys::Left,          kNoModifier,   "Previous preset",  "previous preset in the list"},
+    CommandRow{C::NextPreset,         keys::Right,         kNoModifier,   "Next preset",      "next preset in the list"},
+    CommandRow{C::ShadingFlat,        '1',                 kNoModifier,   "flat",             "flat shading"},
+    CommandRow{C::ShadingGouraud,     '2',                 kNoModifier,   "Gouraud",          "Gouraud shading"},
+    CommandRow{C::ShadingPhong,       '3',                 kNoModifier,   "Phong",            "Phong shading"},
+    CommandRow{C::NextBrdf,           'B',                 kNoModifier,   "Next BRDF",        "next BRDF: Phong, Blinn-Phong, Cook-Torrance"},
+    CommandRow{C::ToggleNormalMatrix, 'M',                 kNoModifier,   "Normal matrix",    "normal matrix: correct / wrong"},
+    CommandRow{C::NextViewMode,       'V',                 kNoModifier,   "Next view",        "next per-term view: lit, emissive, ambient, diffuse, specular, normals"},
+    CommandRow{C::ToggleCompare,      'C',                 kNoModifier,   "Compare",          "compare mode: the view split in two"},
+    CommandRow{C::TogglePanels,       keys::Tab,           kNoModifier,   "Panels",           "cycle the panels: all, plots and model, model only"},
+    CommandRow{C::TogglePresenter,    'P',                 kNoModifier,   "Presenter",        "presenter mode (large UI, with the caption)"},
+    CommandRow{C::ToggleCaption,      'I',                 kNoModifier,   "Caption",          "show or hide the caption: the preset's name and description"},
+    CommandRow{C::ToggleLightShapes,  'L',                 kNoModifier,   "Light shapes",     "show or hide the spot cones and the directional lights' rays"},
+    CommandRow{C::PresenterLarger,    keys::Equal,         kCtrl,         "Larger",           "presenter scale up (1.5x to 2.5x)",                     true},
+    CommandRow{C::PresenterLarger,    keys::KeypadAdd,     kCtrl,         "Larger",           "",                                                      true},
+    CommandRow{C::PresenterSmaller,   keys::Minus,         kCtrl,         "Smaller",          "presenter scale down",                                  true},
+    CommandRow{C::PresenterSmaller,   keys::KeypadSubtract, kCtrl,        "Smaller",          "",                                                      true},
+    CommandRow{C::ToggleFullscreen,   keys::F11,           kNoModifier,   "Fullscreen",       "fullscreen",                                            true},
+    CommandRow{C::ResetCamera,        'R',                 kNoModifier,   "Reset camera (R)", "reset the camera to the preset's"},
+    CommandRow{C::FrameModel,         'F',                 kNoModifier,   "Frame model (F)",  "frame the model: the camera moves to show all of it"},
+    CommandRow{C::Screenshot,         keys::F12,           kNoModifier,   "Screenshot",       "screenshot of the 3D view to PNG",                      true},
+    CommandRow{C::Undo,               'Z',                 kCtrl,         "Undo",             "undo"},
+    CommandRow{C::Redo,               'Y',                 kCtrl,         "Redo",             "redo"},
+    CommandRow{C::Redo,               'Z',                 kCtrl | kShift, "Redo",            ""},
+    CommandRow{C::Save,               'S',                 kCtrl,         "Save",             "save",                                                  true},
+    CommandRow{C::SaveAs,             'S',                 kCtrl | kShift, "Save as",         "save as (the path field)",                              true},
+    CommandRow{C::FocusOpenPath,      'O',                 kCtrl,         "Open",             "open a preset by path (the path field)",                true},
+    CommandRow{C::ToggleShaderEditor, 'E',                 kCtrl,         "Shader editor",    "shader editor",                                         true},
+    CommandRow{C::CompileShaders,     keys::Enter,         kCtrl,         "Compile (Ctrl+Enter)", "compile the edited shaders (in the shader editor)",  true},
+    CommandRow{C::CompileShaders,     keys::KeypadEnter,   kCtrl,         "Compile (Ctrl+Enter)", "",                                                   true},
+    CommandRow{C::ToggleSweep,        'G',                 kCtrl,         "Sweep",            "sweep: a grid of renders, one or two values varied",    true},
+    CommandRow{C::RevertShaders,      0,                   kNoModifier,   "Revert to built-in", ""},
+    CommandRow{C::Revert,             0,                   kNoModifier,   "Revert",           ""},
+    CommandRow{C::OpenPresetAt,       0,                   kNoModifier,   "",                 ""},
+    CommandRow{C::OpenPath,           0,                   kNoModifier,   "Open",             ""},
+    CommandRow{C::LoadModel,          0,                   kNoModifier,   "Load",             ""},
+    CommandRow{C::DownloadPreset,     0,                   kNoModifier,   "Download preset",  ""},
+    CommandRow{C::PickFile,           0,                   kNoModifier,   "Open preset...",   ""},
+    CommandRow{C::CopyLink,           0,                   kNoModifier,   "Copy link",        ""},
+    CommandRow{C::ExportFigures,      0,                   kNoModifier,   "Export figures",   ""},
+    CommandRow{C::SaveSweep,          0,                   kNoModifier,   "Save PNG",         ""},
+};
+// clang-format on
+
+// What the mouse and drops do: not commands, but the help lists them with the keys.
+constexpr std::array<std::pair<const char*, const char*>, 4> kPointerHelp = {{
+    {"Left drag / Right or middle drag / Wheel", "orbit / pan / zoom; drag a light marker to move the light"},
+    {"Click", "probe the pixel under the mouse"},
+    {"Touch: one finger / two fingers / tap", "orbit / pan and pinch to zoom / probe or press"},
+    {"Drop a file", ".json opens a preset, .gltf/.glb loads a model"},
+}};
+
+std::string baseKeyName(int key) {
+    switch (key) {
+    case keys::Escape: return "Esc";
+    case keys::Enter: return "Enter";
+    case keys::KeypadEnter: return "Keypad Enter";
+    case keys::Tab: return "Tab";
+    case keys::Left: return "Left";
+    case keys::Right: return "Right";
+    case keys::Up: return "Up";
+    case keys::Down: return "Down";
+    case keys::KeypadAdd: return "Keypad +";
+    case keys::KeypadSubtract: return "Keypad -";
+    case keys::Equal: return "=";
+    case keys::Minus: return "-";
+    default: break;
+    }
+    if (key >= keys::F1 && key <= keys::F12) {
+        return "F" + std::to_string(key - keys::F1 + 1);
+    }
+    return std::string(1, static_cast<char>(key));
+}
+
+} // namespace
+
+std::span<const CommandRow> commandTable() { return kRows; }
+
+const CommandRow& commandRow(Command command) {
+    for (const CommandRow& row : kRows) {
+        if (row.command == command) {
+            return row;
+        }
+    }
+    return kRows.front(); // unreachable: every command has a row (tested)
+}
+
+std::optional<Command> commandForKey(int key, unsigned modifiers, bool typing) {
+    for (const CommandRow& row : kRows) {
+        if (row.key != 0 && row.key == key && row.modifiers == modifiers && (row.whileTyping || !typing)) {
+            return row.command;
+        }
+    }
+    return std::nullopt;
+}
+
+std::string keyName(int key, unsigned modifiers) {
+    std::string name;
+    if (modifiers & kCtrl) {
+        name += "Ctrl+";
+    }
+    if (modifiers & kShift) {
+        name += "Shift+";
+    }
+    return name + baseKeyName(key);
+}
+
+std::vector<HelpRow> helpRows() {
+    std::vector<HelpRow> rows;
+    for (const CommandRow& row : kRows) {
+        if (*row.help == '\0' || row.key == 0) {
+            continue;
+        }
+        HelpRow help{keyName(row.key, row.modifiers), row.help};
+        for (const CommandRow& alias : kRows) { // the command's other bindings
+            if (&alias != &row && alias.command == row.command && alias.key != 0 && *alias.help == '\0') {
+                help.keys += " / " + keyName(alias.key, alias.modifiers);
+            }
+        }
+        rows.push_back(std::move(help));
+    }
+    for (const auto& [keysText, help] : kPointerHelp) {
+        rows.push_back({keysText, help});
+    }
+    return rows;
+}
+
+} // namespace lab

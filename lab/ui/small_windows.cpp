@@ -1,0 +1,98 @@
+// small_windows.cpp — probe and help windows.
+#include "ui/small_windows.h"
+
+#include "ui/widgets.h"
+
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+
+namespace lab::ui {
+
+void helpWindow(bool& open) {
+    if (!open) {
+        return;
+    }
+    ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    if (ImGui::Begin("Keyboard shortcuts (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+        if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+            for (const HelpRow& row : helpRows()) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(row.keys.c_str());
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(row.help.c_str());
+            }
+            ImGui::EndTable();
+        }
+    }
+    mark("help");
+    ImGui::End();
+}
+
+namespace {
+
+void vec(const char* name, const glm::vec3& v) { ImGui::Text("%-3s (%+.3f, %+.3f, %+.3f)", name, v.x, v.y, v.z); }
+void rgb(const char* name, const glm::vec3& v) { ImGui::Text("%-18s %.4f  %.4f  %.4f", name, v.x, v.y, v.z); }
+
+} // namespace
+
+void probeWindow(const ProbeResult& probe, const Preset& preset, bool& open, float x, float y) {
+    if (!open) {
+        return;
+    }
+    // Inside the window whatever its size: at most the display, wide enough for the rows, and
+    // pushed back in when it would hang over an edge.
+    ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(ImGui::GetFontSize() * 22, display.x), 0), display);
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    if (ImGui::Begin("Pixel probe", &open, ImGuiWindowFlags_AlwaysAutoResize)) {
+        // Numbers for the instructor, not the room: at most 16 pixels, so that in presenter mode
+        // the probe covers a corner of the model, not all of it.
+        ImGui::SetWindowFontScale(std::min(1.0f, 16.0f / ImGui::GetFontSize()));
+        ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        ImVec2 inside(std::clamp(at.x, 0.0f, std::max(display.x - size.x, 0.0f)), std::clamp(at.y, 0.0f, std::max(display.y - size.y, 0.0f)));
+        if (inside.x != at.x || inside.y != at.y) {
+            ImGui::SetWindowPos(inside);
+        }
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 22);
+        ImGui::TextDisabled("Eye space. Shading: %s%s", std::string(toString(preset.shading)).c_str(),
+                            preset.shading == Shading::Gouraud ? " (the pixel interpolates vertex colours; this is the per-pixel value)" : "");
+        ImGui::PopTextWrapPos();
+        vec("p", probe.positionEye);
+        vec("N", probe.N);
+        vec("V", probe.V);
+        rgb("emissive", probe.emissive);
+        rgb("global ambient", probe.globalAmbient);
+        for (const ProbeLight& l : probe.lights) {
+            ImGui::Separator();
+            ImGui::Text("Light %d", l.index + 1);
+            vec("L", l.L);
+            vec(preset.brdf == BrdfModel::Phong ? "R" : "H", preset.brdf == BrdfModel::Phong ? l.R : l.H);
+            ImGui::Text("N.L %+.4f  R.V %+.4f  N.V %+.4f", l.NoL, l.RoV, l.NoV);
+            ImGui::Text("N.H %+.4f  V.H %+.4f", l.NoH, l.VoH);
+            if (l.distance > 0.0f) {
+                ImGui::Text("d %.3f  Att %.4f", l.distance, l.attenuation);
+            } else {
+                ImGui::Text("directional: Att %.4f", l.attenuation);
+            }
+            if (preset.brdf == BrdfModel::CookTorrance) {
+                ImGui::Text("D %.4f  F %.4f  G %.4f", l.D, l.F, l.G);
+            }
+            ImGui::Text("S %.5f", l.specularFactor);
+            rgb("ambient", l.ambient);
+            rgb("diffuse", l.diffuse);
+            rgb("specular", l.specular);
+        }
+        ImGui::Separator();
+        rgb("colour (clamped)", probe.color);
+        ImGui::ColorButton("##probecolor", ImVec4(probe.color.r, probe.color.g, probe.color.b, 1.0f));
+    }
+    mark("probe");
+    ImGui::End();
+}
+
+} // namespace lab::ui

@@ -1,0 +1,97 @@
+// viewport_cache_test.cpp — the 3D view drawn only when what it shows changes, and at a reduced
+// resolution only while dragging (app/viewport_cache.h), on real App frames (HeadlessApp).
+#include "app/app.h"
+#include "ui/actions.h"
+#include "platform/headless_app.h"
+#include "platform/headless_gl.h"
+#include "ui/widget_map.h"
+#include "test_files.h"
+
+#include <gtest/gtest.h>
+
+namespace lab {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ViewCacheTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        std::string error;
+        ASSERT_TRUE(gl_.create(error)) << error;
+        AppOptions options;
+        options.preset = fs::path(LAB_SOURCE_DIR) / "presets" / "05-full-phong.json";
+        options.presetFolders = {fs::path(LAB_SOURCE_DIR) / "presets"};
+        options.screenshotFolder = dir_.path();
+        options.userFolder = dir_.path();
+        app_ = std::make_unique<App>(options);
+        ASSERT_TRUE(lab_.start(*app_, 1280, 800, error)) << error;
+        frame();
+        const ui::Rect* view = ui::widgets().find("view");
+        ASSERT_TRUE(view);
+        view_ = *view;
+    }
+
+    // One frame with these events; every frame says the last one took `cost` seconds.
+    FrameOutput frame(std::vector<InputEvent> events = {}, float cost = 0.01f) {
+        FrameInput in;
+        in.events = std::move(events);
+        in.lastFrameSeconds = cost;
+        return lab_.frame(in);
+    }
+
+    HeadlessGl gl_;
+    TempFolder dir_;
+    std::unique_ptr<App> app_;
+    HeadlessApp lab_;
+    ui::Rect view_;
+};
+
+TEST_F(ViewCacheTest, HoveringAndUnchangedFramesDoNotDrawTheView) {
+    EXPECT_FALSE(frame().viewDrawn) << "nothing changed: the cached view is shown";
+    EXPECT_FALSE(frame({InputEvent::move(20, 20)}).viewDrawn) << "hovering the panel changes nothing in the view";
+    EXPECT_FALSE(frame({InputEvent::move(view_.x + 30, view_.y + 40)}).viewDrawn);
+    EXPECT_TRUE(frame({InputEvent::key('1', true)}).viewDrawn) << "flat shading changes the view";
+    EXPECT_FALSE(frame({InputEvent::key('1', false)}).viewDrawn);
+}
+
+TEST_F(ViewCacheTest, ADragOnASlowMachineIsDrawnSmallerAndTheFrameAfterItIsFullAndExact) {
+    float cx = view_.x + view_.w / 2, cy = view_.y + view_.h / 2;
+    frame({InputEvent::move(cx, cy)});
+    frame({InputEvent::button(0, true, cx, cy)});
+    float lowest = 1.0f;
+    for (int i = 1; i <= 8; ++i) {
+        // Frames of 300 ms: far over the 50 ms budget.
+        FrameOutput out = frame({InputEvent::move(cx + 10.0f * i, cy)}, 0.3f);
+        EXPECT_TRUE(out.viewDrawn) << "the orbit moves the camera every frame";
+        lowest = std::min(lowest, out.viewScale);
+    }
+    EXPECT_LT(lowest, 0.6f) << "slow frames while dragging lower the view's resolution";
+    FrameOutput released = frame({InputEvent::button(0, false, cx + 80, cy)}, 0.3f);
+    EXPECT_EQ(released.viewScale, 1.0f) << "the frame that ends the drag is full resolution";
+    EXPECT_TRUE(released.viewDrawn);
+    EXPECT_FALSE(frame({}, 0.3f).viewDrawn);
+    Image afterDrag = lab_.read();
+
+    // The same scene drawn again without any interaction: M twice (the normal matrix, and back).
+    EXPECT_TRUE(frame({InputEvent::key('M', true)}, 0.3f).viewDrawn);
+    frame({InputEvent::key('M', false)}, 0.3f);
+    EXPECT_TRUE(frame({InputEvent::key('M', true)}, 0.3f).viewDrawn);
+    frame({InputEvent::key('M', false)}, 0.3f);
+    Image redrawn = lab_.read();
+    ASSERT_EQ(afterDrag.width, redrawn.width);
+    EXPECT_TRUE(afterDrag.rgb == redrawn.rgb) << "the frame after the drag must be the full-resolution frame, pixel for pixel";
+}
+
+TEST_F(ViewCacheTest, FastFramesKeepFullResolutionWhileDragging) {
+    float cx = view_.x + view_.w / 2, cy = view_.y + view_.h / 2;
+    frame({InputEvent::move(cx, cy)});
+    frame({InputEvent::button(0, true, cx, cy)});
+    for (int i = 1; i <= 4; ++i) {
+        EXPECT_EQ(frame({InputEvent::move(cx + 10.0f * i, cy)}, 0.01f).viewScale, 1.0f);
+    }
+    frame({InputEvent::button(0, false, cx + 40, cy)});
+}
+
+} // namespace
+} // namespace lab
