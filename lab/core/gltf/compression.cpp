@@ -95,6 +95,32 @@ namespace {
 }
 
 #ifdef LAB_HAVE_MESHOPT
+// A meshopt view's mode, byteStride, count and filter, as the library expects them together.
+// False after a diagnostic.
+bool meshoptFieldsFit(const std::string& mode, const std::string& filter, std::size_t stride, std::uint64_t count,
+                      const std::string& file, const std::string& where, Diagnostics& diagnostics) {
+    if (mode == "ATTRIBUTES") {
+        if (stride == 0 || stride > 252 || stride % 4 != 0) { // 252: glTF's largest bufferView byteStride
+            return fail(diagnostics, file, where + ".byteStride", std::to_string(stride) + ": vertex data needs a multiple of 4 up to 252");
+        }
+    } else if (mode == "TRIANGLES" || mode == "INDICES") {
+        if (stride != 2 && stride != 4) {
+            return fail(diagnostics, file, where + ".byteStride", std::to_string(stride) + ": indices are 2 or 4 bytes");
+        }
+        if (mode == "TRIANGLES" && count % 3 != 0) {
+            return fail(diagnostics, file, where + ".count", std::to_string(count) + " is not a multiple of 3 (mode TRIANGLES)");
+        }
+    } else {
+        return fail(diagnostics, file, where + ".mode", inQuotes(mode) + " is not ATTRIBUTES, TRIANGLES or INDICES");
+    }
+    if (filter != "NONE" && (mode != "ATTRIBUTES" || (filter == "OCTAHEDRAL" && stride != 4 && stride != 8) ||
+                              (filter == "QUATERNION" && stride != 8) ||
+                              (filter != "OCTAHEDRAL" && filter != "QUATERNION" && filter != "EXPONENTIAL"))) {
+        return fail(diagnostics, file, where + ".filter", inQuotes(filter) + " does not fit mode " + mode + " and byteStride " + std::to_string(stride));
+    }
+    return true;
+}
+
 // One EXT_meshopt_compression bufferView decoded; its fields checked first (the library asserts
 // on what it does not expect). Nullopt after a diagnostic.
 std::optional<std::vector<unsigned char>> decodeMeshoptView(const nlohmann::json& ext, const ModelBuffers& buffers,
@@ -128,28 +154,7 @@ std::optional<std::vector<unsigned char>> decodeMeshoptView(const nlohmann::json
     }
     stride = static_cast<std::size_t>(*byteStride);
     attributes = *mode == "ATTRIBUTES";
-    if (*mode == "ATTRIBUTES") {
-        if (stride == 0 || stride > 252 || stride % 4 != 0) { // 252: glTF's largest bufferView byteStride
-            fail(diagnostics, file, where + ".byteStride", std::to_string(stride) + ": vertex data needs a multiple of 4 up to 252");
-            return std::nullopt;
-        }
-    } else if (*mode == "TRIANGLES" || *mode == "INDICES") {
-        if (stride != 2 && stride != 4) {
-            fail(diagnostics, file, where + ".byteStride", std::to_string(stride) + ": indices are 2 or 4 bytes");
-            return std::nullopt;
-        }
-        if (*mode == "TRIANGLES" && *count % 3 != 0) {
-            fail(diagnostics, file, where + ".count", std::to_string(*count) + " is not a multiple of 3 (mode TRIANGLES)");
-            return std::nullopt;
-        }
-    } else {
-        fail(diagnostics, file, where + ".mode", inQuotes(*mode) + " is not ATTRIBUTES, TRIANGLES or INDICES");
-        return std::nullopt;
-    }
-    if (*filter != "NONE" && (!attributes || (*filter == "OCTAHEDRAL" && stride != 4 && stride != 8) ||
-                              (*filter == "QUATERNION" && stride != 8) ||
-                              (*filter != "OCTAHEDRAL" && *filter != "QUATERNION" && *filter != "EXPONENTIAL"))) {
-        fail(diagnostics, file, where + ".filter", inQuotes(*filter) + " does not fit mode " + *mode + " and byteStride " + std::to_string(stride));
+    if (!meshoptFieldsFit(*mode, *filter, stride, *count, file, where, diagnostics)) {
         return std::nullopt;
     }
     std::uint64_t size = 0;
@@ -226,11 +231,189 @@ bool decodeMeshopt(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimit
     return true;
 }
 
+#ifdef LAB_HAVE_DRACO
+namespace {
+
+// Where a Draco primitive's diagnostics point, and the file they name.
+struct DracoSite {
+    const std::string& file;
+    std::string where; // "meshes[i].primitives[j].extensions.KHR_draco_mesh_compression"
+    Diagnostics& diagnostics;
+    bool fail(const std::string& message, const std::string& key = "") const {
+        return gltf_detail::fail(diagnostics, file, where + key, message);
+    }
+};
+
+// The compressed bytes, decoded; within the limits (points, faces, and the bytes decoded so far
+// in the file). Nullptr after a diagnostic. The library reports malformed data as a status; the
+// catch is for allocation failures a hostile header might provoke.
+std::unique_ptr<draco::Mesh> decodeDracoMesh(const BufferBytes& source, const ModelBuffers& buffers,
+                                             const DecodeLimits& limits, const DracoSite& site) {
+    std::unique_ptr<draco::Mesh> decoded;
+    std::string error;
+    try {
+        draco::DecoderBuffer input;
+        input.Init(reinterpret_cast<const char*>(source.data), source.size);
+        draco::Decoder decoder;
+        auto result = decoder.DecodeMeshFromBuffer(&input);
+        if (result.ok()) {
+            decoded = std::move(result).value();
+        } else {
+            error = result.status().error_msg_string();
+        }
+    } catch (const std::exception& e) {
+        error = e.what();
+    }
+    if (!decoded) {
+        site.fail("the Draco data does not decode: " + shortened(error.empty() ? "not a Draco mesh" : error));
+        return nullptr;
+    }
+    const std::size_t points = decoded->num_points(), faces = decoded->num_faces();
+    if (faces == 0 || points == 0) {
+        site.fail("the Draco data decodes to no triangles");
+        return nullptr;
+    }
+    if (points > limits.maxVertices || faces > limits.maxTriangles ||
+        24 * points + 12 * faces > limits.maxDecodedBytes - std::min(limits.maxDecodedBytes, buffers.decoded)) {
+        site.fail("the Draco data decodes to " + std::to_string(points) + " points and " + std::to_string(faces) +
+                  " triangles, more than the lab reads");
+        return nullptr;
+    }
+    return decoded;
+}
+
+// Attribute `name` (POSITION or NORMAL) of the decoded mesh, as `points` floats × 3 appended to
+// `data`, when the primitive uses it: its byte offset in newAttributes[name]. False after a
+// diagnostic.
+bool appendDracoAttribute(const draco::Mesh& decoded, const nlohmann::json& attributeIds, const nlohmann::json& prim,
+                          const char* name, std::vector<unsigned char>& data, nlohmann::json& newAttributes,
+                          const DracoSite& site) {
+    auto id = attributeIds.find(name);
+    if (id == attributeIds.end()) {
+        return true;
+    }
+    const std::size_t points = decoded.num_points();
+    const std::string attrWhere = ".attributes." + std::string(name);
+    const draco::PointAttribute* attribute =
+        id->is_number_unsigned() && id->get<std::uint64_t>() <= 0xFFFFFFFFu
+            ? decoded.GetAttributeByUniqueId(id->get<std::uint32_t>()) : nullptr;
+    if (!attribute) {
+        return site.fail("names no attribute of the Draco data", attrWhere);
+    }
+    if (attribute->num_components() != 3) {
+        return site.fail("the Draco attribute has " + std::to_string(attribute->num_components()) + " components, not 3",
+                         attrWhere);
+    }
+    if (!attribute->is_mapping_identity() && attribute->indices_map_size() < points) {
+        return site.fail("the Draco attribute maps fewer values than the mesh has points", attrWhere);
+    }
+    if (!prim.contains("attributes") || !prim["attributes"].is_object() || !prim["attributes"].contains(name)) {
+        return true; // the primitive does not use it
+    }
+    const std::size_t at = data.size();
+    data.resize(at + points * 12);
+    for (std::size_t p = 0; p < points; ++p) {
+        draco::AttributeValueIndex value = attribute->mapped_index(draco::PointIndex(static_cast<std::uint32_t>(p)));
+        float xyz[3];
+        if (value.value() >= attribute->size() || !attribute->ConvertValue<float>(value, 3, xyz)) {
+            return site.fail("point " + std::to_string(p) + " has no value in the Draco data", attrWhere);
+        }
+        std::memcpy(data.data() + at + p * 12, xyz, 12);
+    }
+    newAttributes[name] = at; // byte offset, turned into an accessor by decodeDracoPrimitive
+    return true;
+}
+
+// The decoded triangles as unsigned 32-bit indices appended to `data`. False after a diagnostic.
+bool appendDracoFaces(const draco::Mesh& decoded, std::vector<unsigned char>& data, const DracoSite& site) {
+    const std::size_t points = decoded.num_points(), faces = decoded.num_faces();
+    const std::size_t indicesAt = data.size();
+    data.resize(indicesAt + faces * 12);
+    for (std::size_t f = 0; f < faces; ++f) {
+        const draco::Mesh::Face& face = decoded.face(draco::FaceIndex(static_cast<std::uint32_t>(f)));
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t v = face[k].value();
+            if (v >= points) {
+                return site.fail("triangle " + std::to_string(f) + " names point " + std::to_string(v) + " of " +
+                                 std::to_string(points));
+            }
+            std::memcpy(data.data() + indicesAt + (f * 3 + k) * 4, &v, 4);
+        }
+    }
+    return true;
+}
+
+// One primitive's KHR_draco_mesh_compression decoded into a new buffer, a view and an accessor
+// for each attribute it uses and for the indices; the extension removed. False after a diagnostic.
+bool decodeDracoPrimitive(nlohmann::json& doc, nlohmann::json& prim, const nlohmann::json& ext, ModelBuffers& buffers,
+                          const DecodeLimits& limits, const DracoSite& site) {
+    auto views = doc.find("bufferViews");
+    std::optional<std::uint64_t> viewIndex = unsignedField(ext, "bufferView");
+    if (!viewIndex || views == doc.end() || !views->is_array() || *viewIndex >= views->size() ||
+        !(*views)[*viewIndex].is_object()) {
+        return site.fail("missing, or no such bufferView", ".bufferView");
+    }
+    const nlohmann::json& view = (*views)[*viewIndex];
+    auto buffer = unsignedField(view, "buffer"), offset = unsignedField(view, "byteOffset", 0),
+         length = unsignedField(view, "byteLength");
+    std::optional<BufferBytes> source = buffer && offset && length ? range(buffers, *buffer, *offset, *length) : std::nullopt;
+    if (!source) {
+        return fail(site.diagnostics, site.file, "bufferViews[" + std::to_string(*viewIndex) + "]",
+                    "its byte range does not lie inside its buffer");
+    }
+    auto attributeIds = ext.find("attributes");
+    if (attributeIds == ext.end() || !attributeIds->is_object()) {
+        return site.fail("missing or not an object", ".attributes");
+    }
+    std::unique_ptr<draco::Mesh> decoded = decodeDracoMesh(*source, buffers, limits, site);
+    if (!decoded) {
+        return false;
+    }
+    // The accessors' own counts are not checked against what was decoded: the new accessors
+    // below take the decoded counts (Draco may split or merge points; readers such as
+    // three.js go by the decoded data too).
+    const std::size_t points = decoded->num_points(), faces = decoded->num_faces();
+    std::vector<unsigned char> data;
+    nlohmann::json newAttributes = nlohmann::json::object();
+    for (const char* name : {"POSITION", "NORMAL"}) {
+        if (!appendDracoAttribute(*decoded, *attributeIds, prim, name, data, newAttributes, site)) {
+            return false;
+        }
+    }
+    const std::size_t indicesAt = data.size();
+    if (!appendDracoFaces(*decoded, data, site)) {
+        return false;
+    }
+    // The decoded arrays as one new buffer, a view and an accessor each.
+    buffers.decoded += data.size();
+    const std::size_t bufferIndex = buffers.add(doc, std::move(data));
+    nlohmann::json& accessors = doc["accessors"];
+    auto addAccessor = [&](std::size_t byteOffset, std::size_t byteLength, std::size_t count, int componentType,
+                           const char* type) {
+        views->push_back({{"buffer", bufferIndex}, {"byteOffset", byteOffset}, {"byteLength", byteLength}});
+        if (!accessors.is_array()) {
+            accessors = nlohmann::json::array();
+        }
+        accessors.push_back({{"bufferView", views->size() - 1}, {"componentType", componentType},
+                             {"count", count}, {"type", type}});
+        return accessors.size() - 1;
+    };
+    for (auto& [name, at] : newAttributes.items()) {
+        prim["attributes"][name] = addAccessor(at.get<std::size_t>(), points * 12, points, 5126, "VEC3");
+    }
+    prim["indices"] = addAccessor(indicesAt, faces * 12, faces * 3, 5125, "SCALAR");
+    prim["mode"] = 4; // Draco decodes triangles, whatever mode the primitive named
+    eraseExtension(prim, "KHR_draco_mesh_compression");
+    return true;
+}
+
+} // namespace
+#endif
+
 bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits& limits, const std::string& displayName,
                  Diagnostics& diagnostics) {
 #ifdef LAB_HAVE_DRACO
     auto meshes = doc.find("meshes");
-    auto views = doc.find("bufferViews");
     if (meshes == doc.end() || !meshes->is_array()) {
         return true;
     }
@@ -245,132 +428,13 @@ bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits&
             if (!ext) {
                 continue;
             }
-            const std::string primWhere = "meshes[" + std::to_string(mi) + "].primitives[" + std::to_string(pi) + "]";
-            const std::string where = primWhere + ".extensions.KHR_draco_mesh_compression";
-            auto fieldFail = [&](const std::string& key, const std::string& message) {
-                return fail(diagnostics, displayName, where + key, message);
-            };
-            std::optional<std::uint64_t> viewIndex = unsignedField(*ext, "bufferView");
-            if (!viewIndex || views == doc.end() || !views->is_array() || *viewIndex >= views->size() ||
-                !(*views)[*viewIndex].is_object()) {
-                return fieldFail(".bufferView", "missing, or no such bufferView");
+            const DracoSite site{displayName,
+                                 "meshes[" + std::to_string(mi) + "].primitives[" + std::to_string(pi) +
+                                     "].extensions.KHR_draco_mesh_compression",
+                                 diagnostics};
+            if (!decodeDracoPrimitive(doc, prim, *ext, buffers, limits, site)) {
+                return false;
             }
-            const nlohmann::json& view = (*views)[*viewIndex];
-            auto buffer = unsignedField(view, "buffer"), offset = unsignedField(view, "byteOffset", 0),
-                 length = unsignedField(view, "byteLength");
-            std::optional<BufferBytes> source =
-                buffer && offset && length ? range(buffers, *buffer, *offset, *length) : std::nullopt;
-            if (!source) {
-                return fail(diagnostics, displayName, "bufferViews[" + std::to_string(*viewIndex) + "]",
-                            "its byte range does not lie inside its buffer");
-            }
-            auto attributeIds = ext->find("attributes");
-            if (attributeIds == ext->end() || !attributeIds->is_object()) {
-                return fieldFail(".attributes", "missing or not an object");
-            }
-
-            // Decode. The library reports malformed data as a status; the catch is for allocation
-            // failures a hostile header might provoke.
-            std::unique_ptr<draco::Mesh> decoded;
-            std::string error;
-            try {
-                draco::DecoderBuffer input;
-                input.Init(reinterpret_cast<const char*>(source->data), source->size);
-                draco::Decoder decoder;
-                auto result = decoder.DecodeMeshFromBuffer(&input);
-                if (result.ok()) {
-                    decoded = std::move(result).value();
-                } else {
-                    error = result.status().error_msg_string();
-                }
-            } catch (const std::exception& e) {
-                error = e.what();
-            }
-            if (!decoded) {
-                return fail(diagnostics, displayName, where,
-                            "the Draco data does not decode: " + shortened(error.empty() ? "not a Draco mesh" : error));
-            }
-            const std::size_t points = decoded->num_points(), faces = decoded->num_faces();
-            if (faces == 0 || points == 0) {
-                return fail(diagnostics, displayName, where, "the Draco data decodes to no triangles");
-            }
-            if (points > limits.maxVertices || faces > limits.maxTriangles ||
-                24 * points + 12 * faces > limits.maxDecodedBytes - std::min(limits.maxDecodedBytes, buffers.decoded)) {
-                return fail(diagnostics, displayName, where, "the Draco data decodes to " + std::to_string(points) + " points and " +
-                                                                 std::to_string(faces) + " triangles, more than the lab reads");
-            }
-            // The accessors' own counts are not checked against what was decoded: the new accessors
-            // below take the decoded counts (Draco may split or merge points; readers such as
-            // three.js go by the decoded data too).
-            nlohmann::json& accessors = doc["accessors"];
-            std::vector<unsigned char> data;
-            nlohmann::json newAttributes = nlohmann::json::object();
-            for (const char* name : {"POSITION", "NORMAL"}) {
-                auto id = attributeIds->find(name);
-                if (id == attributeIds->end()) {
-                    continue;
-                }
-                const std::string attrWhere = ".attributes." + std::string(name);
-                const draco::PointAttribute* attribute =
-                    id->is_number_unsigned() && id->get<std::uint64_t>() <= 0xFFFFFFFFu
-                        ? decoded->GetAttributeByUniqueId(id->get<std::uint32_t>()) : nullptr;
-                if (!attribute) {
-                    return fieldFail(attrWhere, "names no attribute of the Draco data");
-                }
-                if (attribute->num_components() != 3) {
-                    return fieldFail(attrWhere, "the Draco attribute has " + std::to_string(attribute->num_components()) +
-                                                    " components, not 3");
-                }
-                if (!attribute->is_mapping_identity() && attribute->indices_map_size() < points) {
-                    return fieldFail(attrWhere, "the Draco attribute maps fewer values than the mesh has points");
-                }
-                if (!prim.contains("attributes") || !prim["attributes"].is_object() || !prim["attributes"].contains(name)) {
-                    continue; // the primitive does not use it
-                }
-                const std::size_t at = data.size();
-                data.resize(at + points * 12);
-                for (std::size_t p = 0; p < points; ++p) {
-                    draco::AttributeValueIndex value = attribute->mapped_index(draco::PointIndex(static_cast<std::uint32_t>(p)));
-                    float xyz[3];
-                    if (value.value() >= attribute->size() || !attribute->ConvertValue<float>(value, 3, xyz)) {
-                        return fieldFail(attrWhere, "point " + std::to_string(p) + " has no value in the Draco data");
-                    }
-                    std::memcpy(data.data() + at + p * 12, xyz, 12);
-                }
-                newAttributes[name] = at; // byte offset, turned into an accessor below
-            }
-            const std::size_t indicesAt = data.size();
-            data.resize(indicesAt + faces * 12);
-            for (std::size_t f = 0; f < faces; ++f) {
-                const draco::Mesh::Face& face = decoded->face(draco::FaceIndex(static_cast<std::uint32_t>(f)));
-                for (int k = 0; k < 3; ++k) {
-                    const std::uint32_t v = face[k].value();
-                    if (v >= points) {
-                        return fail(diagnostics, displayName, where, "triangle " + std::to_string(f) + " names point " +
-                                                                         std::to_string(v) + " of " + std::to_string(points));
-                    }
-                    std::memcpy(data.data() + indicesAt + (f * 3 + k) * 4, &v, 4);
-                }
-            }
-            // The decoded arrays as one new buffer, a view and an accessor each.
-            buffers.decoded += data.size();
-            const std::size_t bufferIndex = buffers.add(doc, std::move(data));
-            auto addAccessor = [&](std::size_t byteOffset, std::size_t byteLength, std::size_t count, int componentType,
-                                   const char* type) {
-                views->push_back({{"buffer", bufferIndex}, {"byteOffset", byteOffset}, {"byteLength", byteLength}});
-                if (!accessors.is_array()) {
-                    accessors = nlohmann::json::array();
-                }
-                accessors.push_back({{"bufferView", views->size() - 1}, {"componentType", componentType},
-                                     {"count", count}, {"type", type}});
-                return accessors.size() - 1;
-            };
-            for (auto& [name, at] : newAttributes.items()) {
-                prim["attributes"][name] = addAccessor(at.get<std::size_t>(), points * 12, points, 5126, "VEC3");
-            }
-            prim["indices"] = addAccessor(indicesAt, faces * 12, faces * 3, 5125, "SCALAR");
-            prim["mode"] = 4; // Draco decodes triangles, whatever mode the primitive named
-            eraseExtension(prim, "KHR_draco_mesh_compression");
         }
     }
 #else

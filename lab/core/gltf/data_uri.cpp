@@ -24,114 +24,137 @@ struct Frame {
 
 // The spans of every buffers[i].uri string, in text order; nullopt for text this scanner does not
 // follow (it then changes nothing). Iterative: its depth costs a vector, not the stack.
-std::optional<std::vector<UriSpan>> findBufferUris(std::string_view s, int maxDepth) {
-    std::vector<UriSpan> spans;
-    std::vector<Frame> stack;
-    bool expectKey = false, sawBuffers = false;
-    std::size_t i = 0;
-    auto skipSpace = [&] {
-        while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\n' || s[i] == '\r')) {
-            ++i;
-        }
-    };
-    // Returns the contents of the string starting at s[i] == '"', and moves past it.
-    auto readString = [&](bool& escaped) -> std::optional<std::string_view> {
-        std::size_t start = ++i;
-        escaped = false;
-        while (i < s.size() && s[i] != '"') {
-            if (s[i] == '\\') {
-                escaped = true;
-                ++i;
-            }
-            ++i;
-        }
-        if (i >= s.size()) {
-            return std::nullopt;
-        }
-        return s.substr(start, i++ - start);
-    };
-    while (true) {
-        skipSpace();
-        if (i >= s.size()) {
-            return stack.empty() ? std::optional(spans) : std::nullopt;
-        }
-        char c = s[i];
-        if (expectKey) {
-            if (c == '}') { // an empty object
-                expectKey = false;
-                continue;
-            }
-            bool escaped = false;
-            std::optional<std::string_view> key = c == '"' ? readString(escaped) : std::nullopt;
+class UriScanner {
+public:
+    UriScanner(std::string_view text, int maxDepth) : s_(text), maxDepth_(static_cast<std::size_t>(maxDepth)) {}
+
+    std::optional<std::vector<UriSpan>> scan() {
+        while (true) {
             skipSpace();
-            if (!key || i >= s.size() || s[i] != ':') {
+            if (i_ >= s_.size()) {
+                return stack_.empty() ? std::optional(spans_) : std::nullopt;
+            }
+            if (!(expectKey_ ? key() : token(s_[i_]))) {
                 return std::nullopt;
             }
-            ++i;
-            stack.back().key = *key;
-            expectKey = false;
-            if (stack.size() == 1 && *key == "buffers") {
-                if (sawBuffers) {
-                    return std::nullopt; // a second "buffers": which one counts is the parser's business
-                }
-                sawBuffers = true;
-            }
-            continue;
-        }
-        if (c == '{' || c == '[') {
-            if (stack.size() >= static_cast<std::size_t>(maxDepth)) {
-                return std::nullopt; // deeper than the loader reads at all
-            }
-            stack.push_back({c == '{', {}, 0});
-            expectKey = c == '{';
-            ++i;
-            continue;
-        }
-        if (c == '}' || c == ']') {
-            if (stack.empty() || stack.back().object != (c == '}')) {
-                return std::nullopt;
-            }
-            stack.pop_back();
-            ++i;
-            continue;
-        }
-        if (c == ',') {
-            if (stack.empty()) {
-                return std::nullopt;
-            }
-            if (stack.back().object) {
-                expectKey = true;
-            } else {
-                ++stack.back().index;
-            }
-            ++i;
-            continue;
-        }
-        if (c == '"') {
-            std::size_t begin = i + 1;
-            bool escaped = false;
-            std::optional<std::string_view> value = readString(escaped);
-            if (!value) {
-                return std::nullopt;
-            }
-            // root { "buffers": [ i: { "uri": <here> } ] }
-            if (stack.size() == 3 && stack[0].object && stack[0].key == "buffers" && !stack[1].object && stack[2].object &&
-                stack[2].key == "uri" && !escaped) {
-                spans.push_back({stack[1].index, begin, begin + value->size()});
-            }
-            continue;
-        }
-        // A number, true, false or null: up to the next delimiter.
-        std::size_t start = i;
-        while (i < s.size() && s[i] != ',' && s[i] != '}' && s[i] != ']' && s[i] != ' ' && s[i] != '\n' && s[i] != '\r' &&
-               s[i] != '\t') {
-            ++i;
-        }
-        if (i == start) {
-            return std::nullopt;
         }
     }
-}
+
+private:
+    void skipSpace() {
+        while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\n' || s_[i_] == '\r')) {
+            ++i_;
+        }
+    }
+
+    // The contents of the string starting at s_[i_] == '"'; moves past it.
+    std::optional<std::string_view> readString(bool& escaped) {
+        std::size_t start = ++i_;
+        escaped = false;
+        while (i_ < s_.size() && s_[i_] != '"') {
+            if (s_[i_] == '\\') {
+                escaped = true;
+                ++i_;
+            }
+            ++i_;
+        }
+        if (i_ >= s_.size()) {
+            return std::nullopt;
+        }
+        return s_.substr(start, i_++ - start);
+    }
+
+    // An object's key and its ':' (or the '}' of an empty object). False for text not followed.
+    bool key() {
+        if (s_[i_] == '}') { // an empty object
+            expectKey_ = false;
+            return true;
+        }
+        bool escaped = false;
+        std::optional<std::string_view> key = s_[i_] == '"' ? readString(escaped) : std::nullopt;
+        skipSpace();
+        if (!key || i_ >= s_.size() || s_[i_] != ':') {
+            return false;
+        }
+        ++i_;
+        stack_.back().key = *key;
+        expectKey_ = false;
+        if (stack_.size() == 1 && *key == "buffers") {
+            if (sawBuffers_) {
+                return false; // a second "buffers": which one counts is the parser's business
+            }
+            sawBuffers_ = true;
+        }
+        return true;
+    }
+
+    // A bracket, a comma, a string value or a scalar. False for text not followed.
+    bool token(char c) {
+        if (c == '{' || c == '[') {
+            if (stack_.size() >= maxDepth_) {
+                return false; // deeper than the loader reads at all
+            }
+            stack_.push_back({c == '{', {}, 0});
+            expectKey_ = c == '{';
+            ++i_;
+            return true;
+        }
+        if (c == '}' || c == ']') {
+            if (stack_.empty() || stack_.back().object != (c == '}')) {
+                return false;
+            }
+            stack_.pop_back();
+            ++i_;
+            return true;
+        }
+        if (c == ',') {
+            if (stack_.empty()) {
+                return false;
+            }
+            if (stack_.back().object) {
+                expectKey_ = true;
+            } else {
+                ++stack_.back().index;
+            }
+            ++i_;
+            return true;
+        }
+        if (c == '"') {
+            return stringValue();
+        }
+        // A number, true, false or null: up to the next delimiter.
+        std::size_t start = i_;
+        while (i_ < s_.size() && s_[i_] != ',' && s_[i_] != '}' && s_[i_] != ']' && s_[i_] != ' ' && s_[i_] != '\n' &&
+               s_[i_] != '\r' && s_[i_] != '\t') {
+            ++i_;
+        }
+        return i_ != start;
+    }
+
+    // A string value, kept when it is root { "buffers": [ i: { "uri": <here> } ] }.
+    bool stringValue() {
+        std::size_t begin = i_ + 1;
+        bool escaped = false;
+        std::optional<std::string_view> value = readString(escaped);
+        if (!value) {
+            return false;
+        }
+        if (stack_.size() == 3 && stack_[0].object && stack_[0].key == "buffers" && !stack_[1].object &&
+            stack_[2].object && stack_[2].key == "uri" && !escaped) {
+            spans_.push_back({stack_[1].index, begin, begin + value->size()});
+        }
+        return true;
+    }
+
+    std::string_view s_;
+    std::size_t maxDepth_;
+    std::size_t i_ = 0;
+    std::vector<UriSpan> spans_;
+    std::vector<Frame> stack_;
+    bool expectKey_ = false, sawBuffers_ = false;
+};
+
+std::optional<std::vector<UriSpan>> findBufferUris(std::string_view s, int maxDepth) { return UriScanner(s, maxDepth).scan(); }
 
 constexpr std::array<std::int8_t, 256> kBase64 = [] {
     std::array<std::int8_t, 256> t{};
