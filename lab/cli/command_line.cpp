@@ -151,6 +151,98 @@ bool figureOutputs(const FigureArguments& a, FigureOutputs& out) {
     return true;
 }
 
+// `lab render`'s arguments as typed.
+struct RenderArguments {
+    std::vector<std::string> presets;
+    std::string out, size = "512x512";
+    std::vector<std::string> sweeps;
+};
+
+CLI::App* addRenderCommand(CLI::App& app, RenderArguments& a) {
+    CLI::App* render = app.add_subcommand("render", "Render presets headless to PNG (no display or GPU needed)");
+    render->add_option("presets", a.presets, "Preset files")->required();
+    render->add_option("--out", a.out, "The PNG file; a folder when there are several presets")->required()->check(kNotEmpty);
+    render->add_option("--size", a.size, "Image size (with --sweep: each cell's)")->check(SizeValidator())->capture_default_str();
+    render->add_option("--sweep", a.sweeps,
+                       "KEY=V1,V2,...: one preset as a labelled grid, KEY's values along the columns (a second "
+                       "--sweep: down the rows), e.g. --sweep material.shininess=10,20,30,50")
+        ->allow_extra_args(false)
+        ->take_all();
+    return render;
+}
+
+// False (with the message printed) for a --sweep that does not parse.
+bool renderLine(const RenderArguments& a, CommandLine& line) {
+    std::string error;
+    line.command = CommandLine::Command::Render;
+    line.presets = toPaths(a.presets);
+    line.out = a.out;
+    line.size = *parseSize(a.size, error); // validated by SizeValidator
+    for (const std::string& text : a.sweeps) {
+        std::optional<SweepAxis> axis = parseSweepAxis(text, error);
+        if (!axis) {
+            print(stderr, "lab render: --sweep " + error + "\n");
+            return false;
+        }
+        line.sweeps.push_back(std::move(*axis));
+    }
+    return true;
+}
+
+// `lab plot`'s arguments as typed.
+struct PlotArguments {
+    std::string preset, out, albedoOut;
+    FigureArguments figure;
+};
+
+CLI::App* addPlotCommand(CLI::App& app, CommandLine& line, PlotArguments& a) {
+    CLI::App* plot = app.add_subcommand("plot", "Write the polar-plot data (reflected intensity) and the albedo as CSV");
+    plot->add_option("preset", a.preset, "Preset file")->required();
+    plot->add_option("--out", a.out, "CSV file to write the polar-plot data to")->check(kNotEmpty);
+    plot->add_option("--albedo", a.albedoOut, "CSV file to write the albedo of each term against the incident angle to")
+        ->check(kNotEmpty);
+    plot->add_option("--incident-deg", line.incidentDeg, "Incident angle in degrees (default: the preset's plot.incident_deg)")
+        ->check(kFinite)
+        ->check(CLI::Range(limits::kPlotIncidentDeg.min, limits::kPlotIncidentDeg.max));
+    addFigureOptions(plot, a.figure);
+    return plot;
+}
+
+// False (with the message printed) when there is nothing to write or a figure option is idle.
+bool plotLine(const PlotArguments& a, CommandLine& line) {
+    line.command = CommandLine::Command::Plot;
+    line.presets = {a.preset};
+    line.out = a.out;
+    if (!a.albedoOut.empty()) {
+        line.albedoOut = a.albedoOut;
+    }
+    if (!figureOutputs(a.figure, line.figure)) {
+        return false;
+    }
+    if (a.out.empty() && a.albedoOut.empty() && !line.figure.any()) {
+        print(stderr, "lab plot: nothing to write: give --out FILE.csv (the polar plot), --albedo FILE.csv (the albedo), "
+                      "--svg/--png FILE (a figure) or several\n");
+        return false;
+    }
+    return true;
+}
+
+void checkLine(const CheckArguments& a, CommandLine& line) {
+    std::string error;
+    line.command = CommandLine::Command::Check;
+    line.presets = toPaths(a.presets);
+    line.check.golden = a.golden;
+    line.check.report = a.report;
+    line.check.size = *parseSize(a.size, error);           // validated by SizeValidator
+    line.check.sweepSize = *parseSize(a.sweepSize, error); // likewise
+    if (!a.junit.empty()) {
+        line.check.junit = a.junit;
+    }
+    if (!a.html.empty()) {
+        line.check.html = a.html;
+    }
+}
+
 } // namespace
 
 std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* argv) {
@@ -174,32 +266,10 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     // For GUI tests: the screen rectangles of the main widgets, rewritten every frame.
     app.add_option("--layout-file", layoutFile, "")->group("");
 
-    std::vector<std::string> renderPresets;
-    std::string renderOut, renderSize = "512x512";
-    CLI::App* render = app.add_subcommand("render", "Render presets headless to PNG (no display or GPU needed)");
-    render->add_option("presets", renderPresets, "Preset files")->required();
-    render->add_option("--out", renderOut, "The PNG file; a folder when there are several presets")->required()->check(kNotEmpty);
-    render->add_option("--size", renderSize, "Image size (with --sweep: each cell's)")->check(SizeValidator())->capture_default_str();
-    std::vector<std::string> sweeps;
-    render->add_option("--sweep", sweeps,
-                       "KEY=V1,V2,...: one preset as a labelled grid, KEY's values along the columns (a second "
-                       "--sweep: down the rows), e.g. --sweep material.shininess=10,20,30,50")
-        ->allow_extra_args(false)
-        ->take_all();
-
-    std::string plotPreset, plotOut;
-    std::string albedoOut;
-    CLI::App* plot = app.add_subcommand("plot", "Write the polar-plot data (reflected intensity) and the albedo as CSV");
-    plot->add_option("preset", plotPreset, "Preset file")->required();
-    plot->add_option("--out", plotOut, "CSV file to write the polar-plot data to")->check(kNotEmpty);
-    plot->add_option("--albedo", albedoOut, "CSV file to write the albedo of each term against the incident angle to")
-        ->check(kNotEmpty);
-    plot->add_option("--incident-deg", line.incidentDeg, "Incident angle in degrees (default: the preset's plot.incident_deg)")
-        ->check(kFinite)
-        ->check(CLI::Range(limits::kPlotIncidentDeg.min, limits::kPlotIncidentDeg.max));
-    FigureArguments figure;
-    addFigureOptions(plot, figure);
-
+    RenderArguments renderArguments;
+    CLI::App* render = addRenderCommand(app, renderArguments);
+    PlotArguments plotArguments;
+    CLI::App* plot = addPlotCommand(app, line, plotArguments);
     CheckArguments checkArguments;
     CLI::App* check = addCheckCommand(app, line, checkArguments);
 
@@ -225,47 +295,11 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     if (!windowSize.empty()) {
         line.windowSize = *parseSize(windowSize, error); // validated by SizeValidator
     }
-    if (*render) {
-        line.command = CommandLine::Command::Render;
-        line.presets = toPaths(renderPresets);
-        line.out = renderOut;
-        line.size = *parseSize(renderSize, error); // validated by SizeValidator
-        for (const std::string& text : sweeps) {
-            std::optional<SweepAxis> axis = parseSweepAxis(text, error);
-            if (!axis) {
-                print(stderr, "lab render: --sweep " + error + "\n");
-                return kExitBadInput;
-            }
-            line.sweeps.push_back(std::move(*axis));
-        }
-    } else if (*plot) {
-        line.command = CommandLine::Command::Plot;
-        line.presets = {plotPreset};
-        line.out = plotOut;
-        if (!albedoOut.empty()) {
-            line.albedoOut = albedoOut;
-        }
-        if (!figureOutputs(figure, line.figure)) {
-            return kExitBadInput;
-        }
-        if (plotOut.empty() && albedoOut.empty() && !line.figure.any()) {
-            print(stderr, "lab plot: nothing to write: give --out FILE.csv (the polar plot), --albedo FILE.csv (the albedo), "
-                          "--svg/--png FILE (a figure) or several\n");
-            return kExitBadInput;
-        }
-    } else if (*check) {
-        line.command = CommandLine::Command::Check;
-        line.presets = toPaths(checkArguments.presets);
-        line.check.golden = checkArguments.golden;
-        line.check.report = checkArguments.report;
-        line.check.size = *parseSize(checkArguments.size, error);           // validated by SizeValidator
-        line.check.sweepSize = *parseSize(checkArguments.sweepSize, error); // likewise
-        if (!checkArguments.junit.empty()) {
-            line.check.junit = checkArguments.junit;
-        }
-        if (!checkArguments.html.empty()) {
-            line.check.html = checkArguments.html;
-        }
+    if ((*render && !renderLine(renderArguments, line)) || (*plot && !plotLine(plotArguments, line))) {
+        return kExitBadInput;
+    }
+    if (*check) {
+        checkLine(checkArguments, line);
     }
     return line;
 }
