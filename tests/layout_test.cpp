@@ -20,10 +20,10 @@ TEST(Layout, WideWindowHasThreeColumnsThatTileIt) {
     Layout l = computeLayout({1600, 900, 1.0f, true, true});
     EXPECT_FALSE(l.plotsBelow);
     EXPECT_FLOAT_EQ(l.panel.x, 0.0f);
-    EXPECT_FLOAT_EQ(l.view.x, l.panel.w);
-    EXPECT_FLOAT_EQ(l.plots.x, l.view.x + l.view.w);
+    EXPECT_FLOAT_EQ(l.viewport.x, l.panel.w);
+    EXPECT_FLOAT_EQ(l.plots.x, l.viewport.x + l.viewport.w);
     EXPECT_FLOAT_EQ(l.plots.x + l.plots.w, 1600.0f);
-    EXPECT_FLOAT_EQ(l.view.h, 900.0f);
+    EXPECT_FLOAT_EQ(l.viewport.h, 900.0f);
 }
 
 // The projectors' sizes, at every presenter scale: three columns, all inside the window.
@@ -32,8 +32,8 @@ TEST(Layout, ProjectorScreensKeepThePlotsBesideTheModelAtEveryScale) {
         for (float scale : {1.0f, 1.5f, 2.0f, 2.5f}) {
             Layout l = computeLayout({w, h, scale, true, true});
             EXPECT_FALSE(l.plotsBelow) << w << "x" << h << " at " << scale;
-            EXPECT_GE(l.view.w, 240.0f);
-            for (const Rect* r : {&l.panel, &l.view, &l.plots}) {
+            EXPECT_GE(l.viewport.w, 240.0f);
+            for (const Rect* r : {&l.panel, &l.viewport, &l.plots}) {
                 expectInside(*r, w, h, "projector");
             }
         }
@@ -50,12 +50,12 @@ TEST(Layout, PortraitAndNarrowWindowsAreCompactWithTheModelFirst) {
                                     std::to_string(scale) + ", " + toString(tab);
                 const Layout l = computeLayout({w, h, scale, true, true, tab});
                 EXPECT_TRUE(l.compact) << where;
-                EXPECT_FLOAT_EQ(l.view.x, 0.0f) << where;
-                EXPECT_FLOAT_EQ(l.view.y, 0.0f) << where;
-                EXPECT_FLOAT_EQ(l.view.w, w) << where;
-                EXPECT_GE(l.view.h, 0.3f * h) << where;
-                EXPECT_LE(l.view.h, 0.6f * h) << where;
-                EXPECT_FLOAT_EQ(l.tabs.y, l.view.h) << where;
+                EXPECT_FLOAT_EQ(l.viewport.x, 0.0f) << where;
+                EXPECT_FLOAT_EQ(l.viewport.y, 0.0f) << where;
+                EXPECT_FLOAT_EQ(l.viewport.w, w) << where;
+                EXPECT_GE(l.viewport.h, 0.3f * h) << where;
+                EXPECT_LE(l.viewport.h, 0.6f * h) << where;
+                EXPECT_FLOAT_EQ(l.tabs.y, l.viewport.h) << where;
                 EXPECT_FLOAT_EQ(l.tabs.w, w) << where;
                 const Rect& contents = tab == PanelTab::Plots ? l.plots : l.panel;
                 const Rect& other = tab == PanelTab::Plots ? l.panel : l.plots;
@@ -63,7 +63,7 @@ TEST(Layout, PortraitAndNarrowWindowsAreCompactWithTheModelFirst) {
                 EXPECT_FLOAT_EQ(contents.y, l.tabs.y + l.tabs.h) << where;
                 EXPECT_FLOAT_EQ(contents.y + contents.h, h) << where;
                 EXPECT_FLOAT_EQ(contents.w, w) << where;
-                for (const Rect* r : {&l.view, &l.tabs, &contents}) {
+                for (const Rect* r : {&l.viewport, &l.tabs, &contents}) {
                     expectInside(*r, w, h, where.c_str());
                 }
             }
@@ -76,9 +76,9 @@ TEST(Layout, CompactWithoutTheControlPanelShowsThePlotsBelowWithoutTabs) {
     EXPECT_TRUE(l.compact);
     EXPECT_EQ(l.tab, PanelTab::Plots);
     EXPECT_FLOAT_EQ(l.tabs.h, 0.0f);
-    EXPECT_FLOAT_EQ(l.plots.y, l.view.h);
+    EXPECT_FLOAT_EQ(l.plots.y, l.viewport.h);
     Layout none = computeLayout({390, 844, 1.0f, false, false});
-    EXPECT_FLOAT_EQ(none.view.h, 844.0f);
+    EXPECT_FLOAT_EQ(none.viewport.h, 844.0f);
 }
 
 TEST(Layout, ProjectorsAndLandscapeTabletsKeepTheirColumns) {
@@ -91,41 +91,41 @@ TEST(Layout, PresenterScaleGrowsThePanelsAndTheViewKeepsTheRest) {
     Layout normal = computeLayout({1920, 1080, 1.0f, true, true});
     Layout large = computeLayout({1920, 1080, 2.0f, true, true});
     EXPECT_GT(large.panel.w, normal.panel.w);
-    EXPECT_FLOAT_EQ(large.panel.w + large.view.w + large.plots.w, 1920.0f);
+    EXPECT_FLOAT_EQ(large.panel.w + large.viewport.w + large.plots.w, 1920.0f);
 }
 
 TEST(Layout, HidingTheControlPanelGivesItsRoomToTheModel) {
     Layout all = computeLayout({1024, 768, 1.0f, true, true});
     Layout plots = computeLayout({1024, 768, 1.0f, false, true});
     EXPECT_FLOAT_EQ(plots.panel.w, 0.0f);
-    EXPECT_FLOAT_EQ(plots.view.x, 0.0f);
+    EXPECT_FLOAT_EQ(plots.viewport.x, 0.0f);
     EXPECT_GE(plots.plots.w, all.plots.w); // the plots may widen too (presenter mode on a projector)
-    EXPECT_GT(plots.view.w, all.view.w);
-    EXPECT_GE(plots.view.w, 0.5f * 1024);
+    EXPECT_GT(plots.viewport.w, all.viewport.w);
+    EXPECT_GE(plots.viewport.w, 0.5f * 1024);
 }
 
 TEST(Layout, HiddenPanelsGiveTheViewTheWholeWindow) {
     Layout l = computeLayout({800, 600, 1.0f, false, false});
-    EXPECT_FLOAT_EQ(l.view.w, 800.0f);
-    EXPECT_FLOAT_EQ(l.view.h, 600.0f);
+    EXPECT_FLOAT_EQ(l.viewport.w, 800.0f);
+    EXPECT_FLOAT_EQ(l.viewport.h, 600.0f);
     EXPECT_FLOAT_EQ(l.panel.w, 0.0f);
 }
 
 TEST(Layout, CompareHalvesSplitTheViewAndStackWhenSideBySideWouldBeNarrow) {
     Layout wide = computeLayout({1600, 600, 1.0f, false, false});
     EXPECT_FALSE(wide.compareStacked);
-    EXPECT_FLOAT_EQ(wide.viewA.w + wide.viewB.w, wide.view.w);
-    EXPECT_FLOAT_EQ(wide.viewB.x, wide.viewA.x + wide.viewA.w);
+    EXPECT_FLOAT_EQ(wide.halves[0].w + wide.halves[1].w, wide.viewport.w);
+    EXPECT_FLOAT_EQ(wide.halves[1].x, wide.halves[0].x + wide.halves[0].w);
     Layout tall = computeLayout({600, 900, 1.0f, false, false});
     EXPECT_TRUE(tall.compareStacked);
-    EXPECT_FLOAT_EQ(tall.viewA.h + tall.viewB.h, tall.view.h);
-    EXPECT_FLOAT_EQ(tall.viewB.y, tall.viewA.y + tall.viewA.h);
+    EXPECT_FLOAT_EQ(tall.halves[0].h + tall.halves[1].h, tall.viewport.h);
+    EXPECT_FLOAT_EQ(tall.halves[1].y, tall.halves[0].y + tall.halves[0].h);
 }
 
 TEST(Layout, ATinyWindowStillHasAView) {
     Layout l = computeLayout({1, 1, 1.0f, true, true});
-    EXPECT_GE(l.view.w, 1.0f);
-    EXPECT_GE(l.view.h, 1.0f);
+    EXPECT_GE(l.viewport.w, 1.0f);
+    EXPECT_GE(l.viewport.h, 1.0f);
 }
 
 } // namespace

@@ -243,8 +243,8 @@ TEST(Workspace, ADroppedModelInsideTheFolderBecomesTheModelAndOneOutsideIsRefuse
     f.ws.drop({(f.dir.path() / "trefoil.glb").string()});
     EXPECT_TRUE(f.ws.takeProblems().empty());
     EXPECT_EQ(f.ws.a().model.gltf, "trefoil.glb");
-    ASSERT_TRUE(f.ws.meshA());
-    EXPECT_GT(f.ws.meshA()->indices.size(), 0u);
+    ASSERT_TRUE(f.ws.mesh(Side::A));
+    EXPECT_GT(f.ws.mesh(Side::A)->indices.size(), 0u);
 
     TempFolder elsewhere;
     fs::copy_file(kModel, elsewhere.path() / "outside.glb");
@@ -272,7 +272,7 @@ TEST(Workspace, ADroppedModelIsFramedInOneUndoStepWithTheModel) {
     f.ws.endFrame(false);
     EXPECT_TRUE(f.ws.takeProblems().empty());
     ASSERT_EQ(f.ws.a().model.gltf, "trefoil.glb");
-    std::optional<Sphere> bounds = drawnBounds(*f.ws.meshA(), f.ws.a().model);
+    std::optional<Sphere> bounds = drawnBounds(*f.ws.mesh(Side::A), f.ws.a().model);
     ASSERT_TRUE(bounds);
     EXPECT_EQ(f.ws.a().camera, framedCamera(before.camera, *bounds, 2.0f)) << "along the current direction";
     EXPECT_EQ(f.ws.b().camera, f.ws.a().camera);
@@ -306,7 +306,7 @@ TEST(Workspace, APresetWithoutACameraOpensFramedAndKeepsThatCamera) {
     f.ws.open(bare);
     ASSERT_TRUE(f.ws.takeProblems().empty());
     ASSERT_EQ(f.ws.document().file(), bare);
-    std::optional<Sphere> bounds = drawnBounds(*f.ws.meshA(), f.ws.a().model);
+    std::optional<Sphere> bounds = drawnBounds(*f.ws.mesh(Side::A), f.ws.a().model);
     ASSERT_TRUE(bounds);
     Camera framed = framedCamera(Camera{}, *bounds);
     EXPECT_EQ(f.ws.a().camera, framed);
@@ -344,10 +344,10 @@ TEST(Workspace, SavingElsewhereRebasesTheModelPath) {
 
 TEST(Workspace, AModelEditThatCannotLoadGoesBackWithAProblem) {
     Fixture f;
-    ASSERT_TRUE(f.ws.meshA());
+    ASSERT_TRUE(f.ws.mesh(Side::A));
     Model good = f.ws.a().model;
     f.ws.a().model.gltf = "missing.glb";
-    EXPECT_TRUE(f.ws.meshA());
+    EXPECT_TRUE(f.ws.mesh(Side::A));
     EXPECT_EQ(f.ws.a().model, good);
     EXPECT_EQ(f.ws.takeProblems().size(), 1u);
 }

@@ -2,6 +2,7 @@
 #include "app/app.h"
 
 #include "app/figure_export.h"
+#include "app/orbit_clock.h"
 #include "app/sweep_image.h"
 #include "app/viewport_cache.h"
 #include "core/io/file_io.h"
@@ -28,9 +29,6 @@ constexpr float kMinPresenterScale = 1.5f, kMaxPresenterScale = 2.5f, kPresenter
 constexpr float kToastSeconds = 4.0f;
 constexpr float kTouchScale = 1.2f; // a finger's UI: larger text as well as larger widgets
 const glm::vec3 kWindowBackground(0.09f, 0.09f, 0.11f);
-// While a light orbits, a frame every 1/60 s; a clock never jumps more than kMaxOrbitStep at once
-// (the first frame after an idle wait would otherwise turn the light by the whole wait).
-constexpr float kOrbitFrameSeconds = 1.0f / 60.0f, kMaxOrbitStep = 0.1f;
 
 } // namespace
 
@@ -77,28 +75,22 @@ struct App::Impl {
     float frameMs = 0.0f;   // what the last frame that drew the 3D view cost
     bool viewDrawn = false; // by the last frame
     bool started = false;   // the workspace opened its first preset (in the first frame, App::frame)
-    CachedView viewA, viewB; // the 3D views kept between frames
+    std::array<CachedView, 2> views; // A's and B's renders, kept between frames
     ViewResolution resolution;
     int viewSamples = 0;     // what the GL offers of AppOptions::viewSamples
     unsigned long long frames = 0;
     bool screenshotRequested = false, toggleFullscreen = false, pickFile = false, copyLink = false;
 
-    // The moving lights (core/scene/light_orbit.h). The document keeps the preset's positions (what Save
-    // writes, what screenshots and `lab render` show); the live view, its markers and the probe
-    // show orbitedScene(). Each light's clock runs while its orbit is on and nothing is being
-    // dragged or edited, and starts again from 0 when its orbit is switched off or a scene opens.
-    LightMotion motionA, motionB;
-    unsigned motionScene = 0;
-    float orbitSleep = kOrbitFrameSeconds; // the wait between orbit frames, corrected to a steady rate
-    bool orbitFrame = false;               // the last frame was asked for by the orbit
-    struct OrbitCentre {
-        const Mesh* mesh = nullptr;
-        Model model;
-        glm::vec3 centre{0.0f};
-    } centreA, centreB;
-    bool advanceOrbits(float deltaTime, bool paused);
-    static glm::vec3 centreOf(OrbitCentre& cache, const std::shared_ptr<const Mesh>& mesh, const Model& model);
-    Preset shownA() { return anyOrbit(workspace.a()) ? orbitedScene(workspace.a(), motionA) : workspace.a(); }
+    OrbitClock orbits; // the moving lights (app/orbit_clock.h)
+
+    // A side of the comparison as this frame shows it: A, and B in compare mode.
+    struct ShownSide {
+        std::size_t index;                // 0: A, 1: B
+        Preset shown;                     // the preset with its lights where their orbits have them
+        std::shared_ptr<const Mesh> mesh; // null while its model does not load
+        ui::Rect rect;                    // where it goes in the window
+    };
+    std::vector<ShownSide> sides(const ui::Layout& layout, bool orbiting);
 
     explicit Impl(AppOptions o)
         : options(std::move(o)),
@@ -129,7 +121,7 @@ struct App::Impl {
     void collectMessages(float deltaTime);
     void drawViews(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy);
     bool updateViews(const ui::Layout& layout, const FrameInput& in, float scale);
-    std::vector<std::pair<const CachedView*, Viewport>> shown; // this frame's views and where they go
+    std::vector<std::pair<const CachedView*, Viewport>> shown; // this frame's renders and where they go
     void screenshot(const ui::Layout& layout, const FrameInput& in);
     void writeLayoutFile(const FrameInput& in, bool settled);
 };
@@ -163,7 +155,7 @@ ui::ScreenModel App::Impl::screenModel() {
                  toastLeft > 0.0f ? toast.c_str() : nullptr, caption,
                  probe && probeOpen ? std::optional<glm::vec3>(probe->positionWorld) : std::nullopt};
     m.lightShapes = lightShapes;
-    m.motion = anyOrbit(workspace.a()) ? &motionA : nullptr;
+    m.motion = anyOrbit(workspace.a()) ? &orbits.motion(0) : nullptr;
     return m;
 }
 
@@ -265,12 +257,13 @@ void App::Impl::compileShaders(bool builtin) {
 
 void App::Impl::probeAt(const ui::ViewEvents& view) {
     const ui::Rect& r = *view.probed;
-    std::shared_ptr<const Mesh> mesh = workspace.meshA();
+    std::shared_ptr<const Mesh> mesh = workspace.mesh(Side::A);
     if (!mesh) {
         return;
     }
     glm::vec2 ndc(2.0f * (view.probeX - r.x) / r.w - 1.0f, 1.0f - 2.0f * (view.probeY - r.y) / r.h);
-    probe = probePixel(viewed(shownA(), workspace.view.mode), *mesh, ndc, r.w / r.h); // the light where it is shown
+    Preset scene = orbits.shown(workspace.a(), 0); // the light where it is shown
+    probe = probePixel(viewed(scene, workspace.view.mode), *mesh, ndc, r.w / r.h);
     probeOpen = probe.has_value(); // a click beside the model closes the probe
     probeScene = workspace.scenesOpened();
     if (!probe) {
@@ -300,96 +293,72 @@ void App::Impl::collectMessages(float deltaTime) {
 // The 3D view
 //----------------------------------------------------------------------------------------
 
-// Draws A (and B in compare mode) at the layout's rectangles, shifted by (dx, dy) window units,
-// into a framebuffer whose height is `windowHeight` window units.
+// A, and B in compare mode: what each shows (`orbiting`: with its lights where the orbits have
+// them) and where.
+std::vector<App::Impl::ShownSide> App::Impl::sides(const ui::Layout& layout, bool orbiting) {
+    std::vector<ShownSide> out;
+    for (Side side : kSides) {
+        if (side == Side::B && !workspace.view.compare) {
+            break;
+        }
+        const std::size_t i = indexOf(side);
+        const Preset& preset = workspace.preset(side);
+        out.push_back({i, orbiting ? orbits.shown(preset, i) : preset, workspace.mesh(side),
+                       layout.viewportOf(static_cast<int>(i), workspace.view.compare)});
+    }
+    return out;
+}
+
+namespace {
+
+// A window rectangle (window units, y down) as a GL viewport (pixels, y up) of a framebuffer
+// `windowHeight` units high, shifted by (dx, dy) units.
+Viewport toViewport(const ui::Rect& r, float toPixels, float windowHeight, float dx = 0.0f, float dy = 0.0f) {
+    return Viewport{static_cast<int>((r.x + dx) * toPixels), static_cast<int>((windowHeight - (r.y + dy + r.h)) * toPixels),
+                    std::max(1, static_cast<int>(r.w * toPixels)), std::max(1, static_cast<int>(r.h * toPixels))};
+}
+
+} // namespace
+
+// Draws A (and B in compare mode) as the document has them at the layout's rectangles, shifted
+// by (dx, dy) window units, into a framebuffer whose height is `windowHeight` window units.
 void App::Impl::drawViews(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy) {
-    auto viewport = [&](const ui::Rect& r) {
-        return Viewport{static_cast<int>((r.x + dx) * toPixels), static_cast<int>((windowHeight - (r.y + dy + r.h)) * toPixels),
-                        std::max(1, static_cast<int>(r.w * toPixels)), std::max(1, static_cast<int>(r.h * toPixels))};
-    };
     const ViewSettings& view = workspace.view;
-    DrawOptions drawOptions{view.mode == ViewMode::Normals};
-    if (std::shared_ptr<const Mesh> mesh = workspace.meshA()) {
-        renderer.draw(viewed(workspace.a(), view.mode), mesh, viewport(view.compare ? layout.viewA : layout.view), drawOptions);
-    }
-    if (!view.compare) {
-        return;
-    }
-    if (std::shared_ptr<const Mesh> mesh = workspace.meshB()) {
-        renderer.draw(viewed(workspace.b(), view.mode), mesh, viewport(layout.viewB), drawOptions);
+    for (const ShownSide& side : sides(layout, false)) {
+        if (side.mesh) {
+            renderer.draw(viewed(side.shown, view.mode), side.mesh, toViewport(side.rect, toPixels, windowHeight, dx, dy),
+                          DrawOptions{view.mode == ViewMode::Normals});
+        }
     }
 }
 
-// The live frame's views: each drawn into its offscreen copy when what it shows changed (at
-// `scale` of its size while dragging); where they go in the window is kept for compose(). True
-// when any was drawn.
+// The live frame's renders, with the lights where their orbits have them: each drawn into its
+// offscreen copy when what it shows changed (at `scale` of its size while dragging); where they
+// go in the window is kept for compose(). True when any was drawn.
 bool App::Impl::updateViews(const ui::Layout& layout, const FrameInput& in, float scale) {
     float toPixels = static_cast<float>(in.framebufferWidth) / in.windowWidth;
     const ViewSettings& view = workspace.view;
     shown.clear();
-    auto update = [&](CachedView& cache, const Preset& preset, std::shared_ptr<const Mesh> mesh, const ui::Rect& r) {
-        Viewport dest{static_cast<int>(r.x * toPixels), static_cast<int>((in.windowHeight - (r.y + r.h)) * toPixels),
-                      std::max(1, static_cast<int>(r.w * toPixels)), std::max(1, static_cast<int>(r.h * toPixels))};
-        ViewKey key{viewed(preset, view.mode), std::move(mesh),
+    bool drawn = false;
+    std::vector<ShownSide> live = sides(layout, true);
+    for (ShownSide& side : live) {
+        Viewport dest = toViewport(side.rect, toPixels, in.windowHeight);
+        ViewKey key{viewed(side.shown, view.mode), std::move(side.mesh),
                     std::max(1, static_cast<int>(std::lround(dest.width * scale))),
                     std::max(1, static_cast<int>(std::lround(dest.height * scale))), view.mode == ViewMode::Normals,
                     renderer.generation()};
-        shown.emplace_back(&cache, dest);
-        return cache.update(renderer, key, dest, viewSamples);
-    };
-    bool drawn = update(viewA, shownA(), workspace.meshA(), view.compare ? layout.viewA : layout.view);
-    if (view.compare) {
-        const Preset& b = workspace.b();
-        drawn = update(viewB, anyOrbit(b) ? orbitedScene(b, motionB) : b, workspace.meshB(), layout.viewB) || drawn;
-    } else {
-        viewB.reset(); // its memory back; compare mode draws it again
+        shown.emplace_back(&views[side.index], dest);
+        drawn = views[side.index].update(renderer, key, dest, viewSamples) || drawn;
+    }
+    if (live.size() < views.size()) {
+        views[1].reset(); // its memory back; compare mode draws it again
     }
     return drawn;
 }
 
-// The centre of the model's drawn bounds (core/gltf/model_loader.h), computed again only when the mesh
-// or the model's transform changes.
-glm::vec3 App::Impl::centreOf(OrbitCentre& cache, const std::shared_ptr<const Mesh>& mesh, const Model& model) {
-    if (mesh && (cache.mesh != mesh.get() || !(cache.model == model))) {
-        cache.mesh = mesh.get();
-        cache.model = model;
-        std::optional<Sphere> bounds = drawnBounds(*mesh, model);
-        cache.centre = bounds ? bounds->center : model.translate;
-    }
-    return mesh ? cache.centre : model.translate;
-}
-
-// Runs the clocks of the lights that orbit (in A, or in B in compare mode: one clock per light
-// index for both) by this frame's time unless `paused`. True when some light is moving, so
-// another frame is due.
-bool App::Impl::advanceOrbits(float deltaTime, bool paused) {
-    const Preset& a = workspace.a();
-    const Preset* b = workspace.view.compare ? &workspace.b() : nullptr;
-    auto moves = [](const Preset* p, std::size_t i) {
-        return p && i < p->lights.size() && p->lights[i].orbit.on && p->lights[i].orbit.degreesPerSecond != 0.0f;
-    };
-    bool newScene = std::exchange(motionScene, workspace.scenesOpened()) != workspace.scenesOpened();
-    motionA.seconds.resize(std::max(a.lights.size(), b ? b->lights.size() : 0), 0.0);
-    bool moving = false;
-    for (std::size_t i = 0; i < motionA.seconds.size(); ++i) {
-        if (newScene || !(moves(&a, i) || moves(b, i))) {
-            motionA.seconds[i] = 0.0;
-        } else {
-            moving = true;
-            motionA.seconds[i] += paused ? 0.0 : std::min(deltaTime, kMaxOrbitStep);
-        }
-    }
-    motionA.centre = centreOf(centreA, workspace.meshA(), a.model);
-    motionB.seconds = motionA.seconds;
-    if (b) {
-        motionB.centre = centreOf(centreB, workspace.meshB(), b->model);
-    }
-    return moving && !paused;
-}
-
 // The 3D view alone, at the window's pixel density, to a PNG (a download in the browser).
 void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
-    const ui::Rect& v = layout.view;
+    const ui::Rect& v = layout.viewport;
     float toPixels = static_cast<float>(in.framebufferWidth) / in.windowWidth;
     int w = std::max(1, static_cast<int>(v.w * toPixels)), h = std::max(1, static_cast<int>(v.h * toPixels));
     Framebuffer target(w, h);
@@ -455,8 +424,8 @@ FrameOutput App::frame(const FrameInput& in) {
     //--- layout -> UI -> requests ---------------------------------------------------------
     ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.panels == Impl::Panels::All,
                                            m.panels != Impl::Panels::None, m.panel.tab});
-    const ui::Rect& viewA = ws.view.compare ? layout.viewA : layout.view;
-    ws.setViewAspect(viewA.h > 0.0f ? viewA.w / viewA.h : 1.0f); // what F and a dropped model are framed for
+    const ui::Rect& viewportA = layout.viewportOf(0, ws.view.compare);
+    ws.setViewAspect(viewportA.h > 0.0f ? viewportA.w / viewportA.h : 1.0f); // what F and a dropped model are framed for
     if (!m.started) {
         // The first preset opens in the first frame, once the view's shape is known: a glTF model
         // without a camera is framed for the view it is shown in (a 1024x768 projector's view is
@@ -482,7 +451,9 @@ FrameOutput App::frame(const FrameInput& in) {
     m.carryOut(in, events);
 
     // The moving lights turn by this frame's time, unless the user is dragging or editing anything.
-    bool orbiting = m.advanceOrbits(in.deltaTime, events.gesture || events.dragging);
+    bool orbiting = m.orbits.advance({&ws.a(), ws.mesh(Side::A)},
+                                     {ws.view.compare ? &ws.b() : nullptr, ws.view.compare ? ws.mesh(Side::B) : nullptr},
+                                     ws.scenesOpened(), in.deltaTime, events.gesture || events.dragging);
 
     //--- the renderer draws what the workspace holds ---------------------------------------
     if (std::exchange(m.screenshotRequested, false)) {
@@ -490,21 +461,11 @@ FrameOutput App::frame(const FrameInput& in) {
     }
     float scale = m.resolution.update(events.dragging, in.lastFrameSeconds, m.options.frameBudgetSeconds);
     m.viewDrawn = m.updateViews(layout, in, scale);
-    bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.meshA(), events.dragging);
+    bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);
     bindFramebuffer(in.targetFramebuffer);
     // A toast is removed when its time is up; nothing else on screen changes by itself (a
     // reduced view is drawn at full size by the frame that ends the drag).
-    float redrawIn = sweepDrawn ? 0.0f : m.toastLeft > 0.0f ? m.toastLeft : -1.0f;
-    if (orbiting) {
-        // A steady rate whatever a frame costs: the wait is corrected by how far the last period
-        // (frame start to frame start) missed kOrbitFrameSeconds; where the swap waits for the
-        // display, the wait shrinks to what is left of its interval.
-        if (m.orbitFrame) {
-            m.orbitSleep = std::clamp(m.orbitSleep + 0.5f * (kOrbitFrameSeconds - in.deltaTime), 0.001f, kOrbitFrameSeconds);
-        }
-        redrawIn = redrawIn < 0.0f ? m.orbitSleep : std::min(redrawIn, m.orbitSleep);
-    }
-    m.orbitFrame = orbiting;
+    float redrawIn = m.orbits.redrawIn(sweepDrawn ? 0.0f : m.toastLeft > 0.0f ? m.toastLeft : -1.0f, orbiting, in.deltaTime);
     if (m.options.layoutFile) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }

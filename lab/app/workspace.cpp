@@ -65,7 +65,7 @@ void Workspace::start(const fs::path& folder, const std::optional<fs::path>& pre
     Preset defaults;
     defaults.name = "Default";
     doc_.reset(defaults, {}, folder);
-    resolvedA_ = resolvedB_ = {};
+    resolved_ = {};
     refreshPresetList();
     if (preset) {
         open(*preset);
@@ -328,7 +328,7 @@ void Workspace::useModel(const fs::path& path) {
 
 // A's camera moved to show all of A's model, looking the way it looks now (B follows A's camera).
 void Workspace::frameModel() {
-    std::shared_ptr<const Mesh> mesh = meshA();
+    std::shared_ptr<const Mesh> mesh = this->mesh(Side::A);
     if (std::optional<Sphere> bounds = mesh ? drawnBounds(*mesh, doc_.preset.model) : std::nullopt) {
         doc_.preset.camera = framedCamera(doc_.preset.camera, *bounds, viewAspect_);
     }
@@ -476,8 +476,8 @@ std::shared_ptr<const Mesh> Workspace::resolve(Model& model, Resolved& resolved,
     return resolved.mesh;
 }
 
-std::shared_ptr<const Mesh> Workspace::meshA() { return resolve(doc_.preset.model, resolvedA_, "the model"); }
-
-std::shared_ptr<const Mesh> Workspace::meshB() { return resolve(doc_.compare.model, resolvedB_, "B's model"); }
+std::shared_ptr<const Mesh> Workspace::mesh(Side side) {
+    return resolve(preset(side).model, resolved_[indexOf(side)], side == Side::A ? "the model" : "B's model");
+}
 
 } // namespace lab

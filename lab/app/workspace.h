@@ -19,6 +19,7 @@
 #include "core/gltf/mesh_cache.h"
 #include "core/scene/view_mode.h"
 
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -47,6 +48,11 @@ struct WorkspaceOptions {
 // ~/.local/share/lighting-lab/presets, else ./lighting-lab-presets.
 std::filesystem::path defaultUserFolder();
 
+// Compare mode's two sets, side by side: A (the document's preset, what is saved) and B.
+enum class Side { A, B };
+inline constexpr std::array kSides{Side::A, Side::B};
+inline std::size_t indexOf(Side side) { return static_cast<std::size_t>(side); }
+
 class Workspace {
 public:
     explicit Workspace(WorkspaceOptions options);
@@ -59,6 +65,7 @@ public:
     const Document& document() const { return doc_; }
     Preset& a() { return doc_.preset; }
     Preset& b() { return doc_.compare; }
+    Preset& preset(Side side) { return side == Side::A ? doc_.preset : doc_.compare; }
     Preset& edited() { return view.compare && view.editingB ? doc_.compare : doc_.preset; }
     ViewSettings view; // the per-term view and compare mode
 
@@ -104,9 +111,8 @@ public:
     std::vector<std::string> takeNotes() { return std::exchange(notes_, {}); }
     std::vector<Download> takeDownloads() { return std::exchange(downloads_, {}); }
 
-    // The meshes of A and B. A model edit that cannot load is undone with a problem.
-    std::shared_ptr<const Mesh> meshA();
-    std::shared_ptr<const Mesh> meshB();
+    // The mesh of A's or B's model. A model edit that cannot load is undone with a problem.
+    std::shared_ptr<const Mesh> mesh(Side side);
 
     // The current scene as a preset link, recomputed only when the scene changed.
     const std::string& link();
@@ -133,7 +139,7 @@ private:
     WorkspaceOptions options_;
     Document doc_;
     MeshCache meshes_;
-    Resolved resolvedA_, resolvedB_;
+    std::array<Resolved, 2> resolved_; // A's and B's
     std::vector<std::filesystem::path> presetFiles_;
     int currentPreset_ = -1;
     float viewAspect_ = 1.0f;

@@ -27,12 +27,12 @@ Layout compactLayout(const LayoutInput& in) {
     l.compact = true;
     l.tab = in.showPanel ? in.tab : PanelTab::Plots;
     if (!in.showPanel && !in.showPlots) {
-        l.view = {0, 0, W, H};
+        l.viewport = {0, 0, W, H};
         return l;
     }
     float tabsH = in.showPanel ? 36.0f * s : 0.0f;
     float viewH = std::clamp(std::min(H * 0.45f, W), std::min(120.0f, H * 0.3f), H * 0.6f);
-    l.view = {0, 0, W, viewH};
+    l.viewport = {0, 0, W, viewH};
     l.tabs = in.showPanel ? Rect{0, viewH, W, tabsH} : Rect{};
     Rect contents{0, viewH + tabsH, W, std::max(H - viewH - tabsH, 1.0f)};
     if (l.tab == PanelTab::Plots) {
@@ -45,14 +45,14 @@ Layout compactLayout(const LayoutInput& in) {
 }
 
 void splitForCompare(Layout& l) {
-    const Rect& v = l.view;
+    const Rect& v = l.viewport;
     l.compareStacked = v.w * 0.5f < v.h * 0.8f;
     if (l.compareStacked) {
-        l.viewA = {v.x, v.y, v.w, v.h * 0.5f};
-        l.viewB = {v.x, v.y + v.h * 0.5f, v.w, v.h * 0.5f};
+        l.halves[0] = {v.x, v.y, v.w, v.h * 0.5f};
+        l.halves[1] = {v.x, v.y + v.h * 0.5f, v.w, v.h * 0.5f};
     } else {
-        l.viewA = {v.x, v.y, v.w * 0.5f, v.h};
-        l.viewB = {v.x + v.w * 0.5f, v.y, v.w * 0.5f, v.h};
+        l.halves[0] = {v.x, v.y, v.w * 0.5f, v.h};
+        l.halves[1] = {v.x + v.w * 0.5f, v.y, v.w * 0.5f, v.h};
     }
 }
 
@@ -64,8 +64,8 @@ Layout computeLayout(const LayoutInput& in) {
     const float s = in.uiScale, W = in.width, H = in.height;
     if (isCompact(W, H)) {
         Layout l = compactLayout(in);
-        l.view.w = std::max(l.view.w, 1.0f);
-        l.view.h = std::max(l.view.h, 1.0f);
+        l.viewport.w = std::max(l.viewport.w, 1.0f);
+        l.viewport.h = std::max(l.viewport.h, 1.0f);
         splitForCompare(l);
         return l;
     }
@@ -79,17 +79,17 @@ Layout computeLayout(const LayoutInput& in) {
         l.panel = {0, 0, panelW, H};
     }
     if (!in.showPlots) {
-        l.view = {panelW, 0, W - panelW, H};
+        l.viewport = {panelW, 0, W - panelW, H};
     } else if (l.plotsBelow) {
         float plotsH = std::max(H * 0.42f, 200.0f);
-        l.view = {panelW, 0, W - panelW, H - plotsH};
+        l.viewport = {panelW, 0, W - panelW, H - plotsH};
         l.plots = {panelW, H - plotsH, W - panelW, plotsH};
     } else {
-        l.view = {panelW, 0, besideW, H};
+        l.viewport = {panelW, 0, besideW, H};
         l.plots = {W - plotsW, 0, plotsW, H};
     }
-    l.view.w = std::max(l.view.w, 1.0f);
-    l.view.h = std::max(l.view.h, 1.0f);
+    l.viewport.w = std::max(l.viewport.w, 1.0f);
+    l.viewport.h = std::max(l.viewport.h, 1.0f);
     splitForCompare(l);
     return l;
 }

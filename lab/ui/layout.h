@@ -11,6 +11,8 @@
 // the chosen tab's contents, the plots by default. No ImGui here.
 #pragma once
 
+#include <array>
+
 namespace lab::ui {
 
 struct Rect {
@@ -34,8 +36,8 @@ struct LayoutInput {
 
 struct Layout {
     Rect panel, plots;  // empty when hidden
-    Rect view;          // the 3D view (never empty)
-    Rect viewA, viewB;  // its halves in compare mode
+    Rect viewport;      // where the model is shown (never empty)
+    std::array<Rect, 2> halves; // in compare mode, the viewport's halves: A's and B's
     bool plotsBelow = false;
     bool compareStacked = false; // A above B rather than beside it
     // Compact: the view on top, then the tab row (`tabs`, empty when the control panel is
@@ -43,6 +45,9 @@ struct Layout {
     bool compact = false;
     Rect tabs;
     PanelTab tab = PanelTab::Plots; // what `panel` or `plots` holds in the compact layout
+
+    // Where side `side` (0: A, 1: B) is shown: its half in compare mode, else the viewport.
+    const Rect& viewportOf(int side, bool compare) const { return compare ? halves[static_cast<std::size_t>(side)] : viewport; }
 };
 
 // Phones, portrait tablets and narrow windows: taller than wide, or narrower than 640 units

@@ -125,16 +125,16 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     ScreenEvents events;
     events.typing = ImGui::GetIO().WantTextInput;
     panels(layout, m, events);
-    widgets().set("view", layout.view);
+    widgets().set("view", layout.viewport);
     helpWindow(*m.showHelp);
     if (m.probe) {
-        probeWindow(*m.probe, *m.a, *m.probeOpen, layout.view.x + 10.0f, layout.view.y + ImGui::GetFontSize() * 2.5f);
+        probeWindow(*m.probe, *m.a, *m.probeOpen, layout.viewport.x + 10.0f, layout.viewport.y + ImGui::GetFontSize() * 2.5f);
     }
     shaderEditorWindow(*m.shaderEditor, events.requests, m.lightingSource);
     sweepWindow(*m.sweep, *m.a, events.requests);
     dialogs(m, events);
-    const Rect& active = m.b ? layout.viewA : layout.view;
-    events.view = viewControls(*m.a, active, layout.view, *m.viewControls, m.clicks, m.motion);
+    const Rect& active = m.b ? layout.halves[0] : layout.viewport;
+    events.view = viewControls(*m.a, active, layout.viewport, *m.viewControls, m.clicks, m.motion);
     lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewControls->light, m.lightShapes);
     viewOverlay(m.overlay, layout);
     events.gesture = ImGui::IsAnyItemActive() || events.view.gesture;

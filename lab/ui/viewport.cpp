@@ -259,7 +259,7 @@ std::string setSummary(const char* name, const Preset& p) {
 }
 
 void compareLabels(const OverlayModel& m, const Layout& layout, ImDrawList* dl) {
-    const Rect &a = layout.viewA, &b = layout.viewB;
+    const Rect &a = layout.halves[0], &b = layout.halves[1];
     ImVec2 end = layout.compareStacked ? ImVec2(b.x + b.w, b.y) : ImVec2(b.x, b.y + b.h);
     dl->AddLine(ImVec2(b.x, b.y), end, IM_COL32(255, 255, 255, 160), 2.0f);
     float line = ImGui::GetFontSize() * 1.5f;
@@ -332,7 +332,7 @@ float header(const OverlayModel& m, const Rect& v, ImDrawList* dl) {
 
 void viewOverlay(const OverlayModel& m, const Layout& layout) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    const Rect& v = layout.view;
+    const Rect& v = layout.viewport;
     float y = v.y + header(m, v, dl);
     if (m.caption) {
         y += caption(*m.a, ImVec2(v.x + 8, y), std::min(v.w - 16.0f, ImGui::GetFontSize() * 36.0f), dl) + 6.0f;
@@ -341,7 +341,7 @@ void viewOverlay(const OverlayModel& m, const Layout& layout) {
         dl->AddText(ImVec2(v.x + 8, y), IM_COL32(255, 220, 120, 230), toString(m.viewMode));
     }
     if (m.probePoint) {
-        probeMarker(*m.a, *m.probePoint, m.b ? layout.viewA : v, dl);
+        probeMarker(*m.a, *m.probePoint, m.b ? layout.halves[0] : v, dl);
     }
     if (m.b) {
         compareLabels(m, layout, dl);

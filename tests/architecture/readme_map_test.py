@@ -5,8 +5,8 @@ Every folder under lab/ has a row of its own (its path in the first column); eve
 first column names a folder that exists; every path or file name a row mentions in backticks
 exists: a path from the repository's root as it is, a bare file or folder name in the row's folder
 or below it (`preset.h` in the row of lab/core/scene/), names without an extension as a file of
-that stem there (`workspace` for workspace.cpp/.h). CMake variables (`LAB_PLATFORM`) and targets
-(`lab_ui`) are not paths.
+that stem there (`workspace` for workspace.cpp/.h). CMake variables (`LAB_PLATFORM`), targets
+(`lab_ui`) and types (`Side`) are not paths.
 
     readme_map_test.py <repository root>
 """
@@ -33,8 +33,8 @@ for row in rows:
     for name in re.findall(r'`([^`\s]+)`', ' '.join(cells[1:])):
         name = name.rstrip('/')
         if (not re.fullmatch(r'[\w.\-/]+', name) or name.startswith('-') or re.fullmatch(r'[\d.]+', name)
-                or name.isupper() or name.startswith('lab_')):
-            continue  # a value, a flag, a CMake variable or target, not a path
+                or name.isupper() or name.startswith('lab_') or name[0].isupper() and '.' not in name):
+            continue  # a value, a flag, a CMake variable or target, a type, not a path
         if '/' in name and (root / name).exists():
             continue
         stem_only = '.' not in pathlib.PurePath(name).name
