@@ -5,12 +5,14 @@
 #include "core/gltf/mesh_cache.h"
 #include "core/scene/preset.h"
 #include "platform/headless_gl.h"
+#include "render/gl.h"
 #include "render/renderer.h"
 #include "render/shader.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 
 namespace lab {
 namespace {
@@ -97,6 +99,54 @@ Change compare(const Image& a, const Image& b) {
         c.brighter |= b.rgb[i] > a.rgb[i] + 1;
     }
     return c;
+}
+
+// The lighting model's structs as rows (core/lighting/lighting.h's ShaderStruct) and the linked
+// programs agree: every active uniform of a struct is a row, every row is an active uniform, in
+// both programs (per vertex and per pixel). A field added to lighting_api.glsl without its row,
+// or a row whose field was renamed, fails here.
+TEST(ShaderRows, TheProgramsActiveUniformsAreTheRowsOfTheShadingStructs) {
+    HeadlessGl gl;
+    std::string error;
+    ASSERT_TRUE(gl.create(error)) << error;
+    const std::vector<std::pair<std::string, const ShaderStruct*>> structs = {
+        {"u_material", &kMaterialUniform}, {"u_brdf", &kBrdfUniform}, {"u_terms", &kTermsUniform}};
+    const std::set<std::string> others = {"u_modelView", "u_projection", "u_normalMatrix",
+                                          "u_ambientLight", "u_lightCount", "u_showNormals"};
+    for (const char* define : {"LAB_PER_VERTEX 1", "LAB_PER_PIXEL 1"}) {
+        SCOPED_TRACE(define);
+        Diagnostics d;
+        std::optional<GLuint> program = buildProgram(builtinStageSources(), {define}, d);
+        ASSERT_TRUE(program) << toString(d);
+        std::set<std::string> active;
+        GLint count = 0;
+        glGetProgramiv(*program, GL_ACTIVE_UNIFORMS, &count);
+        for (GLint i = 0; i < count; ++i) {
+            char name[256];
+            GLint size = 0;
+            GLenum type = 0;
+            glGetActiveUniform(*program, static_cast<GLuint>(i), sizeof name, nullptr, &size, &type, name);
+            active.insert(name);
+        }
+        std::set<std::string> rows(others);
+        for (const auto& [uniform, shape] : structs) {
+            for (const ShaderField& f : shape->fields) {
+                rows.insert(uniform + "." + f.name);
+            }
+        }
+        for (int light = 0; light < glsl::MAX_LIGHTS; ++light) {
+            for (const ShaderField& f : kLightUniform.fields) {
+                rows.insert("u_lights[" + std::to_string(light) + "]." + f.name);
+            }
+        }
+        for (const std::string& name : active) {
+            EXPECT_TRUE(rows.contains(name)) << name << " is an active uniform without a row in core/lighting/lighting.cpp";
+        }
+        for (const std::string& name : rows) {
+            EXPECT_TRUE(active.contains(name)) << name << " is a row but not an active uniform of the program";
+        }
+        glDeleteProgram(*program);
+    }
 }
 
 TEST_F(ShaderEditing, EditedLightingChangesTheRenderAndRevertRestoresIt) {

@@ -7,51 +7,57 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace lab {
 
 namespace {
 
+// The locations of one struct's fields (ShaderStruct's rows) under `uniform`, and their upload.
+struct StructUniform {
+    const ShaderStruct* shape = nullptr;
+    std::vector<GLint> locations; // one per row
+
+    StructUniform(GLuint program, const ShaderStruct& s, const std::string& uniform) : shape(&s) {
+        for (const ShaderField& f : s.fields) {
+            locations.push_back(glGetUniformLocation(program, (uniform + "." + f.name).c_str()));
+        }
+    }
+
+    void upload(const void* data) const {
+        const char* base = static_cast<const char*>(data);
+        for (std::size_t i = 0; i < locations.size(); ++i) {
+            const ShaderField& f = shape->fields[i];
+            const char* at = base + f.offset;
+            switch (f.type) {
+            case FieldType::Int: glUniform1i(locations[i], *reinterpret_cast<const int*>(at)); break;
+            case FieldType::Bool: glUniform1i(locations[i], *reinterpret_cast<const bool*>(at) ? 1 : 0); break;
+            case FieldType::Float: glUniform1f(locations[i], *reinterpret_cast<const float*>(at)); break;
+            case FieldType::Vec3: glUniform3fv(locations[i], 1, reinterpret_cast<const float*>(at)); break;
+            }
+        }
+    }
+};
+
 // Uniform locations of one program, looked up once after linking.
 struct Uniforms {
     GLint modelView = -1, projection = -1, normalMatrix = -1;
-    GLint emissive = -1, ambient = -1, diffuse = -1, specular = -1, shininess = -1;
-    GLint brdfModel = -1, distribution = -1, fresnel = -1, geometry = -1, roughness = -1, ior = -1;
-    GLint termEmissive = -1, termAmbient = -1, termDiffuse = -1, termSpecular = -1;
     GLint ambientLight = -1, lightCount = -1, showNormals = -1;
-    struct Light {
-        GLint type, position, direction, ambient, diffuse, specular, attenuation, cosCutoff, exponent;
-    };
-    std::array<Light, glsl::MAX_LIGHTS> lights{};
+    StructUniform material, brdf, terms;
+    std::vector<StructUniform> lights;
 
-    explicit Uniforms(GLuint p) {
-        auto at = [p](const std::string& name) { return glGetUniformLocation(p, name.c_str()); };
+    explicit Uniforms(GLuint p)
+        : material(p, kMaterialUniform, kMaterialUniform.uniform), brdf(p, kBrdfUniform, kBrdfUniform.uniform),
+          terms(p, kTermsUniform, kTermsUniform.uniform) {
+        auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
         modelView = at("u_modelView");
         projection = at("u_projection");
         normalMatrix = at("u_normalMatrix");
-        emissive = at("u_material.emissive");
-        ambient = at("u_material.ambient");
-        diffuse = at("u_material.diffuse");
-        specular = at("u_material.specular");
-        shininess = at("u_material.shininess");
-        brdfModel = at("u_brdf.model");
-        distribution = at("u_brdf.distribution");
-        fresnel = at("u_brdf.fresnel");
-        geometry = at("u_brdf.geometry");
-        roughness = at("u_brdf.roughness");
-        ior = at("u_brdf.ior");
-        termEmissive = at("u_terms.emissive");
-        termAmbient = at("u_terms.ambient");
-        termDiffuse = at("u_terms.diffuse");
-        termSpecular = at("u_terms.specular");
         ambientLight = at("u_ambientLight");
         lightCount = at("u_lightCount");
         showNormals = at("u_showNormals");
-        for (std::size_t i = 0; i < lights.size(); ++i) {
-            std::string l = "u_lights[" + std::to_string(i) + "].";
-            lights[i] = {at(l + "type"),     at(l + "position"),    at(l + "direction"),
-                         at(l + "ambient"),  at(l + "diffuse"),     at(l + "specular"),
-                         at(l + "attenuation"), at(l + "cosCutoff"), at(l + "exponent")};
+        for (int i = 0; i < glsl::MAX_LIGHTS; ++i) {
+            lights.emplace_back(p, kLightUniform, "u_lights[" + std::to_string(i) + "]");
         }
     }
 
@@ -60,35 +66,13 @@ struct Uniforms {
         glUniformMatrix4fv(modelView, 1, GL_FALSE, &t.modelView[0][0]);
         glUniformMatrix4fv(projection, 1, GL_FALSE, &t.projection[0][0]);
         glUniformMatrix3fv(normalMatrix, 1, GL_FALSE, &t.normalMatrix[0][0]);
-        glUniform3fv(emissive, 1, &in.material.emissive[0]);
-        glUniform3fv(ambient, 1, &in.material.ambient[0]);
-        glUniform3fv(diffuse, 1, &in.material.diffuse[0]);
-        glUniform3fv(specular, 1, &in.material.specular[0]);
-        glUniform1f(shininess, in.material.shininess);
-        glUniform1i(brdfModel, in.brdf.model);
-        glUniform1i(distribution, in.brdf.distribution);
-        glUniform1i(fresnel, in.brdf.fresnel);
-        glUniform1i(geometry, in.brdf.geometry);
-        glUniform1f(roughness, in.brdf.roughness);
-        glUniform1f(ior, in.brdf.ior);
-        glUniform1i(termEmissive, in.terms.emissive);
-        glUniform1i(termAmbient, in.terms.ambient);
-        glUniform1i(termDiffuse, in.terms.diffuse);
-        glUniform1i(termSpecular, in.terms.specular);
+        material.upload(&in.material);
+        brdf.upload(&in.brdf);
+        terms.upload(&in.terms);
         glUniform3fv(ambientLight, 1, &in.ambientLight[0]);
         glUniform1i(lightCount, in.lightCount);
         for (int i = 0; i < in.lightCount; ++i) {
-            const glsl::Light& l = in.lights[i];
-            const Light& u = lights[static_cast<std::size_t>(i)];
-            glUniform1i(u.type, l.type);
-            glUniform3fv(u.position, 1, &l.position[0]);
-            glUniform3fv(u.direction, 1, &l.direction[0]);
-            glUniform3fv(u.ambient, 1, &l.ambient[0]);
-            glUniform3fv(u.diffuse, 1, &l.diffuse[0]);
-            glUniform3fv(u.specular, 1, &l.specular[0]);
-            glUniform3fv(u.attenuation, 1, &l.attenuation[0]);
-            glUniform1f(u.cosCutoff, l.cosCutoff);
-            glUniform1f(u.exponent, l.exponent);
+            lights[static_cast<std::size_t>(i)].upload(&in.lights[i]);
         }
     }
 };

@@ -31,38 +31,106 @@ Transforms computeTransforms(const Preset& preset, float aspect) {
     return t;
 }
 
-glsl::Brdf packBrdf(const Preset& preset) {
-    glsl::Brdf b;
-    b.model = static_cast<int>(preset.brdf);
-    b.distribution = static_cast<int>(preset.cookTorrance.distribution);
-    b.fresnel = static_cast<int>(preset.cookTorrance.fresnel);
-    b.geometry = preset.cookTorrance.geometry;
-    b.roughness = preset.cookTorrance.roughness;
-    b.ior = preset.cookTorrance.ior;
-    return b;
+//----------------------------------------------------------------------------------------
+// The shaders' structs as rows
+//----------------------------------------------------------------------------------------
+
+namespace {
+
+using glsl::Brdf, glsl::Light, glsl::Material, glsl::Terms;
+constexpr ShaderField kMaterialFields[] = {
+    {"emissive", FieldType::Vec3, offsetof(Material, emissive)},
+    {"ambient", FieldType::Vec3, offsetof(Material, ambient)},
+    {"diffuse", FieldType::Vec3, offsetof(Material, diffuse)},
+    {"specular", FieldType::Vec3, offsetof(Material, specular)},
+    {"shininess", FieldType::Float, offsetof(Material, shininess)},
+};
+constexpr ShaderField kBrdfFields[] = {
+    {"model", FieldType::Int, offsetof(Brdf, model)},
+    {"distribution", FieldType::Int, offsetof(Brdf, distribution)},
+    {"fresnel", FieldType::Int, offsetof(Brdf, fresnel)},
+    {"geometry", FieldType::Bool, offsetof(Brdf, geometry)},
+    {"roughness", FieldType::Float, offsetof(Brdf, roughness)},
+    {"ior", FieldType::Float, offsetof(Brdf, ior)},
+};
+constexpr ShaderField kTermsFields[] = {
+    {"emissive", FieldType::Bool, offsetof(Terms, emissive)},
+    {"ambient", FieldType::Bool, offsetof(Terms, ambient)},
+    {"diffuse", FieldType::Bool, offsetof(Terms, diffuse)},
+    {"specular", FieldType::Bool, offsetof(Terms, specular)},
+};
+constexpr ShaderField kLightFields[] = {
+    {"type", FieldType::Int, offsetof(Light, type)},
+    {"position", FieldType::Vec3, offsetof(Light, position)},
+    {"direction", FieldType::Vec3, offsetof(Light, direction)},
+    {"ambient", FieldType::Vec3, offsetof(Light, ambient)},
+    {"diffuse", FieldType::Vec3, offsetof(Light, diffuse)},
+    {"specular", FieldType::Vec3, offsetof(Light, specular)},
+    {"attenuation", FieldType::Vec3, offsetof(Light, attenuation)},
+    {"cosCutoff", FieldType::Float, offsetof(Light, cosCutoff)},
+    {"exponent", FieldType::Float, offsetof(Light, exponent)},
+};
+
+template <typename T>
+bool equalAt(const void* a, const void* b, std::size_t offset) {
+    return *reinterpret_cast<const T*>(static_cast<const char*>(a) + offset) ==
+           *reinterpret_cast<const T*>(static_cast<const char*>(b) + offset);
 }
 
-ShadingInputs packShading(const Preset& preset, const glm::mat4& view) {
+} // namespace
+
+const ShaderStruct kMaterialUniform{"u_material", kMaterialFields};
+const ShaderStruct kBrdfUniform{"u_brdf", kBrdfFields};
+const ShaderStruct kTermsUniform{"u_terms", kTermsFields};
+const ShaderStruct kLightUniform{"u_lights[i]", kLightFields};
+
+bool fieldsEqual(const void* a, const void* b, const ShaderStruct& shape) {
+    for (const ShaderField& f : shape.fields) {
+        bool equal = f.type == FieldType::Int    ? equalAt<int>(a, b, f.offset)
+                     : f.type == FieldType::Bool  ? equalAt<bool>(a, b, f.offset)
+                     : f.type == FieldType::Float ? equalAt<float>(a, b, f.offset)
+                                                  : equalAt<glm::vec3>(a, b, f.offset);
+        if (!equal) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool operator==(const Surface& x, const Surface& y) {
+    return fieldsEqual(&x.material, &y.material, kMaterialUniform) && fieldsEqual(&x.brdf, &y.brdf, kBrdfUniform) &&
+           fieldsEqual(&x.terms, &y.terms, kTermsUniform);
+}
+
+//----------------------------------------------------------------------------------------
+// Packing a preset
+//----------------------------------------------------------------------------------------
+
+Surface packSurface(const Preset& preset) {
     static_assert(static_cast<int>(BrdfModel::CookTorrance) == glsl::BRDF_COOK_TORRANCE);
     static_assert(static_cast<int>(BrdfModel::BlinnPhong) == glsl::BRDF_BLINN_PHONG);
     static_assert(static_cast<int>(Distribution::Ggx) == glsl::DISTRIBUTION_GGX);
     static_assert(static_cast<int>(Distribution::Gaussian) == glsl::DISTRIBUTION_GAUSSIAN);
     static_assert(static_cast<int>(FresnelMode::Full) == glsl::FRESNEL_FULL);
+    Surface s;
+    const MaterialDesc& m = preset.material;
+    s.material = {.emissive = m.emissive, .ambient = m.ambient, .diffuse = m.diffuse, .specular = m.specular,
+                  .shininess = m.shininess};
+    const CookTorrance& ct = preset.cookTorrance;
+    s.brdf = {.model = static_cast<int>(preset.brdf), .distribution = static_cast<int>(ct.distribution),
+              .fresnel = static_cast<int>(ct.fresnel), .geometry = ct.geometry, .roughness = ct.roughness, .ior = ct.ior};
+    const TermSwitches& t = preset.terms;
+    s.terms = {.emissive = t.emissive, .ambient = t.ambient, .diffuse = t.diffuse, .specular = t.specular};
+    return s;
+}
+
+ShadingInputs packShading(const Preset& preset, const glm::mat4& view) {
     static_assert(static_cast<int>(LightType::Spot) == glsl::LIGHT_SPOT);
     static_assert(static_cast<int>(LightType::Directional) == glsl::LIGHT_DIRECTIONAL);
     static_assert(kMaxLights == glsl::MAX_LIGHTS);
 
     ShadingInputs in;
-    in.material.emissive = preset.material.emissive;
-    in.material.ambient = preset.material.ambient;
-    in.material.diffuse = preset.material.diffuse;
-    in.material.specular = preset.material.specular;
-    in.material.shininess = preset.material.shininess;
-    in.brdf = packBrdf(preset);
-    in.terms.emissive = preset.terms.emissive;
-    in.terms.ambient = preset.terms.ambient;
-    in.terms.diffuse = preset.terms.diffuse;
-    in.terms.specular = preset.terms.specular;
+    static_cast<Surface&>(in) = packSurface(preset);
     in.ambientLight = preset.ambientLight;
     glm::mat3 rotate(view);
     for (const LightDesc& l : preset.lights) {

@@ -3,13 +3,17 @@
 // The equations are not written here: lab::glsl is shaders/lighting_api.glsl and
 // shaders/lighting.glsl compiled as C++ with GLM, so the plots, `lab plot` and the tests run the
 // very code the GPU runs. This header adds what both faces need from a Preset: the matrices
-// (model, view, projection, normal matrix) and the packing of material, BRDF and lights into the
-// structs the shaders take as uniforms. The renderer uploads exactly what packShading returns.
+// (model, view, projection, normal matrix), the packing of material, BRDF and lights into the
+// structs the shaders take as uniforms, and those structs' fields as rows (ShaderField). The
+// renderer uploads exactly what packShading returns, by those rows.
 #pragma once
 
 #include "core/scene/preset.h"
 
 #include <glm/glm.hpp>
+
+#include <cstddef>
+#include <span>
 
 namespace lab {
 
@@ -18,15 +22,42 @@ using namespace glm;
 #include "lighting_api.glsl"
 } // namespace glsl
 
+// The material, BRDF and term switches as the shaders take them: what the renderer (through
+// ShadingInputs) and the plots (plots/plot_data.h's LobeInputs) both evaluate with.
+struct Surface {
+    glsl::Material material{};
+    glsl::Brdf brdf{};
+    glsl::Terms terms{};
+};
+
 // Everything lit.vert/lit.frag read as uniforms, minus the matrices.
-struct ShadingInputs {
-    glsl::Material material;
-    glsl::Brdf brdf;
-    glsl::Terms terms;
-    glm::vec3 ambientLight;
-    glsl::Light lights[glsl::MAX_LIGHTS];
+struct ShadingInputs : Surface {
+    glm::vec3 ambientLight{0.0f};
+    glsl::Light lights[glsl::MAX_LIGHTS]{};
     int lightCount = 0; // enabled lights only, in preset order
 };
+
+// The shaders' uniforms that come from the lighting model's structs, one row each: the field's
+// GLSL name, its type, and where it lies in the C++ struct the same GLSL declares
+// (lighting_api.glsl). The renderer uploads by these rows, Surface's equality compares by them,
+// and a GL test checks that they and the linked program's active uniforms name the same fields.
+// A new parameter of the lighting model is a field in lighting_api.glsl, a row here, its line in
+// packSurface, its key in the preset (scene/preset.h) and its control in the panel.
+enum class FieldType { Int, Bool, Float, Vec3 };
+struct ShaderField {
+    const char* name;
+    FieldType type;
+    std::size_t offset;
+};
+struct ShaderStruct {
+    const char* uniform; // the uniform of that struct type ("u_material"), "u_lights[i]" for lights
+    std::span<const ShaderField> fields;
+};
+extern const ShaderStruct kMaterialUniform, kBrdfUniform, kTermsUniform, kLightUniform;
+
+// Every field of `a` and `b` equal by `shape`'s rows (floats exactly: a NaN is never equal).
+bool fieldsEqual(const void* a, const void* b, const ShaderStruct& shape);
+bool operator==(const Surface& x, const Surface& y);
 
 struct Transforms {
     glm::mat4 model;
@@ -40,9 +71,10 @@ struct Transforms {
 glm::mat4 modelMatrix(const Model& model);
 Transforms computeTransforms(const Preset& preset, float aspect);
 
-// Material, BRDF, terms and the enabled lights moved into eye space with `view`.
+// The preset's material, BRDF and term switches, as the shaders take them.
+Surface packSurface(const Preset& preset);
+// packSurface, the ambient light and the enabled lights moved into eye space with `view`.
 ShadingInputs packShading(const Preset& preset, const glm::mat4& view);
-glsl::Brdf packBrdf(const Preset& preset);
 
 // glsl::shade with the packed inputs: the colour at eye-space point p with unit normal N.
 glm::vec3 shade(const ShadingInputs& in, const glm::vec3& p, const glm::vec3& N);

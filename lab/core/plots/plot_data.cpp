@@ -26,33 +26,13 @@ const std::array<glm::vec2, 181>& outgoingDirections() {
 
 LobeInputs lobeInputs(const Preset& preset, float incidentDeg) {
     LobeInputs in;
-    in.material.emissive = preset.material.emissive;
-    in.material.ambient = preset.material.ambient;
-    in.material.diffuse = preset.material.diffuse;
-    in.material.specular = preset.material.specular;
-    in.material.shininess = preset.material.shininess;
-    in.brdf = packBrdf(preset);
-    in.terms.emissive = preset.terms.emissive;
-    in.terms.ambient = preset.terms.ambient;
-    in.terms.diffuse = preset.terms.diffuse;
-    in.terms.specular = preset.terms.specular;
+    static_cast<Surface&>(in) = packSurface(preset);
     in.incidentDeg = incidentDeg;
     return in;
 }
 
 bool operator==(const LobeInputs& x, const LobeInputs& y) {
-    // A field added to the shaders' structs must be compared here too: these sizes say so.
-    static_assert(sizeof(glsl::Material) == 13 * sizeof(float), "compare the new Material field");
-    static_assert(sizeof(glsl::Brdf) == 6 * sizeof(int), "compare the new Brdf field");
-    static_assert(sizeof(glsl::Terms) == 4 * sizeof(bool), "compare the new Terms field");
-    const glsl::Material &a = x.material, &b = y.material;
-    const glsl::Brdf &c = x.brdf, &d = y.brdf;
-    const glsl::Terms &s = x.terms, &t = y.terms;
-    return a.emissive == b.emissive && a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular &&
-           a.shininess == b.shininess && c.model == d.model && c.distribution == d.distribution &&
-           c.fresnel == d.fresnel && c.geometry == d.geometry && c.roughness == d.roughness && c.ior == d.ior &&
-           s.emissive == t.emissive && s.ambient == t.ambient && s.diffuse == t.diffuse && s.specular == t.specular &&
-           x.incidentDeg == y.incidentDeg;
+    return static_cast<const Surface&>(x) == static_cast<const Surface&>(y) && x.incidentDeg == y.incidentDeg;
 }
 
 glsl::Light unitLightFrom(const glm::vec3& L) {

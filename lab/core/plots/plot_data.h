@@ -29,10 +29,7 @@ struct PlotSample {
 // Everything the samples depend on: the material, BRDF and term switches as the shaders get them
 // (packed from the preset), and the incident angle. Equal inputs give equal samples, so the plots
 // may keep samples from frame to frame keyed on them (ui/plot_cache.h).
-struct LobeInputs {
-    glsl::Material material{};
-    glsl::Brdf brdf{};
-    glsl::Terms terms{};
+struct LobeInputs : Surface {
     float incidentDeg = 0.0f;
 };
 LobeInputs lobeInputs(const Preset& preset, float incidentDeg);
