@@ -1,0 +1,265 @@
+// plot_drawing.cpp — the palettes, the text helpers, and the frames, grids, axes and arrows every
+// plot and figure is drawn with.
+#include "core/plots/plot_drawing.h"
+
+#include "core/plots/text_raster.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+namespace lab {
+
+//----------------------------------------------------------------------------------------
+// Colours, sizes, text
+//----------------------------------------------------------------------------------------
+
+namespace {
+
+Palette paletteOf(std::initializer_list<std::pair<Ink, FigureColor>> entries) {
+    Palette p{};
+    for (auto [ink, color] : entries) {
+        p[static_cast<std::size_t>(ink)] = color;
+    }
+    return p;
+}
+
+} // namespace
+
+const Palette& screenPalette() {
+    // Grid and axes bright enough to survive a projector: light grey on near black.
+    static const Palette p = paletteOf({
+        {Ink::Text, {225, 225, 232}},       {Ink::Muted, {190, 190, 200}},     {Ink::Grid, {135, 135, 150}},
+        {Ink::Axis, {215, 215, 225}},       {Ink::Background, {16, 16, 20}},   {Ink::Diffuse, {90, 160, 255}},
+        {Ink::Specular, {255, 160, 60}},    {Ink::Total, {255, 255, 255}},     {Ink::Compare, {240, 100, 230}},
+        {Ink::Light, {255, 230, 90}},       {Ink::Mirror, {120, 220, 120}},    {Ink::Viewer, {90, 220, 230}},
+        {Ink::Half, {255, 110, 110}},       {Ink::Probe, {180, 180, 186}},     {Ink::Warning, {255, 120, 100}},
+        {Ink::Overlay1, {255, 110, 110}},   {Ink::Overlay2, {120, 230, 120}},  {Ink::Overlay3, {120, 170, 255}},
+    });
+    return p;
+}
+
+const Palette& printPalette() {
+    // The screen's hues darkened where white would wash them out; the total is black, as it is
+    // white on screen.
+    static const Palette p = paletteOf({
+        {Ink::Text, {25, 25, 30}},          {Ink::Muted, {90, 90, 100}},       {Ink::Grid, {200, 200, 210}},
+        {Ink::Axis, {60, 60, 70}},          {Ink::Background, {255, 255, 255}}, {Ink::Diffuse, {30, 110, 220}},
+        {Ink::Specular, {225, 120, 10}},    {Ink::Total, {20, 20, 20}},        {Ink::Compare, {200, 40, 180}},
+        {Ink::Light, {190, 140, 0}},        {Ink::Mirror, {40, 150, 60}},      {Ink::Viewer, {0, 140, 160}},
+        {Ink::Half, {200, 60, 60}},         {Ink::Probe, {110, 110, 120}},     {Ink::Warning, {200, 60, 40}},
+        {Ink::Overlay1, {215, 50, 50}},     {Ink::Overlay2, {40, 160, 60}},    {Ink::Overlay3, {50, 100, 230}},
+    });
+    return p;
+}
+
+const PlotStyle& printStyle() {
+    static const PlotStyle style{&printPalette(), 1.0f, [](std::string_view text, float size) {
+                                     const TextFont& font = sharedTextFont();
+                                     return font.measure(text, size * font.lineHeightPerEm()).width;
+                                 }};
+    return style;
+}
+
+std::string format(const char* f, ...) {
+    char text[96];
+    va_list args;
+    va_start(args, f);
+    std::vsnprintf(text, sizeof text, f, args);
+    va_end(args);
+    return text;
+}
+
+std::string tickText(float v) { return format("%.3g", double(v)); }
+
+std::string degrees(float deg) { return format("%.0f", double(deg)) + kDeg; }
+
+//----------------------------------------------------------------------------------------
+// A plot being drawn
+//----------------------------------------------------------------------------------------
+
+void PlotCanvas::line(std::vector<glm::vec2> points, float width, Ink ink, std::string id) {
+    figure_.shapes.emplace_back(std::in_place_type<FigureLine>,
+                                FigureLine{std::move(points), width, style_.color(ink), std::move(id)});
+}
+
+void PlotCanvas::text(glm::vec2 at, std::string text, float size, Ink ink, TextAnchor anchor, bool bold) {
+    figure_.shapes.emplace_back(std::in_place_type<FigureText>,
+                                FigureText{{at.x, at.y + 0.365f * size}, std::move(text), size, style_.color(ink), anchor, bold});
+}
+
+void PlotCanvas::disc(glm::vec2 centre, float radius, Ink ink) {
+    figure_.shapes.emplace_back(std::in_place_type<FigureDisc>, FigureDisc{centre, radius, style_.color(ink)});
+}
+
+void PlotCanvas::polygon(std::vector<glm::vec2> points, Ink ink) {
+    figure_.shapes.emplace_back(std::in_place_type<FigurePolygon>, FigurePolygon{std::move(points), style_.color(ink)});
+}
+
+void PlotCanvas::arrow(glm::vec2 from, glm::vec2 to, Ink ink, float width, const std::string& label) {
+    glm::vec2 d = to - from;
+    const float len = glm::length(d);
+    if (len < 1.0f) {
+        disc(from, 1.5f * style_.stroke(), ink);
+    } else {
+        d /= len;
+        const glm::vec2 n(-d.y, d.x);
+        const float head = std::min(style_.head(), len * 0.5f);
+        const glm::vec2 base = to - d * head;
+        line({from, base}, width, ink);
+        polygon({to, base + n * head * 0.45f, base - n * head * 0.45f}, ink);
+    }
+    if (!label.empty()) {
+        // Beside the tip, on the side away from the arrow's own line.
+        const float x = d.x >= 0.0f ? to.x + style_.pad() : to.x - style_.pad();
+        text({x, to.y - style_.text() * 0.6f}, label, style_.text(), ink, d.x >= 0.0f ? TextAnchor::Start : TextAnchor::End,
+             true);
+    }
+}
+
+//----------------------------------------------------------------------------------------
+// Polar plots
+//----------------------------------------------------------------------------------------
+
+glm::vec2 Polar::unitAt(glm::vec2 point) const {
+    const float r = std::max(radius, 1.0f);
+    return {(point.x - origin.x) / r, (origin.y - point.y) / r};
+}
+
+glm::vec2 dirFromDeg(float deg, float side) {
+    const float r = glm::radians(deg);
+    return {side * std::sin(r), std::cos(r)};
+}
+
+PlotMargins polarMargins(const PlotStyle& s, bool caption) {
+    const float side = s.width(degrees(90.0f), s.text()) + s.pad();
+    const float below = caption ? 2.0f * (s.text() + s.pad()) + s.pad() : s.text() + 2.0f * s.pad();
+    return {side, side, s.text() + 2.0f * s.pad(), below};
+}
+
+Polar polarFrame(glm::vec2 corner, float width, float height, const PlotStyle& style, bool caption) {
+    const LobeFrame f = lobeFrame(corner.x, corner.y, width, height, polarMargins(style, caption));
+    return {{f.originX, f.originY}, f.radius};
+}
+
+float polarMaxHeight(const PlotStyle& style, float width, bool caption) {
+    const PlotMargins m = polarMargins(style, caption);
+    return std::max((width - m.left - m.right) * 0.5f, 0.0f) + m.top + m.bottom;
+}
+
+namespace {
+
+// A ring of radius r (unit) as a polyline, from the surface on the left over the top.
+std::vector<glm::vec2> arc(const Polar& p, float r) {
+    std::vector<glm::vec2> pts;
+    const int n = 120;
+    for (int i = 0; i <= n; ++i) {
+        const float a = glm::pi<float>() * static_cast<float>(i) / n;
+        pts.push_back(p.at({-std::cos(a) * r, std::sin(a) * r}));
+    }
+    return pts;
+}
+
+} // namespace
+
+std::vector<DecadeMark> decadeMarks(float outer, const PlotStyle& style) {
+    std::vector<DecadeMark> marks;
+    for (float decade : decadeTicks(outer * 10.0f, kLogDecades + 1.0f)) {
+        for (int k = 2; k <= 9; ++k) {
+            const float r = plotRadius(decade * 0.1f * static_cast<float>(k), outer, RadialScale::Log);
+            if (r > 0.0f && r < 1.0f) {
+                marks.push_back({r, (k == 5 ? 8.0f : 5.0f) * style.scale});
+            }
+        }
+    }
+    return marks;
+}
+
+void polarGrid(PlotCanvas& canvas, const Polar& p, float outer, RadialScale scale, bool caption) {
+    const PlotStyle& s = canvas.style();
+    if (p.radius < 2.0f * s.text()) {
+        canvas.line({p.at({-1.05f, 0}), p.at({1.05f, 0})}, s.stroke(), Ink::Axis);
+        return;
+    }
+    const float below = p.origin.y + s.pad() + s.text() * 0.5f;
+    for (float side : {-1.0f, 1.0f}) {
+        canvas.text({p.origin.x + side * (p.radius + s.pad()), below}, degrees(90.0f), s.text(), Ink::Text, TextAnchor::Middle);
+    }
+    // Ring values stop short of the 90° label, and skip one that would crowd the last.
+    const float limit = p.origin.x + p.radius + s.pad() - s.width(degrees(90.0f), s.text()) * 0.5f - s.pad();
+    float labelsEnd = p.origin.x;
+    for (auto [v, r] : radialRings(outer, scale)) {
+        if (r < 0.999f) {
+            canvas.line(arc(p, r), s.thin(), Ink::Grid);
+        }
+        const std::string t = tickText(v);
+        const float w = s.width(t, s.small()), x = p.origin.x + r * p.radius;
+        if (x - w * 0.5f > labelsEnd + s.pad() && x + w * 0.5f < limit) {
+            canvas.text({x, below}, t, s.small(), Ink::Muted, TextAnchor::Middle);
+            labelsEnd = x + w * 0.5f;
+        }
+    }
+    for (int deg = -60; deg <= 60; deg += 30) {
+        const glm::vec2 d = dirFromDeg(static_cast<float>(deg), 1.0f);
+        canvas.line({p.at({0, 0}), p.at(d)}, s.thin(), Ink::Grid);
+        const std::string t = degrees(static_cast<float>(std::abs(deg)));
+        const glm::vec2 rim = p.at(d);
+        const float out = s.pad() + 0.5f * (std::abs(d.x) * s.width(t, s.text()) + std::abs(d.y) * s.text());
+        canvas.text({rim.x + d.x * out, rim.y - d.y * out}, t, s.text(), Ink::Text, TextAnchor::Middle);
+    }
+    canvas.line(arc(p, 1.0f), s.thin(), Ink::Axis);
+    if (scale == RadialScale::Log) {
+        for (const DecadeMark& mark : decadeMarks(outer, s)) {
+            for (float side : {-1.0f, 1.0f}) {
+                const glm::vec2 m = p.at({side * mark.radius, 0});
+                canvas.line({{m.x, m.y - mark.length}, m}, s.thin(), Ink::Axis);
+            }
+        }
+    }
+    canvas.line({p.at({-1.02f, 0}), p.at({1.02f, 0})}, s.stroke(), Ink::Axis);
+    if (caption) {
+        const std::string text = "radius: reflected intensity, " +
+                                 std::string(scale == RadialScale::Linear ? "linear" : "logarithmic (3 decades)") +
+                                 "; outer circle " + tickText(outer);
+        canvas.text({p.origin.x, below + s.text() + s.pad()}, text, s.small(), Ink::Muted, TextAnchor::Middle);
+    }
+}
+
+//----------------------------------------------------------------------------------------
+// Cartesian plots
+//----------------------------------------------------------------------------------------
+
+void axes(PlotCanvas& canvas, const Box& b, const std::vector<AxisTick>& xTicks, const std::vector<AxisTick>& yTicks,
+          const std::string& xName, const std::string& yName, bool outside) {
+    const PlotStyle& s = canvas.style();
+    for (auto [v, t] : yTicks) {
+        const glm::vec2 y = b.at(0, v);
+        if (v > 0.0f) {
+            canvas.line({y, b.at(1, v)}, s.thin(), Ink::Grid);
+        }
+        canvas.text({b.lo.x - s.pad(), y.y}, tickText(t), s.text(), Ink::Text, TextAnchor::End);
+    }
+    for (auto [u, t] : xTicks) {
+        const glm::vec2 x = b.at(u, 0);
+        if (u > 0.0f) {
+            canvas.line({x, b.at(u, 1)}, s.thin(), Ink::Grid);
+        }
+        canvas.text({x.x, b.lo.y + s.pad() + s.text() * 0.5f}, tickText(t), s.text(), Ink::Text, TextAnchor::Middle);
+    }
+    canvas.line({b.at(0, 0), b.at(1.0f, 0)}, s.stroke(), Ink::Axis);
+    canvas.line({b.at(0, 0), b.at(0, 1.0f)}, s.stroke(), Ink::Axis);
+    if (outside) {
+        canvas.text({b.lo.x, b.hi.y - s.text() - s.pad()}, yName, s.text(), Ink::Text, TextAnchor::Middle, true);
+        canvas.text({b.at(0.5f, 0).x, b.lo.y + 2.0f * s.pad() + s.text() * 1.5f}, xName, s.text(), Ink::Text,
+                    TextAnchor::Middle, true);
+    } else if (!xName.empty()) {
+        canvas.text({b.hi.x, b.lo.y - s.pad() - s.text() * 0.5f}, xName, s.text(), Ink::Text, TextAnchor::End);
+    }
+}
+
+} // namespace lab
