@@ -8,20 +8,13 @@ namespace lab::ui {
 namespace {
 
 // Unit points to screen points, thinned.
-std::vector<ImVec2> placeAndThin(const std::vector<glm::vec2>& unit, const CurvePlacement& at) {
+std::vector<glm::vec2> placeAndThin(const std::vector<glm::vec2>& unit, const CurvePlacement& at) {
     std::vector<glm::vec2> screen;
     screen.reserve(unit.size());
     for (const glm::vec2& u : unit) {
-        ImVec2 s = at.at(u);
-        screen.emplace_back(s.x, s.y);
+        screen.push_back(at.at(u));
     }
-    std::vector<glm::vec2> thin = thinPolyline(screen, kCurveTolerance);
-    std::vector<ImVec2> out;
-    out.reserve(thin.size());
-    for (const glm::vec2& p : thin) {
-        out.emplace_back(p.x, p.y);
-    }
-    return out;
+    return thinPolyline(screen, kCurveTolerance);
 }
 
 } // namespace

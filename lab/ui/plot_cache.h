@@ -15,7 +15,7 @@
 #include "core/plots/energy.h"
 #include "core/plots/plot_data.h"
 
-#include <imgui.h>
+#include <glm/vec2.hpp>
 
 #include <cstdint>
 #include <memory>
@@ -32,7 +32,7 @@ inline constexpr float kCurveTolerance = 0.2f;
 struct CurvePlacement {
     bool polar = true;
     glm::vec2 offset{0.0f}, scale{1.0f};
-    ImVec2 at(glm::vec2 unit) const { return ImVec2(offset.x + scale.x * unit.x, offset.y + scale.y * unit.y); }
+    glm::vec2 at(glm::vec2 unit) const { return offset + scale * unit; }
 };
 bool operator==(const CurvePlacement& x, const CurvePlacement& y);
 
@@ -82,7 +82,7 @@ private:
 class PlotCache {
 public:
     using Samples = std::shared_ptr<const std::vector<PlotSample>>;
-    using Points = std::shared_ptr<const std::vector<ImVec2>>;
+    using Points = std::shared_ptr<const std::vector<glm::vec2>>;
 
     // reflectedIntensity(inputs).
     Samples samples(const LobeInputs& inputs);
@@ -122,8 +122,8 @@ private:
     RecentlyUsed<LobeInputs, std::vector<PlotSample>> samples_{16};
     RecentlyUsed<LobeInputs, std::optional<Albedo>> albedo_{8}; // A and B at the lobe's angle
     RecentlyUsed<LobeInputs, std::vector<AlbedoSample>> albedoCurves_{4}; // A and B, against θi
-    RecentlyUsed<LobeKey, std::vector<ImVec2>> lobes_{32};
-    RecentlyUsed<AttenuationKey, std::vector<ImVec2>> attenuation_{4};
+    RecentlyUsed<LobeKey, std::vector<glm::vec2>> lobes_{32};
+    RecentlyUsed<AttenuationKey, std::vector<glm::vec2>> attenuation_{4};
 };
 
 } // namespace lab::ui

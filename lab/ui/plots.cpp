@@ -25,6 +25,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace lab::ui {
@@ -81,16 +82,16 @@ float largestTotal(std::initializer_list<const std::vector<PlotSample>*> sets) {
 // specular = total" in the curves' colours, and B's total. Short tokens without labels, so that a
 // narrow column keeps room for the lobe.
 void albedoTokens(Readout& r, const std::optional<Albedo>& a, const std::optional<Albedo>* b, float incident) {
-    r.add(format("albedo at %s:", degrees(std::fabs(incident)).c_str()), kLabel);
+    r.add(format("albedo at %s:", degrees(std::fabs(incident)).c_str()), Ink::Text);
     if (!a) {
-        r.add("none (no light arrives)", kLabel);
+        r.add("none (no light arrives)", Ink::Text);
         return;
     }
-    r.add(format("%.3f", double(luminance(a->diffuse))), kDiffuse);
-    r.add(format("+ %.3f", double(luminance(a->specular))), kSpecular);
-    r.add(format("= %.3f", double(luminance(a->total()))), kTotal);
+    r.add(format("%.3f", double(luminance(a->diffuse))), Ink::Diffuse);
+    r.add(format("+ %.3f", double(luminance(a->specular))), Ink::Specular);
+    r.add(format("= %.3f", double(luminance(a->total()))), Ink::Total);
     if (b && *b) {
-        r.add(format("B %.3f", double(luminance((*b)->total()))), kCompare);
+        r.add(format("B %.3f", double(luminance((*b)->total()))), Ink::Compare);
     }
 }
 
@@ -106,12 +107,12 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p)
     l.largest = b ? largestTotal({l.a.get(), l.b.get()}) : largestTotal({l.a.get()});
     l.outer = scaleMaximum(outerRing(l.largest), s.lockScale, s.lobeScale);
     const PlotSample& v = sampleAt(*l.a, s.viewerDeg);
-    l.readout.add(format("at V %+.0f%s:", double(s.viewerDeg), kDeg), kViewer);
-    l.readout.add(format("diffuse %.3f", double(v.diffuse)), kDiffuse, true);
-    l.readout.add(format("specular %.3f", double(v.specular)), kSpecular, true);
-    l.readout.add(format("total %.3f", double(v.total)), kTotal, true);
+    l.readout.add(format("at V %+.0f%s:", double(s.viewerDeg), kDeg), Ink::Viewer);
+    l.readout.add(format("diffuse %.3f", double(v.diffuse)), Ink::Diffuse, true);
+    l.readout.add(format("specular %.3f", double(v.specular)), Ink::Specular, true);
+    l.readout.add(format("total %.3f", double(v.total)), Ink::Total, true);
     if (b) {
-        l.readout.add(format("total B %.3f", double(sampleAt(*l.b, s.viewerDeg).total)), kCompare, true);
+        l.readout.add(format("total B %.3f", double(sampleAt(*l.b, s.viewerDeg).total)), Ink::Compare, true);
     }
     l.readout.lineBreak();
     scaleTokens(l.readout, l.outer, l.largest, s.lockScale, b ? "max total of A and B" : "max total");
@@ -129,7 +130,7 @@ Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
     }
     o.largest = largestTotal({o.sets[0].get(), o.sets[1].get(), o.sets[2].get()});
     o.outer = scaleMaximum(outerRing(o.largest), s.lockScale, s.overlayScale);
-    o.readout.add("total for each incident angle;", kLabel);
+    o.readout.add("total for each incident angle;", Ink::Text);
     scaleTokens(o.readout, o.outer, o.largest, s.lockScale, "max of the three");
     o.readout.measure(p);
     return o;
@@ -138,7 +139,7 @@ Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
 Attenuation attenuationData(const Preset& a, PlotSettings& s, const Pens& p) {
     Attenuation t;
     if (a.lights.empty()) {
-        t.readout.add("No lights.", kLabel);
+        t.readout.add("No lights.", Ink::Text);
         t.readout.measure(p);
         return t;
     }
@@ -146,16 +147,16 @@ Attenuation attenuationData(const Preset& a, PlotSettings& s, const Pens& p) {
     t.light = &a.lights[static_cast<std::size_t>(s.attenuationLight)];
     std::string name = format("Light %d", s.attenuationLight + 1);
     if (t.light->type == LightType::Directional) {
-        t.readout.add(name + " is directional:", kLabel);
-        t.readout.add("Att = 1 at every distance", kSpecular);
+        t.readout.add(name + " is directional:", Ink::Text);
+        t.readout.add("Att = 1 at every distance", Ink::Specular);
     } else {
         const AttenuationSpan span = attenuationSpan(*t.light, a.model); // as the figure's (core/plots/plot_data.h)
         t.distance = span.distance;
         t.maxD = span.maxDistance;
         t.att = glsl::attenuation(t.light->attenuation, t.distance);
-        t.readout.add(name + ", at the model:", kLabel);
-        t.readout.add(format("d = %.2f", double(t.distance)), kSpecular);
-        t.readout.add(format("Att(d) = %.3f", double(t.att)), kSpecular);
+        t.readout.add(name + ", at the model:", Ink::Text);
+        t.readout.add(format("d = %.2f", double(t.distance)), Ink::Specular);
+        t.readout.add(format("Att(d) = %.3f", double(t.att)), Ink::Specular);
     }
     t.readout.measure(p);
     return t;
@@ -232,77 +233,91 @@ Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout
 //----------------------------------------------------------------------------------------
 
 // The lobe's curves, where `at` puts them: A's diffuse, specular and total, and B's total.
-void lobeCurves(ImDrawList* dl, const Pens& p, const Lobes& lobes, PlotSettings& s, const CurvePlacement& at) {
-    auto curve = [&](const LobeInputs& in, PlotComponent component, ImU32 color, float thickness) {
-        polyline(dl, *s.cache.lobe(in, component, lobes.outer, s.scale, at), color, thickness);
+void lobeCurves(ScreenPlot& plot, const Lobes& lobes, PlotSettings& s, const CurvePlacement& at) {
+    const PlotStyle& style = plot.style;
+    auto curve = [&](const LobeInputs& in, PlotComponent component, Ink ink, float width) {
+        plot.canvas.line(*s.cache.lobe(in, component, lobes.outer, s.scale, at), width, ink);
     };
-    curve(lobes.inA, PlotComponent::Diffuse, kDiffuse, p.stroke);
-    curve(lobes.inA, PlotComponent::Specular, kSpecular, p.stroke);
-    curve(lobes.inA, PlotComponent::Total, kTotal, p.bold);
+    curve(lobes.inA, PlotComponent::Diffuse, Ink::Diffuse, style.stroke());
+    curve(lobes.inA, PlotComponent::Specular, Ink::Specular, style.stroke());
+    curve(lobes.inA, PlotComponent::Total, Ink::Total, style.bold());
     if (lobes.b) {
-        curve(lobes.inB, PlotComponent::Total, kCompare, p.stroke);
+        curve(lobes.inB, PlotComponent::Total, Ink::Compare, style.stroke());
     }
+}
+
+// A Cartesian plot's box in a canvas: room for the values left of the y axis (`yLabel` the widest)
+// and under the x axis, half of the last x value (`xLabel`) right of the box. Nullopt when too small.
+std::optional<Box> canvasBox(const Canvas& c, const PlotStyle& style, const std::string& yLabel, const std::string& xLabel) {
+    const float text = style.text(), pad = style.pad();
+    Box b{{c.corner.x + style.width(yLabel, text) + 2.0f * pad, c.corner.y + c.height - text - 2.0f * pad},
+          {c.corner.x + c.width - style.width(xLabel, text) * 0.5f - pad, c.corner.y + text * 0.6f}};
+    if (b.hi.x - b.lo.x < text || b.lo.y - b.hi.y < text) {
+        return std::nullopt;
+    }
+    return b;
 }
 
 // x: θo from -90 to 90; y: intensity (radius function), 0 at the bottom.
-void cartesianLobes(const Canvas& c, const Pens& p, const Lobes& lobes, PlotSettings& s) {
-    ImDrawList* dl = c.dl;
-    std::vector<RadialRing> ticks = radialRings(lobes.outer, s.scale);
-    float labelW = textSize("0.000").x;
-    Box b{ImVec2(c.corner.x + labelW + 2.0f * p.pad, c.corner.y + c.height - p.line - p.pad),
-          ImVec2(c.corner.x + c.width - textSize("90" + std::string(kDeg)).x * 0.5f - p.pad, c.corner.y + p.line * 0.6f)};
-    if (b.hi.x - b.lo.x < p.font || b.lo.y - b.hi.y < p.font) {
+void cartesianLobes(const Canvas& c, const Lobes& lobes, PlotSettings& s) {
+    ScreenPlot plot;
+    const PlotStyle& style = plot.style;
+    const std::optional<Box> box = canvasBox(c, style, "0.000", degrees(90.0f));
+    if (!box) {
         return;
     }
+    const Box& b = *box;
     auto at = [&](float deg, float r) { return b.at((deg + 90.0f) / 180.0f, r); };
-    yAxis(dl, p, b, ticks, s.scale == RadialScale::Linear);
-    dl->AddLine(at(-90, 1), at(90, 1), kAxis, p.thin); // the outer circle's value
+    std::vector<AxisTick> xs, ys;
     for (int deg = -90; deg <= 90; deg += 30) {
-        dl->AddLine(at(static_cast<float>(deg), 0), at(static_cast<float>(deg), 1), kGrid, p.thin);
-        centredText(dl, ImVec2(at(static_cast<float>(deg), 0).x, b.lo.y + p.pad * 0.5f + p.line * 0.5f), kLabel,
-                    degrees(static_cast<float>(deg)));
+        xs.push_back({(static_cast<float>(deg) + 90.0f) / 180.0f, static_cast<float>(deg), degrees(static_cast<float>(deg))});
     }
+    if (s.scale == RadialScale::Linear) {
+        ys.push_back({0.0f, 0.0f});
+    }
+    for (const RadialRing& ring : radialRings(lobes.outer, s.scale)) {
+        ys.push_back({ring.radius, ring.value});
+    }
+    axes(plot.canvas, b, xs, ys, "", "", false);
+    plot.canvas.line({at(-90, 1), at(90, 1)}, style.thin(), Ink::Axis); // the outer circle's value
     if (s.scale == RadialScale::Log) {
-        for (float decade : decadeTicks(lobes.outer * 10.0f, kLogDecades + 1.0f)) {
-            for (int k = 2; k <= 9; ++k) {
-                float r = plotRadius(decade * 0.1f * static_cast<float>(k), lobes.outer, s.scale);
-                if (r > 0.0f && r < 1.0f) {
-                    ImVec2 m = b.at(0, r);
-                    dl->AddLine(m, ImVec2(m.x + (k == 5 ? 0.6f : 0.4f) * p.font, m.y), kAxis, p.thin);
-                }
-            }
+        for (const DecadeMark& mark : decadeMarks(lobes.outer, style)) {
+            const glm::vec2 m = b.at(0, mark.radius);
+            plot.canvas.line({{m.x + mark.length, m.y}, m}, style.thin(), Ink::Axis);
         }
     }
-    dl->AddLine(at(-90, 0), at(90, 0), kAxis, p.stroke);
-    dl->AddLine(b.lo, b.at(0, 1), kAxis, p.stroke);
-    dl->AddLine(at(lobes.incident, 0), at(lobes.incident, 1), kMirror, p.thin); // the mirror angle
-    dl->AddLine(at(s.viewerDeg, 0), at(s.viewerDeg, 1), kViewer, p.thin);
-    lobeCurves(dl, p, lobes, s, {false, {b.lo.x, b.lo.y}, {b.hi.x - b.lo.x, b.hi.y - b.lo.y}});
+    plot.canvas.line({at(lobes.incident, 0), at(lobes.incident, 1)}, style.thin(), Ink::Mirror); // the mirror angle
+    plot.canvas.line({at(s.viewerDeg, 0), at(s.viewerDeg, 1)}, style.thin(), Ink::Viewer);
+    lobeCurves(plot, lobes, s, placementOf(b));
+    plot.paint(c.dl);
 }
 
 // The probe's vectors in its own plane of incidence: N up, L to the left.
-void probeArrows(ImDrawList* dl, const Pens& p, const Frame& f, const ProbeResult& probe, BrdfModel brdf) {
+void probeArrows(ScreenPlot& plot, const Polar& f, const ProbeResult& probe, BrdfModel brdf) {
     const ProbeLight& pl = probe.lights.front();
     glm::vec3 side = pl.L - pl.NoL * probe.N;
     glm::vec3 ex = glm::length(side) > 1e-5f ? -glm::normalize(side) : glm::vec3(1, 0, 0);
     auto project = [&](const glm::vec3& v) { return glm::vec2(glm::dot(v, ex), glm::dot(v, probe.N)); };
-    arrow(dl, p, f, project(pl.L), 0.6f, kProbe, "probe L", p.thin * 1.5f);
-    arrow(dl, p, f, project(probe.V), 0.6f, kProbe, "probe V", p.thin * 1.5f);
+    auto arrow = [&](const glm::vec3& v, const char* label) {
+        plot.canvas.arrow(f.at({0, 0}), f.at(project(v) * 0.6f), Ink::Probe, plot.style.thin() * 1.5f, label);
+    };
+    arrow(pl.L, "probe L");
+    arrow(probe.V, "probe V");
     bool phong = brdf == BrdfModel::Phong;
-    arrow(dl, p, f, project(phong ? pl.R : pl.H), 0.6f, kProbe, phong ? "probe R" : "probe H", p.thin * 1.5f);
+    arrow(phong ? pl.R : pl.H, phong ? "probe R" : "probe H");
 }
 
 // Dragging L (the preset's incident angle) or V (the reading direction) by its tip.
-void dragArrows(const Frame& f, glm::vec2 L, glm::vec2 V, Preset& a, PlotSettings& s) {
+void dragArrows(const Polar& f, glm::vec2 L, glm::vec2 V, Preset& a, PlotSettings& s) {
     if (ImGui::IsItemActivated()) {
-        glm::vec2 m = f.from(ImGui::GetIO().MousePos);
+        glm::vec2 m = f.unitAt(toVec2(ImGui::GetIO().MousePos));
         s.dragging = glm::distance(m, L) < glm::distance(m, V) ? 1 : 2;
     }
     if (!ImGui::IsItemActive() || !s.dragging) {
         s.dragging = 0;
         return;
     }
-    glm::vec2 m = f.from(ImGui::GetIO().MousePos);
+    glm::vec2 m = f.unitAt(toVec2(ImGui::GetIO().MousePos));
     float deg = glm::degrees(std::atan2(m.x, std::max(m.y, 0.0f)));
     if (s.dragging == 1) {
         a.plotIncidentDeg = limits::clamp(limits::kPlotIncidentDeg, std::round(-deg));
@@ -311,23 +326,28 @@ void dragArrows(const Frame& f, glm::vec2 L, glm::vec2 V, Preset& a, PlotSetting
     }
 }
 
-void polarLobes(const Canvas& c, const Pens& p, const Lobes& lobes, Preset& a, PlotSettings& s, const ProbeResult* probe) {
-    ImDrawList* dl = c.dl;
-    Frame f = polarFrame(c, p);
-    polarGrid(dl, p, f, lobes.outer, s.scale);
-    lobeCurves(dl, p, lobes, s, f.placement());
+void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s, const ProbeResult* probe) {
+    ScreenPlot plot;
+    const PlotStyle& style = plot.style;
+    const Polar f = polarFrame(c.origin(), c.width, c.height, style, false);
+    polarGrid(plot.canvas, f, lobes.outer, s.scale, false);
+    lobeCurves(plot, lobes, s, placementOf(f));
     glm::vec2 L = dirFromDeg(lobes.incident, -1.0f), R = dirFromDeg(lobes.incident, 1.0f), V = dirFromDeg(s.viewerDeg, 1.0f);
-    arrow(dl, p, f, {0, 1}, 0.8f, kAxis, "N", p.stroke);
-    arrow(dl, p, f, L, 0.92f, kLight, "L", p.bold);
-    arrow(dl, p, f, R, 0.8f, kMirror, "R", p.stroke);
-    arrow(dl, p, f, V, 0.88f, kViewer, "V", p.stroke);
+    auto arrow = [&](glm::vec2 dir, float length, Ink ink, const char* label, float width) {
+        plot.canvas.arrow(f.at({0, 0}), f.at(dir * length), ink, width, label);
+    };
+    arrow({0, 1}, 0.8f, Ink::Axis, "N", style.stroke());
+    arrow(L, 0.92f, Ink::Light, "L", style.bold());
+    arrow(R, 0.8f, Ink::Mirror, "R", style.stroke());
+    arrow(V, 0.88f, Ink::Viewer, "V", style.stroke());
     if (a.brdf != BrdfModel::Phong) {
         glm::vec3 H = glsl::halfVector(glm::vec3(L, 0.0f), glm::vec3(V, 0.0f)); // the model's own H
-        arrow(dl, p, f, glm::vec2(H), 0.65f, kHalf, "H", p.stroke);
+        arrow(glm::vec2(H), 0.65f, Ink::Half, "H", style.stroke());
     }
     if (probe && !probe->lights.empty()) {
-        probeArrows(dl, p, f, *probe, a.brdf);
+        probeArrows(plot, f, *probe, a.brdf);
     }
+    plot.paint(c.dl);
     dragArrows(f, L, V, a, s);
 }
 
@@ -337,7 +357,7 @@ PlotNeeds lobeNeeds(const Lobes& lobes, const PlotSettings& s, const Pens& p, fl
     n.fixed = lobes.readout.height(p, width) + 2.0f * p.gap + p.frame;
     n.minWidth = 14.0f * p.font;
     n.minCanvas = 7.0f * p.line;
-    n.maxCanvas = s.cartesian ? width * 0.55f : polarMaxHeight(p, width);
+    n.maxCanvas = s.cartesian ? width * 0.55f : polarMaxHeight(screenStyle(), width, false);
     n.maxCanvas = std::max(n.maxCanvas, n.minCanvas);
     return n;
 }
@@ -346,14 +366,14 @@ void lobePlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, co
               PlotSettings& s, const ProbeResult* probe) {
     const Block block = placeBlock(box, origin, p, lobes.readout, "plot.lobe.readout", cramped, true,
                                    lobeNeeds(lobes, s, p, box.w).minCanvas, [&](float w) {
-        return s.cartesian ? w * 0.55f : polarMaxHeight(p, w);
+        return s.cartesian ? w * 0.55f : polarMaxHeight(screenStyle(), w, false);
     });
     const Canvas canvas = beginCanvas("lobe", "plot.lobe", block.canvasW, block.canvasH);
     if (canvas.shown()) {
         if (s.cartesian) {
-            cartesianLobes(canvas, p, lobes, s);
+            cartesianLobes(canvas, lobes, s);
         } else {
-            polarLobes(canvas, p, lobes, a, s, probe);
+            polarLobes(canvas, lobes, a, s, probe);
         }
     }
     if (!block.controlsFit) {
@@ -383,7 +403,7 @@ PlotNeeds overlayNeeds(const Overlay& o, const Pens& p, float width) {
     n.fixed = o.readout.height(p, width) + 2.0f * p.gap + p.frame;
     n.minWidth = 12.0f * p.font;
     n.minCanvas = 6.0f * p.line;
-    n.maxCanvas = std::max(polarMaxHeight(p, width), n.minCanvas);
+    n.maxCanvas = std::max(polarMaxHeight(screenStyle(), width, false), n.minCanvas);
     return n;
 }
 
@@ -395,19 +415,22 @@ ImVec4 shade(ImU32 color, float k) {
 
 void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Overlay& o, PlotSettings& s) {
     const Block block = placeBlock(box, origin, p, o.readout, "plot.overlay.readout", cramped, true,
-                                   overlayNeeds(o, p, box.w).minCanvas, [&](float w) { return polarMaxHeight(p, w); });
+                                   overlayNeeds(o, p, box.w).minCanvas, [&](float w) { return polarMaxHeight(screenStyle(), w, false); });
     const Canvas canvas = beginCanvas("overlay", "plot.overlay", block.canvasW, block.canvasH);
     if (canvas.shown()) {
-        Frame f = polarFrame(canvas, p);
-        polarGrid(canvas.dl, p, f, o.outer, s.scale);
+        ScreenPlot plot;
+        const Polar f = polarFrame(canvas.origin(), canvas.width, canvas.height, plot.style, false);
+        polarGrid(plot.canvas, f, o.outer, s.scale, false);
         for (std::size_t i = 0; i < 3; ++i) {
-            const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, f.placement());
-            polyline(canvas.dl, *curve, kOverlay[i], p.stroke);
+            const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, placementOf(f));
+            plot.canvas.line(*curve, plot.style.stroke(), overlayInk(i));
         }
         for (std::size_t i = 0; i < 3; ++i) {
             float deg = s.overlayDeg[static_cast<int>(i)];
-            arrow(canvas.dl, p, f, dirFromDeg(deg, -1.0f), 0.9f, kOverlay[i], nullptr, p.stroke); // the fields name them
+            // The fields name them.
+            plot.canvas.arrow(f.at({0, 0}), f.at(dirFromDeg(deg, -1.0f) * 0.9f), overlayInk(i), plot.style.stroke(), "");
         }
+        plot.paint(canvas.dl);
     }
     // The three angles, each field in its curve's colour.
     if (!block.controlsFit) {
@@ -423,9 +446,9 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
         if (i > 0) {
             ImGui::SameLine(0.0f, p.inner);
         }
-        ImGui::PushStyleColor(ImGuiCol_FrameBg, shade(kOverlay[i], 0.45f));
-        ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, shade(kOverlay[i], 0.6f));
-        ImGui::PushStyleColor(ImGuiCol_FrameBgActive, shade(kOverlay[i], 0.75f));
+        ImGui::PushStyleColor(ImGuiCol_FrameBg, shade(ink(overlayInk(std::size_t(i))), 0.45f));
+        ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, shade(ink(overlayInk(std::size_t(i))), 0.6f));
+        ImGui::PushStyleColor(ImGuiCol_FrameBgActive, shade(ink(overlayInk(std::size_t(i))), 0.75f));
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 255, 255, 255));
         ImGui::SetNextItemWidth(field);
         ImGui::DragFloat(ids[i], &s.overlayDeg[i], 0.5f, -90.0f, 90.0f, unit.c_str());
@@ -454,39 +477,31 @@ PlotNeeds attenuationNeeds(const Attenuation& t, const Preset& a, const Pens& p,
     return n;
 }
 
-void attenuationCanvas(const Canvas& c, const Pens& p, const Attenuation& t, PlotCache& cache) {
-    ImDrawList* dl = c.dl;
-    Box b{ImVec2(c.corner.x + textSize("0.5").x + 2.0f * p.pad, c.corner.y + c.height - p.line - p.pad),
-          ImVec2(c.corner.x + c.width - textSize("10").x * 0.5f - p.pad, c.corner.y + p.line * 0.6f)};
-    if (b.hi.x - b.lo.x < p.font || b.lo.y - b.hi.y < p.font) {
+void attenuationCanvas(const Canvas& c, const Attenuation& t, PlotCache& cache) {
+    ScreenPlot plot;
+    const PlotStyle& style = plot.style;
+    const std::optional<Box> box = canvasBox(c, style, "0.5", "10");
+    if (!box) {
         return;
     }
-    float maxD = t.maxD;
+    const Box& b = *box;
+    const float maxD = t.maxD;
     auto at = [&](float d, float att) { return b.at(d / maxD, att); };
-    yAxis(dl, p, b, {{0.5f, 0.5f}, {1.0f, 1.0f}}, true);
-    int count = std::clamp(static_cast<int>((b.hi.x - b.lo.x) / (3.5f * p.font)), 2, 10);
+    std::vector<AxisTick> xs, ys{{0.0f, 0.0f}, {0.5f, 0.5f}, {1.0f, 1.0f}};
+    const int count = std::clamp(static_cast<int>((b.hi.x - b.lo.x) / (3.5f * style.text())), 2, 10);
     for (float d : linearTicks(maxD, count)) {
-        dl->AddLine(at(d, 0), at(d, 1), kGrid, p.thin);
-        centredText(dl, ImVec2(at(d, 0).x, b.lo.y + p.pad * 0.5f + p.line * 0.5f), kLabel, tickText(d));
+        xs.push_back({d / maxD, d});
     }
-    dl->AddLine(at(0, 0), at(maxD, 0), kAxis, p.stroke);
-    dl->AddLine(at(0, 0), at(0, 1), kAxis, p.stroke);
+    axes(plot.canvas, b, xs, ys, "d", "", false);
     if (t.light->type == LightType::Directional) {
-        const ImVec2 flat[2] = {at(0, 1), at(maxD, 1)};
-        dl->AddPolyline(flat, 2, kTotal, 0, p.bold);
+        plot.canvas.line({at(0, 1), at(maxD, 1)}, style.bold(), Ink::Total);
     } else {
-        const CurvePlacement place{false, {b.lo.x, b.lo.y}, {b.hi.x - b.lo.x, b.hi.y - b.lo.y}};
-        polyline(dl, *cache.attenuation(t.light->attenuation, maxD, place), kTotal, p.bold);
+        plot.canvas.line(*cache.attenuation(t.light->attenuation, maxD, placementOf(b)), style.bold(), Ink::Total);
+        const glm::vec2 m = at(t.distance, t.att);
+        plot.canvas.line({at(t.distance, 0), m}, style.thin(), Ink::Specular);
+        plot.canvas.disc(m, 5.0f * style.scale, Ink::Specular);
     }
-    if (t.light->type != LightType::Directional) {
-        ImVec2 m = at(t.distance, t.att);
-        dl->AddLine(at(t.distance, 0), m, kSpecular, p.thin);
-        dl->AddCircleFilled(m, 5.0f * p.s, kSpecular);
-    }
-    // The axis's name at its end, above the line.
-    ImVec2 end = at(maxD, 0);
-    ImVec2 size = textSize("d");
-    dl->AddText(ImVec2(end.x - size.x, end.y - size.y - p.pad * 0.5f), kLabel, "d");
+    plot.paint(c.dl);
 }
 
 void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Attenuation& t,
@@ -496,7 +511,7 @@ void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cram
     if (t.light) {
         const Canvas canvas = beginCanvas("attenuation", "plot.attenuation", block.canvasW, block.canvasH);
         if (canvas.shown()) {
-            attenuationCanvas(canvas, p, t, s.cache);
+            attenuationCanvas(canvas, t, s.cache);
         }
     }
     if (lightChooser(a) && block.controlsFit) {

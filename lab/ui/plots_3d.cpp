@@ -7,6 +7,7 @@
 // copied into the draw list each frame; the grid lines, arrows and labels are drawn on top.
 #include "ui/plots_3d.h"
 #include "ui/plot_kit.h"
+#include "ui/widgets.h"
 #include "ui/plots.h"
 
 #include "core/lighting/lighting.h"
@@ -232,13 +233,13 @@ const char* componentName(PlotComponent c) {
     return c == PlotComponent::Diffuse ? "diffuse" : c == PlotComponent::Specular ? "specular" : "total";
 }
 
-ImU32 componentColor(PlotComponent c) {
-    return c == PlotComponent::Diffuse ? kDiffuse : c == PlotComponent::Specular ? kSpecular : kTotal;
+Ink componentInk(PlotComponent c) {
+    return c == PlotComponent::Diffuse ? Ink::Diffuse : c == PlotComponent::Specular ? Ink::Specular : Ink::Total;
 }
 
-void arrow3d(ImDrawList* dl, const Pens& p, const Camera& cam, const glm::vec3& dir, float length, ImU32 color,
-             const char* label, float thickness) {
-    arrowBetween(dl, p, cam.at(glm::vec3(0.0f)), cam.at(dir * length), color, label, thickness);
+void arrow3d(ScreenPlot& plot, const Camera& cam, const glm::vec3& dir, float length, Ink ink, const char* label,
+             float width) {
+    plot.canvas.arrow(toVec2(cam.at(glm::vec3(0.0f))), toVec2(cam.at(dir * length)), ink, width, label);
 }
 
 void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& key, const Lobe3dMesh& mesh,
@@ -254,27 +255,30 @@ void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& 
             const float t = 2.0f * pi * static_cast<float>(k) / 72.0f;
             circle.push_back(cam.at(ring.radius * glm::vec3(std::cos(t), 0.0f, std::sin(t))));
         }
-        dl->AddPolyline(circle.data(), static_cast<int>(circle.size()), kGrid, 0, p.thin);
+        dl->AddPolyline(circle.data(), static_cast<int>(circle.size()), ink(Ink::Grid), 0, p.thin);
     }
     for (int deg = 0; deg < 360; deg += 30) {
         const float t = glm::radians(static_cast<float>(deg));
         dl->AddLine(cam.at(glm::vec3(0.0f)), cam.at(glm::vec3(std::cos(t), 0.0f, std::sin(t))),
-                    deg % 180 == 0 ? kAxis : kGrid, p.thin);
+                    deg % 180 == 0 ? ink(Ink::Axis) : ink(Ink::Grid), p.thin);
     }
     drawMesh(dl, mesh.positions, mesh.colors, mesh.indices);
     for (const std::vector<ImVec2>& line : mesh.wireframe) {
-        dl->AddPolyline(line.data(), static_cast<int>(line.size()), kCompare, 0, p.thin);
+        dl->AddPolyline(line.data(), static_cast<int>(line.size()), ink(Ink::Compare), 0, p.thin);
     }
     // The vectors: N, L, R, and V (the plane plot's reading direction) with its H.
     const glm::vec3 V = outgoingDirection(std::fabs(s.viewerDeg), s.viewerDeg >= 0.0f ? 0.0f : 180.0f);
-    arrow3d(dl, p, cam, v.vectors.N, 1.08f, kAxis, "N", p.stroke);
-    arrow3d(dl, p, cam, v.vectors.L, 1.1f, kLight, "L", p.bold);
-    arrow3d(dl, p, cam, v.vectors.R, 1.1f, kMirror, "R", p.stroke);
-    arrow3d(dl, p, cam, V, 0.9f, kViewer, "V", p.thin * 1.5f);
-    arrow3d(dl, p, cam, glsl::halfVector(v.vectors.L, V), 0.7f, kHalf, "H", p.stroke);
+    ScreenPlot vectors;
+    const PlotStyle& style = vectors.style;
+    arrow3d(vectors, cam, v.vectors.N, 1.08f, Ink::Axis, "N", style.stroke());
+    arrow3d(vectors, cam, v.vectors.L, 1.1f, Ink::Light, "L", style.bold());
+    arrow3d(vectors, cam, v.vectors.R, 1.1f, Ink::Mirror, "R", style.stroke());
+    arrow3d(vectors, cam, V, 0.9f, Ink::Viewer, "V", style.thin() * 1.5f);
+    arrow3d(vectors, cam, glsl::halfVector(v.vectors.L, V), 0.7f, Ink::Half, "H", style.stroke());
+    vectors.paint(dl);
     if (v.peak.value > 0.0f && v.largest > kNothingLit) {
         const ImVec2 q = cam.at(plotRadius(v.peak.value, v.outer, key.scale) * v.peak.V);
-        dl->AddCircle(q, 4.5f * p.s, kLabel, 0, p.stroke);
+        dl->AddCircle(q, 4.5f * p.s, ink(Ink::Text), 0, p.stroke);
     }
     // Orbiting: a drag turns the camera about N and raises or lowers it.
     if (ImGui::IsItemActive()) {
@@ -294,20 +298,21 @@ void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& k
     const float radius = std::min(r.z, r.w) * 0.5f;
     drawMesh(dl, mesh.mapPositions, mesh.mapColors, mesh.mapIndices);
     for (int deg = 30; deg <= 90; deg += 30) {
-        dl->AddCircle(centre, radius * static_cast<float>(deg) / 90.0f, deg == 90 ? kAxis : kGrid, 64, p.thin);
+        dl->AddCircle(centre, radius * static_cast<float>(deg) / 90.0f, deg == 90 ? ink(Ink::Axis) : ink(Ink::Grid), 64, p.thin);
     }
-    dl->AddLine(ImVec2(centre.x - radius, centre.y), ImVec2(centre.x + radius, centre.y), kGrid, p.thin);
-    dl->AddLine(ImVec2(centre.x, centre.y - radius), ImVec2(centre.x, centre.y + radius), kGrid, p.thin);
+    dl->AddLine(ImVec2(centre.x - radius, centre.y), ImVec2(centre.x + radius, centre.y), ink(Ink::Grid), p.thin);
+    dl->AddLine(ImVec2(centre.x, centre.y - radius), ImVec2(centre.x, centre.y + radius), ink(Ink::Grid), p.thin);
     if (radius > 4.0f * p.font) {
         // The rings' θo down the vertical axis, inside each ring: the plane of incidence (the
         // horizontal axis) is where L, R and most peaks are marked.
         for (int deg = 30; deg <= 90; deg += 30) {
             const std::string t = degrees(static_cast<float>(deg));
             dl->AddText(ImVec2(centre.x + 2.0f, centre.y + radius * static_cast<float>(deg) / 90.0f - textSize(t).y - 1.0f),
-                        kLabel, t.c_str());
+                        ink(Ink::Text), t.c_str());
         }
     }
-    auto spot = [&](const glm::vec3& dir, ImU32 color, const char* label, bool cross) {
+    auto spot = [&](const glm::vec3& dir, Ink which, const char* label, bool cross) {
+        const ImU32 color = ink(which);
         const glm::vec2 q = mapPoint(dir);
         const ImVec2 m(centre.x + radius * q.x, centre.y + radius * q.y);
         if (cross) {
@@ -321,12 +326,12 @@ void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& k
             dl->AddText(ImVec2(m.x + p.pad, m.y - p.line), color, label);
         }
     };
-    spot(v.vectors.R, kMirror, "R", false);
+    spot(v.vectors.R, Ink::Mirror, "R", false);
     if (v.vectors.L.y > 0.0f) {
-        spot(v.vectors.L, kLight, "L", false); // where the light is, seen from above
+        spot(v.vectors.L, Ink::Light, "L", false); // where the light is, seen from above
     }
     if (v.peak.value > 0.0f && v.largest > kNothingLit) {
-        spot(v.peak.V, kLabel, nullptr, true);
+        spot(v.peak.V, Ink::Text, nullptr, true);
     }
     // The legend: the ramp from 0 (bottom) to the outer value (top), five values beside it.
     if (legendW <= 0.0f) {
@@ -344,14 +349,14 @@ void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& k
         dl->AddRectFilledMultiColor(ImVec2(x, bottom - (bottom - top) * t1), ImVec2(x + barW, bottom - (bottom - top) * t0),
                                     hi, hi, lo, lo);
     }
-    dl->AddRect(ImVec2(x, top), ImVec2(x + barW, bottom), kAxis, 0.0f, 0, p.thin);
+    dl->AddRect(ImVec2(x, top), ImVec2(x + barW, bottom), ink(Ink::Axis), 0.0f, 0, p.thin);
     const int labels = std::clamp(static_cast<int>((bottom - top) / (1.5f * p.line)), 2, 5);
     for (int k = 0; k < labels; ++k) {
         const float t = static_cast<float>(k) / static_cast<float>(labels - 1);
         const float y = bottom - (bottom - top) * t;
         const std::string text = t == 0.0f && key.scale == RadialScale::Linear ? "0" : tickText(valueAt(t, v.outer, key.scale));
-        dl->AddLine(ImVec2(x + barW, y), ImVec2(x + barW + p.pad * 0.5f, y), kAxis, p.thin);
-        dl->AddText(ImVec2(x + barW + p.pad, y - p.line * 0.5f), kLabel, text.c_str());
+        dl->AddLine(ImVec2(x + barW, y), ImVec2(x + barW + p.pad * 0.5f, y), ink(Ink::Axis), p.thin);
+        dl->AddText(ImVec2(x + barW + p.pad, y - p.line * 0.5f), ink(Ink::Text), text.c_str());
     }
 }
 
@@ -410,9 +415,9 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p) 
     }
     v.outer = outerRing(v.largest);
     v.peak = *st.peaks.get({v.inA, st.component}, [&] { return lobeMaximum(v.inA, *v.gridA, st.component); });
-    const ImU32 color = componentColor(st.component);
+    const Ink color = componentInk(st.component);
     if (!(v.largest > kNothingLit)) {
-        v.readout.add(format("%s: 0 everywhere (term switched off?)", componentName(st.component)), kLabel);
+        v.readout.add(format("%s: 0 everywhere (term switched off?)", componentName(st.component)), Ink::Text);
     } else if (st.component == PlotComponent::Diffuse) {
         v.readout.add(format("diffuse %.3f in every direction", double(v.peak.value)), color);
     } else {
@@ -421,14 +426,14 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p) 
                              double(v.peak.phiDeg), kDeg),
                       color);
         const float offR = glm::degrees(std::acos(glm::clamp(glm::dot(v.peak.V, v.vectors.R), -1.0f, 1.0f)));
-        v.readout.add(format("(%.1f%s from R)", double(offR), kDeg), kMirror);
+        v.readout.add(format("(%.1f%s from R)", double(offR), kDeg), Ink::Mirror);
     }
     if (b && v.largest > kNothingLit) {
-        v.readout.add("B: wireframe", kCompare, true);
+        v.readout.add("B: wireframe", Ink::Compare, true);
     }
     v.readout.lineBreak();
     scaleTokens(v.readout, v.outer, v.largest, false, b ? "max of A and B" : "max");
-    v.readout.add("drag to orbit", kLabel);
+    v.readout.add("drag to orbit", Ink::Text);
     v.readout.measure(p);
     return v;
 }

@@ -1,4 +1,5 @@
-// plots_energy.cpp — the Energy view: ρ(θi) of each term, drawn with ImDrawList.
+// plots_energy.cpp — the Energy view: ρ(θi) of each term, drawn as the albedo figure is
+// (core/plots/plot_drawing.h) and painted onto ImGui's draw list.
 //
 // One frame: the curves of A (and B) from the plot cache (computed when the material changes),
 // the readout as tokens measured and wrapped into a strip, the canvas below it taking the rest
@@ -6,6 +7,7 @@
 // albedo from 0 to a nice value at or above both 1 and the largest total.
 #include "ui/plots_energy.h"
 #include "ui/plot_kit.h"
+#include "ui/widgets.h"
 
 #include "core/plots/energy.h"
 #include "core/lighting/lighting.h"
@@ -22,9 +24,9 @@ namespace {
 using namespace plotkit;
 
 // A horizontal dashed line from x0 to x1 at y.
-void dashedLine(ImDrawList* dl, float x0, float x1, float y, ImU32 color, float thickness, float dash) {
+void dashedLine(PlotCanvas& canvas, float x0, float x1, float y, Ink ink, float width, float dash) {
     for (float x = x0; x < x1; x += 2.0f * dash) {
-        dl->AddLine(ImVec2(x, y), ImVec2(std::min(x + dash, x1), y), color, thickness);
+        canvas.line({{x, y}, {std::min(x + dash, x1), y}}, width, ink);
     }
 }
 
@@ -35,29 +37,29 @@ Readout readout(const std::optional<Albedo>& a, const std::optional<Albedo>* b, 
                 const Pens& p) {
     Readout r;
     if (!brief) {
-        r.add("diffuse", kDiffuse, true);
-        r.add("specular", kSpecular, true);
-        r.add("total", kTotal, true);
+        r.add("diffuse", Ink::Diffuse, true);
+        r.add("specular", Ink::Specular, true);
+        r.add("total", Ink::Total, true);
         if (b) {
-            r.add("total B", kCompare, true);
+            r.add("total B", Ink::Compare, true);
         }
         r.lineBreak();
     }
-    r.add(format("at %s:", degrees(std::fabs(incident)).c_str()), kLight);
+    r.add(format("at %s:", degrees(std::fabs(incident)).c_str()), Ink::Light);
     if (a) {
-        r.add(format("%.3f", double(albedoOf(*a, PlotComponent::Diffuse))), kDiffuse);
-        r.add(format("+ %.3f", double(albedoOf(*a, PlotComponent::Specular))), kSpecular);
-        r.add(format("= %.3f", double(albedoOf(*a, PlotComponent::Total))), kTotal);
+        r.add(format("%.3f", double(albedoOf(*a, PlotComponent::Diffuse))), Ink::Diffuse);
+        r.add(format("+ %.3f", double(albedoOf(*a, PlotComponent::Specular))), Ink::Specular);
+        r.add(format("= %.3f", double(albedoOf(*a, PlotComponent::Total))), Ink::Total);
         if (b && *b) {
-            r.add(format("B %.3f", double(albedoOf(**b, PlotComponent::Total))), kCompare);
+            r.add(format("B %.3f", double(albedoOf(**b, PlotComponent::Total))), Ink::Compare);
         }
     } else {
-        r.add("no light arrives", kLabel);
+        r.add("no light arrives", Ink::Text);
     }
     if (!brief) {
         r.lineBreak();
-        r.add("albedo = reflected / arriving light;", kLabel);
-        r.add("1 = all of it (Lambert, Kd = 1)", kLabel);
+        r.add("albedo = reflected / arriving light;", Ink::Text);
+        r.add("1 = all of it (Lambert, Kd = 1)", Ink::Text);
     }
     r.measure(p);
     return r;
@@ -65,9 +67,8 @@ Readout readout(const std::optional<Albedo>& a, const std::optional<Albedo>* b, 
 
 // The curves against θi and, on each, a dot at the preset's incident angle (atA, atB: the albedos
 // there, computed at that angle, not read off the curve's whole degrees).
-void energyCanvas(const Canvas& c, const Pens& p, const std::vector<AlbedoSample>& a, const std::vector<AlbedoSample>* b,
+void energyCanvas(const Canvas& c, const std::vector<AlbedoSample>& a, const std::vector<AlbedoSample>* b,
                   const std::optional<Albedo>& atA, const std::optional<Albedo>* atB, Preset& preset) {
-    ImDrawList* dl = c.dl;
     float largest = 1.0f;
     for (const std::vector<AlbedoSample>* set : {&a, b}) {
         for (std::size_t i = 0; set && i < set->size(); ++i) {
@@ -78,55 +79,51 @@ void energyCanvas(const Canvas& c, const Pens& p, const std::vector<AlbedoSample
     // never reach past the frame.
     const float step = niceStep(largest / 4.0f);
     const float top = std::ceil(largest / step - 1e-4f) * step;
-    Box box{ImVec2(c.corner.x + textSize("0.25").x + 2.0f * p.pad, c.corner.y + c.height - p.line - p.pad),
-            ImVec2(c.corner.x + c.width - textSize("90" + std::string(kDeg)).x * 0.5f - p.pad, c.corner.y + p.line * 0.6f)};
-    if (box.hi.x - box.lo.x < p.font || box.lo.y - box.hi.y < p.font) {
+    ScreenPlot plot;
+    const PlotStyle& style = plot.style;
+    const float text = style.text(), pad = style.pad();
+    const Box box{{c.corner.x + style.width("0.25", text) + 2.0f * pad, c.corner.y + c.height - text - 2.0f * pad},
+                  {c.corner.x + c.width - style.width(degrees(90.0f), text) * 0.5f - pad, c.corner.y + text * 0.6f}};
+    if (box.hi.x - box.lo.x < text || box.lo.y - box.hi.y < text) {
         return;
     }
     auto at = [&](float deg, float value) { return box.at(deg / 90.0f, value / top); };
-    std::vector<RadialRing> ticks;
-    int count = std::clamp(static_cast<int>((box.lo.y - box.hi.y) / (2.0f * p.line)), 1, 6);
+    std::vector<AxisTick> xs, ys{{0.0f, 0.0f}};
+    const int count = std::clamp(static_cast<int>((box.lo.y - box.hi.y) / (2.5f * text)), 1, 6);
     for (float v : linearTicks(top, count)) {
-        ticks.push_back({v, v / top});
+        ys.push_back({v / top, v});
     }
-    yAxis(dl, p, box, ticks, true);
     for (int deg = 0; deg <= 90; deg += 15) {
-        float fd = static_cast<float>(deg);
-        if (deg % 30 == 0 || box.hi.x - box.lo.x > 12.0f * p.font) {
-            dl->AddLine(at(fd, 0), at(fd, top), kGrid, p.thin);
-            centredText(dl, ImVec2(at(fd, 0).x, box.lo.y + p.pad * 0.5f + p.line * 0.5f), kLabel, degrees(fd));
+        const float fd = static_cast<float>(deg);
+        if (deg % 30 == 0 || box.hi.x - box.lo.x > 12.0f * text) {
+            xs.push_back({fd / 90.0f, fd, degrees(fd)});
         }
     }
-    dl->AddLine(at(0, 0), at(90, 0), kAxis, p.stroke);
-    dl->AddLine(at(0, 0), at(0, top), kAxis, p.stroke);
-    dashedLine(dl, at(0, 1).x, at(90, 1).x, at(0, 1).y, kAxis, p.thin * 1.5f, 0.5f * p.font);
+    axes(plot.canvas, box, xs, ys, std::string(kTheta) + "i", "", false);
+    dashedLine(plot.canvas, at(0, 1).x, at(90, 1).x, at(0, 1).y, Ink::Axis, style.thin() * 1.5f, 0.5f * text);
 
     // The marker under the curves, the curves over it.
     const float incident = std::fabs(preset.plotIncidentDeg);
-    dl->AddLine(at(incident, 0), at(incident, top), kLight, p.stroke);
+    plot.canvas.line({at(incident, 0), at(incident, top)}, style.stroke(), Ink::Light);
     auto curve = [&](const std::vector<AlbedoSample>& set, const std::optional<Albedo>& there, PlotComponent component,
-                     ImU32 color, float thickness) {
-        std::vector<ImVec2> points;
+                     Ink ink, float width) {
+        std::vector<glm::vec2> points;
         points.reserve(set.size());
         for (const AlbedoSample& s : set) {
             points.push_back(at(s.incidentDeg, albedoOf(s.albedo, component)));
         }
-        polyline(dl, points, color, thickness);
+        plot.canvas.line(std::move(points), width, ink);
         if (there) {
-            dl->AddCircleFilled(at(incident, albedoOf(*there, component)), 3.5f * p.s, color);
+            plot.canvas.disc(at(incident, albedoOf(*there, component)), 3.5f * style.scale, ink);
         }
     };
-    curve(a, atA, PlotComponent::Diffuse, kDiffuse, p.stroke);
-    curve(a, atA, PlotComponent::Specular, kSpecular, p.stroke);
-    curve(a, atA, PlotComponent::Total, kTotal, p.bold);
+    curve(a, atA, PlotComponent::Diffuse, Ink::Diffuse, style.stroke());
+    curve(a, atA, PlotComponent::Specular, Ink::Specular, style.stroke());
+    curve(a, atA, PlotComponent::Total, Ink::Total, style.bold());
     if (b && atB) {
-        curve(*b, *atB, PlotComponent::Total, kCompare, p.stroke);
+        curve(*b, *atB, PlotComponent::Total, Ink::Compare, style.stroke());
     }
-    // The axes' names at their ends.
-    ImVec2 end = at(90, 0);
-    const char* xName = "\xce\xb8i"; // θi
-    ImVec2 size = ImGui::CalcTextSize(xName);
-    dl->AddText(ImVec2(end.x - size.x, end.y - size.y - p.pad * 0.5f), kLabel, xName);
+    plot.paint(c.dl);
 
     // Clicking or dragging sets the incident angle (keeping its side), as dragging L does.
     if (ImGui::IsItemActive()) {
@@ -167,7 +164,7 @@ void energyPanel(Preset& a, const Preset* b, PlotSettings& s) {
     ImGui::SetCursorScreenPos(ImVec2(origin.x, origin.y + stripH + p.gap));
     const Canvas canvas = beginCanvas("energy", "plot.energy", room.x, canvasH);
     if (canvas.shown()) {
-        energyCanvas(canvas, p, *curveA, curveB.get(), *atA, atB.get(), a);
+        energyCanvas(canvas, *curveA, curveB.get(), *atA, atB.get(), a);
     }
 }
 

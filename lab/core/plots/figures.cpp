@@ -207,8 +207,8 @@ FigureResult overlayFigure(const Preset& a, const FigureRequest& r) {
 Box cartesian(Page& page, float top, const std::vector<AxisTick>& xTicks, const std::vector<AxisTick>& yTicks,
               const std::string& xName, const std::string& yName) {
     float yLabels = 0.0f;
-    for (auto [v, t] : yTicks) {
-        yLabels = std::max(yLabels, textWidth(tickText(t), kTextSize));
+    for (const AxisTick& t : yTicks) {
+        yLabels = std::max(yLabels, textWidth(tickText(t.value), kTextSize));
     }
     Box b{{kMargin + yLabels + 2.0f * kPad, page.f.height - kMargin - 2.0f * (kTextSize + kPad)},
           {page.f.width - kMargin - 2.0f * kTextSize, top + 2.0f * kTextSize + 2.0f * kPad}};

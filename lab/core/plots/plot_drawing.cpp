@@ -237,19 +237,20 @@ void polarGrid(PlotCanvas& canvas, const Polar& p, float outer, RadialScale scal
 void axes(PlotCanvas& canvas, const Box& b, const std::vector<AxisTick>& xTicks, const std::vector<AxisTick>& yTicks,
           const std::string& xName, const std::string& yName, bool outside) {
     const PlotStyle& s = canvas.style();
-    for (auto [v, t] : yTicks) {
-        const glm::vec2 y = b.at(0, v);
-        if (v > 0.0f) {
-            canvas.line({y, b.at(1, v)}, s.thin(), Ink::Grid);
+    auto label = [](const AxisTick& t) { return t.text.empty() ? tickText(t.value) : t.text; };
+    for (const AxisTick& t : yTicks) {
+        const glm::vec2 y = b.at(0, t.at);
+        if (t.at > 0.0f) {
+            canvas.line({y, b.at(1, t.at)}, s.thin(), Ink::Grid);
         }
-        canvas.text({b.lo.x - s.pad(), y.y}, tickText(t), s.text(), Ink::Text, TextAnchor::End);
+        canvas.text({b.lo.x - s.pad(), y.y}, label(t), s.text(), Ink::Text, TextAnchor::End);
     }
-    for (auto [u, t] : xTicks) {
-        const glm::vec2 x = b.at(u, 0);
-        if (u > 0.0f) {
-            canvas.line({x, b.at(u, 1)}, s.thin(), Ink::Grid);
+    for (const AxisTick& t : xTicks) {
+        const glm::vec2 x = b.at(t.at, 0);
+        if (t.at > 0.0f) {
+            canvas.line({x, b.at(t.at, 1)}, s.thin(), Ink::Grid);
         }
-        canvas.text({x.x, b.lo.y + s.pad() + s.text() * 0.5f}, tickText(t), s.text(), Ink::Text, TextAnchor::Middle);
+        canvas.text({x.x, b.lo.y + s.pad() + s.text() * 0.5f}, label(t), s.text(), Ink::Text, TextAnchor::Middle);
     }
     canvas.line({b.at(0, 0), b.at(1.0f, 0)}, s.stroke(), Ink::Axis);
     canvas.line({b.at(0, 0), b.at(0, 1.0f)}, s.stroke(), Ink::Axis);

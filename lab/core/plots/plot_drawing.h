@@ -156,9 +156,10 @@ struct Box {
     glm::vec2 at(float u, float v) const { return {lo.x + u * (hi.x - lo.x), lo.y + v * (hi.y - lo.y)}; }
 };
 
-// A tick: where on its axis (in [0, 1]) and the value written there.
+// A tick: where on its axis (in [0, 1]) and the value written there (tickText), or `text`.
 struct AxisTick {
     float at, value;
+    std::string text = {};
 };
 
 // Grid lines (none at 0) and values along both axes, the axes themselves, and their names:

@@ -1,0 +1,165 @@
+// plot_kit.cpp — the screen's style, the painter of Figures onto ImGui's draw list, readouts and
+// canvases.
+#include "ui/plot_kit.h"
+
+#include "ui/widgets.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+namespace lab::ui::plotkit {
+
+//----------------------------------------------------------------------------------------
+// Style, colours, painting
+//----------------------------------------------------------------------------------------
+
+PlotStyle screenStyle() {
+    // The figures' text is 14 pixels; the UI's is ImGui's font size.
+    return PlotStyle{&screenPalette(), ImGui::GetFontSize() / 14.0f, [](std::string_view text, float size) {
+                         return ImGui::GetFont()->CalcTextSizeA(size, FLT_MAX, 0.0f, text.data(), text.data() + text.size()).x;
+                     }};
+}
+
+ImU32 ink(Ink i) {
+    const FigureColor c = colorOf(screenPalette(), i);
+    return IM_COL32(c.r, c.g, c.b, 255);
+}
+
+namespace {
+
+ImU32 imColor(FigureColor c) { return IM_COL32(c.r, c.g, c.b, 255); }
+
+std::vector<ImVec2> imPoints(const std::vector<glm::vec2>& points) {
+    std::vector<ImVec2> out;
+    out.reserve(points.size());
+    for (glm::vec2 p : points) {
+        out.push_back(toImVec2(p));
+    }
+    return out;
+}
+
+void paintText(ImDrawList* dl, const FigureText& t) {
+    ImFont* font = ImGui::GetFont();
+    const char* begin = t.text.c_str();
+    const char* end = begin + t.text.size();
+    const float width = font->CalcTextSizeA(t.size, FLT_MAX, 0.0f, begin, end).x;
+    float x = t.at.x - (t.anchor == TextAnchor::Middle ? width * 0.5f : t.anchor == TextAnchor::End ? width : 0.0f);
+    // `at` is on the baseline; ImGui places the line's top.
+    const float y = t.at.y - font->Ascent * t.size / font->FontSize;
+    const ImU32 color = imColor(t.color);
+    x = std::round(x);
+    dl->AddText(font, t.size, ImVec2(x, std::round(y)), color, begin, end);
+    if (t.bold) { // twice, a pixel apart, as the figures' PNG draws bold text
+        dl->AddText(font, t.size, ImVec2(x + std::max(1.0f, std::round(t.size / 14.0f)), std::round(y)), color, begin, end);
+    }
+}
+
+} // namespace
+
+void paint(ImDrawList* dl, const Figure& figure) {
+    for (const FigureShape& shape : figure.shapes) {
+        if (const auto* l = std::get_if<FigureLine>(&shape)) {
+            if (l->points.size() >= 2) {
+                std::vector<ImVec2> pts = imPoints(l->points);
+                dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), imColor(l->color), 0, l->width);
+            }
+        } else if (const auto* g = std::get_if<FigurePolygon>(&shape)) {
+            std::vector<ImVec2> pts = imPoints(g->points);
+            dl->AddConvexPolyFilled(pts.data(), static_cast<int>(pts.size()), imColor(g->fill));
+        } else if (const auto* d = std::get_if<FigureDisc>(&shape)) {
+            dl->AddCircleFilled(toImVec2(d->centre), d->radius, imColor(d->fill));
+        } else if (const auto* t = std::get_if<FigureText>(&shape)) {
+            paintText(dl, *t);
+        }
+    }
+}
+
+Pens pens() {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    Pens p;
+    p.font = ImGui::GetFontSize();
+    p.s = p.font / 13.0f;
+    p.line = ImGui::GetTextLineHeight();
+    p.frame = ImGui::GetFrameHeight();
+    p.gap = style.ItemSpacing.y;
+    p.gapX = style.ItemSpacing.x;
+    p.inner = style.ItemInnerSpacing.x;
+    p.pad = 4.0f * p.s;
+    p.thin = std::max(1.0f, 1.0f * p.s);
+    p.stroke = 2.0f * p.s;
+    p.bold = 3.0f * p.s;
+    return p;
+}
+
+ImVec2 textSize(const std::string& t) { return ImGui::CalcTextSize(t.c_str(), t.c_str() + t.size()); }
+
+//----------------------------------------------------------------------------------------
+// Readouts
+//----------------------------------------------------------------------------------------
+
+void Readout::measure(const Pens& p) {
+    widths.clear();
+    for (Token& t : tokens) {
+        t.width = t.text.empty() ? kLineBreak : textSize(t.text).x + (t.swatch ? 1.4f * p.font + p.pad : 0.0f);
+        widths.push_back(t.width);
+    }
+}
+
+float Readout::height(const Pens& p, float width) const {
+    return static_cast<float>(flowLines(widths, p.font * 0.5f, width)) * p.line;
+}
+
+void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const {
+    std::vector<FlowPlace> places = flowTokens(widths, p.font * 0.5f, width);
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const Token& t = tokens[i];
+        if (t.width == kLineBreak) {
+            continue;
+        }
+        ImVec2 c(at.x + places[i].x, at.y + static_cast<float>(places[i].line) * p.line);
+        if (t.swatch) {
+            float y = c.y + p.line * 0.5f;
+            dl->AddLine(ImVec2(c.x, y), ImVec2(c.x + 1.4f * p.font, y), ink(t.ink), p.bold);
+            c.x += 1.4f * p.font + p.pad;
+        }
+        dl->AddText(c, ink(t.ink), t.text.c_str(), t.text.c_str() + t.text.size());
+    }
+}
+
+void scaleTokens(Readout& r, float outer, float largest, bool locked, const char* what) {
+    if (!locked && !(largest > kNothingLit)) {
+        r.add("all 0 (terms switched off?)", Ink::Text);
+        return;
+    }
+    r.add(format("outer ring %s", tickText(outer).c_str()), Ink::Text);
+    if (locked) {
+        r.add("(locked)", Ink::Text);
+        if (largest > outer * 1.001f) {
+            r.add(format("peak %s beyond it", tickText(largest).c_str()), Ink::Warning);
+        }
+    } else {
+        r.add(format("= %s", what), Ink::Text);
+    }
+}
+
+//----------------------------------------------------------------------------------------
+// Canvases
+//----------------------------------------------------------------------------------------
+
+Canvas beginCanvas(const char* id, const char* name, float width, float height) {
+    Canvas c;
+    if (width < 1.0f || height < 1.0f) {
+        return c;
+    }
+    c.width = width;
+    c.height = height;
+    c.corner = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton(id, ImVec2(width, height));
+    mark(name);
+    c.dl = ImGui::GetWindowDrawList();
+    c.dl->AddRectFilled(c.corner, ImVec2(c.corner.x + width, c.corner.y + height), ink(Ink::Background));
+    return c;
+}
+
+} // namespace lab::ui::plotkit
