@@ -162,4 +162,60 @@ Canvas beginCanvas(const char* id, const char* name, float width, float height) 
     return c;
 }
 
+//----------------------------------------------------------------------------------------
+// A plot's block: readout strip, canvas, controls
+//----------------------------------------------------------------------------------------
+
+Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout& r, const char* readoutMark,
+                 bool cramped, bool controls, float minCanvas, const std::function<float(float)>& maxCanvas) {
+    const ImVec2 top(origin.x + box.x, origin.y + box.y);
+    const float controlsH = controls ? p.frame + p.gap : 0.0f;
+    Block b;
+    float stripW = box.w, stripH = r.height(p, box.w);
+    ImVec2 strip = top;
+    if (cramped) {
+        // Too low for the controls too: the canvas takes the whole height (drag L and V in it).
+        // Else the controls take the bottom row, across the whole width: the text stays above it.
+        const bool controlsShown = controls && box.h - controlsH - p.gap >= 3.0f * p.line;
+        const float textRoom = controlsShown ? box.h - controlsH : box.h;
+        // The narrowest column (from 30% to 60% of the width) whose text fits the height.
+        for (float share = 0.3f; share <= 0.61f; share += 0.05f) {
+            stripW = box.w * share;
+            stripH = r.height(p, stripW);
+            if (stripH <= textRoom) {
+                break;
+            }
+        }
+        stripH = std::min(stripH, textRoom); // what still does not fit is clipped, never scrolled to
+        strip = ImVec2(top.x + box.w - stripW, top.y);
+        b.canvas = top;
+        b.canvasW = box.w - stripW - p.gapX;
+        float room = controlsShown ? box.h - controlsH - p.gap : box.h;
+        b.canvasH = std::clamp(room, 0.0f, maxCanvas(b.canvasW));
+    } else {
+        float canvasH = box.canvas;
+        if (canvasH < minCanvas) {
+            // One plot at a time in a column too low for its wrapped readout (a narrow column at a
+            // large UI scale): the readout gives way, clipped, so that the canvas keeps its minimum.
+            canvasH = std::min(minCanvas, std::max(box.h - controlsH - p.gap, 0.0f));
+            stripH = std::max(box.h - controlsH - p.gap - canvasH, 0.0f);
+        }
+        b.canvas = ImVec2(top.x, top.y + stripH + p.gap);
+        b.canvasW = box.w;
+        b.canvasH = canvasH;
+    }
+    // Below the canvas and the text, whichever ends lower (beside a short canvas the text may).
+    b.controls = ImVec2(top.x, std::max(b.canvas.y + b.canvasH, strip.y + stripH) + p.gap);
+    b.controlsFit = b.controls.y + p.frame <= top.y + box.h + 0.5f;
+    ImGui::SetCursorScreenPos(strip);
+    ImGui::Dummy(ImVec2(stripW, std::max(stripH, 1.0f)));
+    mark(readoutMark);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->PushClipRect(strip, ImVec2(strip.x + stripW, strip.y + std::max(stripH, 1.0f)), true);
+    r.draw(dl, p, strip, stripW);
+    dl->PopClipRect();
+    ImGui::SetCursorScreenPos(b.canvas);
+    return b;
+}
+
 } // namespace lab::ui::plotkit

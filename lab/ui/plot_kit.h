@@ -12,9 +12,11 @@
 #include "ui/plots.h"
 
 #include "core/plots/plot_drawing.h"
+#include "core/plots/plot_layout.h"
 
 #include <imgui.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -106,6 +108,20 @@ struct Canvas {
 // A plot's area at the cursor: an invisible button (for the mouse), filled with the plot
 // background, registered in the widget map as `name`. Not drawn when it has no room.
 Canvas beginCanvas(const char* id, const char* name, float width, float height);
+
+// Where a block's canvas and controls go. Normally the readout is a strip above the canvas and
+// the controls a row below it. When even one plot at a time leaves the canvas too short (a low
+// band at a large UI scale), the readout moves to a column at the right of the canvas instead.
+struct Block {
+    ImVec2 canvas;
+    float canvasW = 0, canvasH = 0;
+    ImVec2 controls;
+    bool controlsFit = true; // false where the row would reach past the block: it is left out
+};
+// The block's readout drawn into its strip (registered as `readoutMark`), the cursor at the canvas.
+// `box` in the area at `origin`; `cramped`: a low band; `controls`: a row of controls below.
+Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout& r, const char* readoutMark,
+                 bool cramped, bool controls, float minCanvas, const std::function<float(float)>& maxCanvas);
 
 // Where a curve's unit points go in a polar plot (plot_cache.h).
 inline CurvePlacement placementOf(const Polar& p) { return {true, p.origin, {p.radius, -p.radius}}; }

@@ -438,6 +438,27 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p) 
     return v;
 }
 
+// What the canvases show and where: the lobe's rectangle inside `lobeBox` (a margin for the
+// arrows' names and the ring values), the map's square inside `mapBox` beside its legend.
+Lobe3dKey keyFor(const View& v, const PlotSettings& s, const ImVec4& lobeBox, const ImVec4& mapBox, float legendW,
+                 const Pens& p) {
+    const float margin = 0.6f * p.line + p.pad;
+    Lobe3dKey key;
+    key.a = v.inA;
+    key.hasB = v.gridB != nullptr;
+    key.b = v.inB;
+    key.component = s.lobe3d.component;
+    key.scale = s.scale;
+    key.outer = v.outer;
+    key.yawDeg = s.lobe3d.yawDeg;
+    key.pitchDeg = s.lobe3d.pitchDeg;
+    key.lobeRect = ImVec4(lobeBox.x + margin, lobeBox.y + margin, lobeBox.z - 2.0f * margin, lobeBox.w - 2.0f * margin);
+    const float mapSide = std::min(mapBox.z - legendW, mapBox.w) - 2.0f * p.pad;
+    key.mapRect = ImVec4(mapBox.x + p.pad + std::max((mapBox.z - legendW - 2.0f * p.pad - mapSide) * 0.5f, 0.0f),
+                         mapBox.y + (mapBox.w - mapSide) * 0.5f, mapSide, mapSide);
+    return key;
+}
+
 } // namespace
 
 void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& s) {
@@ -480,21 +501,8 @@ void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& s) {
         lobeBox = ImVec4(origin.x, top, room.x, lobeH);
         mapBox = ImVec4(origin.x, top + lobeH + p.gap, room.x, h - lobeH - p.gap);
     }
-    // Inside each canvas a margin for the arrows' names and the ring values.
-    const float margin = 0.6f * p.line + p.pad;
-    Lobe3dKey key;
-    key.a = v.inA;
-    key.hasB = v.gridB != nullptr;
-    key.b = v.inB;
-    key.component = s.lobe3d.component;
-    key.scale = s.scale;
-    key.outer = v.outer;
-    key.yawDeg = s.lobe3d.yawDeg;
-    key.pitchDeg = s.lobe3d.pitchDeg;
-    key.lobeRect = ImVec4(lobeBox.x + margin, lobeBox.y + margin, lobeBox.z - 2.0f * margin, lobeBox.w - 2.0f * margin);
-    const float mapSide = std::min(mapBox.z - legendW, mapBox.w) - 2.0f * p.pad;
-    key.mapRect = ImVec4(mapBox.x + p.pad + std::max((mapBox.z - legendW - 2.0f * p.pad - mapSide) * 0.5f, 0.0f),
-                         mapBox.y + (mapBox.w - mapSide) * 0.5f, mapSide, mapSide);
+    const Lobe3dKey key = keyFor(v, s, lobeBox, mapBox, legendW, p);
+    const float mapSide = key.mapRect.z;
     const bool lobeShown = key.lobeRect.z >= 1.5f * p.font && key.lobeRect.w >= 1.5f * p.font;
     const bool mapShown = mapSide >= 2.5f * p.font;
     const std::shared_ptr<const Lobe3dMesh> mesh = s.lobe3d.meshes.get(key, [&] {

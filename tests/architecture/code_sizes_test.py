@@ -60,8 +60,6 @@ def functions(text):
     stack = []  # for each open brace: True when it opens a function body (or is inside one)
     head_start = 0
     for i, c in enumerate(code):
-        if c in ';{}' and not (stack and stack[-1]):
-            pass
         if c == '{':
             inside = bool(stack and stack[-1])
             head = code[head_start:i]
@@ -76,8 +74,6 @@ def functions(text):
                     first = code.count('\n', 0, head_start + (len(head) - len(head.lstrip()))) + 1
                     stack.append(('fn', name, first))
                     continue
-                if init is None and re.search(r'\)\s*:\s*[^;{}]*$', h):
-                    pass
             stack.append(True if inside else False)
             if not inside:
                 head_start = i + 1
