@@ -2,8 +2,8 @@
 // the file's bytes, before any JSON parser copies their text.
 //
 // A .gltf can carry its whole mesh as base64 text inside the JSON. Parsed as it is, that text
-// was held four times over (the file, our check's JSON tree, tinygltf's tree, tinygltf's
-// decoding: about 6.6 times the file at the peak, issue 14). Here one pass over the text, with
+// would be held four times over (the file, our check's JSON tree, tinygltf's tree, tinygltf's
+// decoding: about 6.6 times the file at the peak). Here one pass over the text, with
 // no recursion, finds `buffers[i].uri` strings of the form `data:<type>;base64,<data>`, decodes
 // each into bytes of its own, and hands back the JSON with a 1-byte placeholder in its place;
 // the loader reads the decoded bytes in place (as it reads a GLB's BIN chunk) and tinygltf only

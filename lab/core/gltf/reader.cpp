@@ -344,7 +344,7 @@ private:
         // Normals that are missing, zero or not finite (some exporters write NaN for a degenerate
         // face's vertices) are computed, after the node transform, so the area weights are those of
         // the model as drawn. (A view of its own vertices, not a copy: a large model's peak memory
-        // counts, issue 14.)
+        // counts.)
         const std::span<const glm::vec3> positions = std::span<const glm::vec3>(out.positions).subspan(base);
         if (attributes.normalAccessor < 0) {
             std::vector<glm::vec3> computed = computeVertexNormals(positions, triangles);
@@ -372,7 +372,7 @@ private:
             out.indices = std::move(triangles);
         } else {
             // No reserve(size + n) here: an exact reserve per primitive defeats the vector's doubling
-            // and copied every index again for each of 100,000 nodes (issue 14's quadratic time).
+            // and copies every index again for each of 100,000 nodes (quadratic time).
             for (std::uint32_t i : triangles) {
                 out.indices.push_back(base + i);
             }

@@ -33,7 +33,7 @@ struct GltfLimits {
     int maxNodeDepth = 64;
     int maxJsonDepth = 128; // JSON nesting, bounded before tinygltf's recursive parse sees the text
     // How many of each object a file may declare, counted before tinygltf builds them: far above
-    // any real model, low enough that every loader step stays fast (issue 14: 200,000 nodes took 37 s).
+    // any real model, low enough that every loader step stays fast.
     std::size_t maxNodes = 200'000;
     std::size_t maxMeshes = 100'000;
     std::size_t maxPrimitives = 200'000; // all meshes' together

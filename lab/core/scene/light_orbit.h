@@ -1,4 +1,4 @@
-// light_orbit.h — where a moving light stands after some seconds of its orbit (issue 16).
+// light_orbit.h — where a moving light stands after some seconds of its orbit.
 //
 // A light whose `orbit` is on circles the axis through a centre (the GUI passes the centre of the
 // model's drawn bounds) at orbit.degreesPerSecond, starting from the preset's own position: the

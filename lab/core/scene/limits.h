@@ -7,8 +7,8 @@
 // length, c0, c1, c2 not all 0) are the validator's.
 //
 // Every range is chosen so that every formula in shaders/lighting.glsl stays finite in float for
-// every accepted preset (issue 14: a roughness whose square underflowed gave NaN, a light a
-// light-year away gave an unlit sphere): coordinates within 10^4 keep distances squared far
+// every accepted preset (a roughness whose square underflows gives NaN, a light a light-year away
+// an unlit sphere): coordinates within 10^4 keep distances squared far
 // from overflow, a roughness of at least 10^-3 keeps m^2 and (m^2 - 1) + 1 apart from 0, an ior
 // of at least 10^-2 keeps ior^2 a normal float, exponents of at least 10^-3 survive a GPU's
 // flush of denormals to zero. tests/finite_test.cpp evaluates the model at the corners of these
