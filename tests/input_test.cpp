@@ -173,8 +173,8 @@ TEST(FramePacer, WakesForTheAppsTimer) {
     EXPECT_TRUE(p.due(4.0, false));
 }
 
-TEST(ViewResolution, LowersWhileDraggingSlowFramesAndIsFullAfterwards) {
-    ViewResolution r;
+TEST(ViewportResolution, LowersWhileDraggingSlowFramesAndIsFullAfterwards) {
+    ViewportResolution r;
     EXPECT_EQ(r.update(true, 0.010f, 0.05f), 1.0f) << "fast frames keep full resolution";
     float s = 1.0f;
     for (int i = 0; i < 20; ++i) {
@@ -182,14 +182,14 @@ TEST(ViewResolution, LowersWhileDraggingSlowFramesAndIsFullAfterwards) {
         s = r.update(true, 0.02f + 0.3f * s * s, 0.05f);
     }
     EXPECT_LT(s, 0.5f);
-    EXPECT_GE(s, ViewResolution::kLowest);
+    EXPECT_GE(s, ViewportResolution::kLowest);
     EXPECT_LE(0.02f + 0.3f * s * s, 0.05f * 1.05f) << "converges to a frame within the budget";
     EXPECT_EQ(r.update(false, 1.0f, 0.05f), 1.0f) << "full resolution the moment the drag ends";
     EXPECT_EQ(r.update(true, 10.0f, 0.0f), 1.0f) << "a budget of 0 turns it off";
 }
 
-TEST(ViewResolution, NeverMoreThanHalvesThePixelsAtOnce) {
-    ViewResolution r;
+TEST(ViewportResolution, NeverMoreThanHalvesThePixelsAtOnce) {
+    ViewportResolution r;
     float s = r.update(true, 100.0f, 0.05f);
     EXPECT_GE(s * s, 0.5f - 1e-6f);
 }

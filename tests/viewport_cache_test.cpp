@@ -48,11 +48,11 @@ protected:
 };
 
 TEST_F(ViewCacheTest, HoveringAndUnchangedFramesDoNotDrawTheView) {
-    EXPECT_FALSE(frame().viewDrawn) << "nothing changed: the cached view is shown";
-    EXPECT_FALSE(frame({InputEvent::move(20, 20)}).viewDrawn) << "hovering the panel changes nothing in the view";
-    EXPECT_FALSE(frame({InputEvent::move(view_.x + 30, view_.y + 40)}).viewDrawn);
-    EXPECT_TRUE(frame({InputEvent::key('1', true)}).viewDrawn) << "flat shading changes the view";
-    EXPECT_FALSE(frame({InputEvent::key('1', false)}).viewDrawn);
+    EXPECT_FALSE(frame().viewportDrawn) << "nothing changed: the cached view is shown";
+    EXPECT_FALSE(frame({InputEvent::move(20, 20)}).viewportDrawn) << "hovering the panel changes nothing in the view";
+    EXPECT_FALSE(frame({InputEvent::move(view_.x + 30, view_.y + 40)}).viewportDrawn);
+    EXPECT_TRUE(frame({InputEvent::key('1', true)}).viewportDrawn) << "flat shading changes the view";
+    EXPECT_FALSE(frame({InputEvent::key('1', false)}).viewportDrawn);
 }
 
 TEST_F(ViewCacheTest, ADragOnASlowMachineIsDrawnSmallerAndTheFrameAfterItIsFullAndExact) {
@@ -63,20 +63,20 @@ TEST_F(ViewCacheTest, ADragOnASlowMachineIsDrawnSmallerAndTheFrameAfterItIsFullA
     for (int i = 1; i <= 8; ++i) {
         // Frames of 300 ms: far over the 50 ms budget.
         FrameOutput out = frame({InputEvent::move(cx + 10.0f * i, cy)}, 0.3f);
-        EXPECT_TRUE(out.viewDrawn) << "the orbit moves the camera every frame";
-        lowest = std::min(lowest, out.viewScale);
+        EXPECT_TRUE(out.viewportDrawn) << "the orbit moves the camera every frame";
+        lowest = std::min(lowest, out.viewportScale);
     }
     EXPECT_LT(lowest, 0.6f) << "slow frames while dragging lower the view's resolution";
     FrameOutput released = frame({InputEvent::button(0, false, cx + 80, cy)}, 0.3f);
-    EXPECT_EQ(released.viewScale, 1.0f) << "the frame that ends the drag is full resolution";
-    EXPECT_TRUE(released.viewDrawn);
-    EXPECT_FALSE(frame({}, 0.3f).viewDrawn);
+    EXPECT_EQ(released.viewportScale, 1.0f) << "the frame that ends the drag is full resolution";
+    EXPECT_TRUE(released.viewportDrawn);
+    EXPECT_FALSE(frame({}, 0.3f).viewportDrawn);
     Image afterDrag = lab_.read();
 
     // The same scene drawn again without any interaction: M twice (the normal matrix, and back).
-    EXPECT_TRUE(frame({InputEvent::key('M', true)}, 0.3f).viewDrawn);
+    EXPECT_TRUE(frame({InputEvent::key('M', true)}, 0.3f).viewportDrawn);
     frame({InputEvent::key('M', false)}, 0.3f);
-    EXPECT_TRUE(frame({InputEvent::key('M', true)}, 0.3f).viewDrawn);
+    EXPECT_TRUE(frame({InputEvent::key('M', true)}, 0.3f).viewportDrawn);
     frame({InputEvent::key('M', false)}, 0.3f);
     Image redrawn = lab_.read();
     ASSERT_EQ(afterDrag.width, redrawn.width);
@@ -88,7 +88,7 @@ TEST_F(ViewCacheTest, FastFramesKeepFullResolutionWhileDragging) {
     frame({InputEvent::move(cx, cy)});
     frame({InputEvent::button(0, true, cx, cy)});
     for (int i = 1; i <= 4; ++i) {
-        EXPECT_EQ(frame({InputEvent::move(cx + 10.0f * i, cy)}, 0.01f).viewScale, 1.0f);
+        EXPECT_EQ(frame({InputEvent::move(cx + 10.0f * i, cy)}, 0.01f).viewportScale, 1.0f);
     }
     frame({InputEvent::button(0, false, cx + 40, cy)});
 }

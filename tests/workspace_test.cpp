@@ -267,7 +267,7 @@ TEST(Workspace, ADroppedModelIsFramedInOneUndoStepWithTheModel) {
     f.ws.a().camera.eye = {1.0f, 2.0f, 30.0f}; // looking from somewhere else, far away
     f.ws.endFrame(false);
     Preset before = f.ws.a();
-    f.ws.setViewAspect(2.0f);
+    f.ws.setViewportAspect(2.0f);
     f.ws.drop({(f.dir.path() / "trefoil.glb").string()});
     f.ws.endFrame(false);
     EXPECT_TRUE(f.ws.takeProblems().empty());
@@ -288,7 +288,7 @@ TEST(Workspace, FFramesTheModelAndIsUndoable) {
     Fixture f;
     f.ws.a().camera.eye = {0.0f, 0.0f, 50.0f};
     f.ws.endFrame(false);
-    f.ws.setViewAspect(0.5f);
+    f.ws.setViewportAspect(0.5f);
     f.ws.run({Command::FrameModel});
     f.ws.endFrame(false);
     // The unit sphere (radius 1) in a view half as wide as high: the width decides.

@@ -1,4 +1,4 @@
-// app.cpp — one frame: layout, UI, requests carried out, one undo step, the 3D view.
+// app.cpp — one frame: layout, UI, requests carried out, one undo step, the model's viewport.
 #include "app/app.h"
 
 #include "app/figure_export.h"
@@ -61,7 +61,7 @@ struct App::Impl {
     ui::ShaderEditorState shaderEditor;
     ui::SweepViewState sweep;
     SweepImage sweepImage; // the sweep view's grid, rendered only while it is open
-    ui::ViewControls viewControls;
+    ui::ViewportControls viewportControls;
     enum class Panels { All, PlotsOnly, None } panels = Panels::All; // Tab cycles
     bool showHelp = false, presenter = false, caption = false, lightShapes = true;
     float presenterScale = 1.75f;
@@ -72,12 +72,12 @@ struct App::Impl {
     std::optional<Problem> problem;
     std::string toast;
     float toastLeft = 0.0f;
-    float frameMs = 0.0f;   // what the last frame that drew the 3D view cost
-    bool viewDrawn = false; // by the last frame
+    float frameMs = 0.0f;   // what the last frame that drew the model's viewport cost
+    bool viewportDrawn = false; // by the last frame
     bool started = false;   // the workspace opened its first preset (in the first frame, App::frame)
-    std::array<CachedView, 2> views; // A's and B's renders, kept between frames
-    ViewResolution resolution;
-    int viewSamples = 0;     // what the GL offers of AppOptions::viewSamples
+    std::array<CachedViewport, 2> renders; // A's and B's, kept between frames
+    ViewportResolution resolution;
+    int viewportSamples = 0;     // what the GL offers of AppOptions::viewportSamples
     unsigned long long frames = 0;
     bool screenshotRequested = false, toggleFullscreen = false, pickFile = false, copyLink = false;
 
@@ -117,11 +117,11 @@ struct App::Impl {
     void carryOut(const FrameInput& in, const ui::ScreenEvents& events);
     void carryOut(const Request& request);
     void compileShaders(bool builtin);
-    void probeAt(const ui::ViewEvents& view);
+    void probeAt(const ui::ViewportEvents& viewport);
     void collectMessages(float deltaTime);
-    void drawViews(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy);
-    bool updateViews(const ui::Layout& layout, const FrameInput& in, float scale);
-    std::vector<std::pair<const CachedView*, Viewport>> shown; // this frame's renders and where they go
+    void drawViewports(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy);
+    bool updateViewports(const ui::Layout& layout, const FrameInput& in, float scale);
+    std::vector<std::pair<const CachedViewport*, Viewport>> shown; // this frame's renders and where they go
     void screenshot(const ui::Layout& layout, const FrameInput& in);
     void writeLayoutFile(const FrameInput& in, bool settled);
 };
@@ -145,7 +145,7 @@ ui::ScreenModel App::Impl::screenModel() {
     m.shaderEditor = &shaderEditor;
     m.sweep = &sweep;
     m.lightingSource = shaderSource("lighting.glsl");
-    m.viewControls = &viewControls;
+    m.viewportControls = &viewportControls;
     m.probe = probe ? &*probe : nullptr;
     m.probeOpen = &probeOpen;
     m.showHelp = &showHelp;
@@ -179,8 +179,8 @@ void App::Impl::carryOut(const FrameInput& in, const ui::ScreenEvents& events) {
     if (events.answer) {
         workspace.answer(*events.answer);
     }
-    if (events.view.probed) {
-        probeAt(events.view);
+    if (events.viewport.probed) {
+        probeAt(events.viewport);
     }
     collectMessages(in.deltaTime);
     workspace.endFrame(events.gesture);
@@ -255,13 +255,13 @@ void App::Impl::compileShaders(bool builtin) {
     }
 }
 
-void App::Impl::probeAt(const ui::ViewEvents& view) {
-    const ui::Rect& r = *view.probed;
+void App::Impl::probeAt(const ui::ViewportEvents& viewport) {
+    const ui::Rect& r = *viewport.probed;
     std::shared_ptr<const Mesh> mesh = workspace.mesh(Side::A);
     if (!mesh) {
         return;
     }
-    glm::vec2 ndc(2.0f * (view.probeX - r.x) / r.w - 1.0f, 1.0f - 2.0f * (view.probeY - r.y) / r.h);
+    glm::vec2 ndc(2.0f * (viewport.probeX - r.x) / r.w - 1.0f, 1.0f - 2.0f * (viewport.probeY - r.y) / r.h);
     Preset scene = orbits.shown(workspace.a(), 0); // the light where it is shown
     probe = probePixel(viewed(scene, workspace.view.mode), *mesh, ndc, r.w / r.h);
     probeOpen = probe.has_value(); // a click beside the model closes the probe
@@ -290,7 +290,7 @@ void App::Impl::collectMessages(float deltaTime) {
 }
 
 //----------------------------------------------------------------------------------------
-// The 3D view
+// The model's viewport
 //----------------------------------------------------------------------------------------
 
 // A, and B in compare mode: what each shows (`orbiting`: with its lights where the orbits have
@@ -322,7 +322,7 @@ Viewport toViewport(const ui::Rect& r, float toPixels, float windowHeight, float
 
 // Draws A (and B in compare mode) as the document has them at the layout's rectangles, shifted
 // by (dx, dy) window units, into a framebuffer whose height is `windowHeight` window units.
-void App::Impl::drawViews(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy) {
+void App::Impl::drawViewports(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy) {
     const ViewSettings& view = workspace.view;
     for (const ShownSide& side : sides(layout, false)) {
         if (side.mesh) {
@@ -335,7 +335,7 @@ void App::Impl::drawViews(const ui::Layout& layout, float toPixels, float window
 // The live frame's renders, with the lights where their orbits have them: each drawn into its
 // offscreen copy when what it shows changed (at `scale` of its size while dragging); where they
 // go in the window is kept for compose(). True when any was drawn.
-bool App::Impl::updateViews(const ui::Layout& layout, const FrameInput& in, float scale) {
+bool App::Impl::updateViewports(const ui::Layout& layout, const FrameInput& in, float scale) {
     float toPixels = static_cast<float>(in.framebufferWidth) / in.windowWidth;
     const ViewSettings& view = workspace.view;
     shown.clear();
@@ -343,20 +343,20 @@ bool App::Impl::updateViews(const ui::Layout& layout, const FrameInput& in, floa
     std::vector<ShownSide> live = sides(layout, true);
     for (ShownSide& side : live) {
         Viewport dest = toViewport(side.rect, toPixels, in.windowHeight);
-        ViewKey key{viewed(side.shown, view.mode), std::move(side.mesh),
+        ViewportKey key{viewed(side.shown, view.mode), std::move(side.mesh),
                     std::max(1, static_cast<int>(std::lround(dest.width * scale))),
                     std::max(1, static_cast<int>(std::lround(dest.height * scale))), view.mode == ViewMode::Normals,
                     renderer.generation()};
-        shown.emplace_back(&views[side.index], dest);
-        drawn = views[side.index].update(renderer, key, dest, viewSamples) || drawn;
+        shown.emplace_back(&renders[side.index], dest);
+        drawn = renders[side.index].update(renderer, key, dest, viewportSamples) || drawn;
     }
-    if (live.size() < views.size()) {
-        views[1].reset(); // its memory back; compare mode draws it again
+    if (live.size() < renders.size()) {
+        renders[1].reset(); // its memory back; compare mode draws it again
     }
     return drawn;
 }
 
-// The 3D view alone, at the window's pixel density, to a PNG (a download in the browser).
+// The model's viewport alone, at the window's pixel density, to a PNG (a download in the browser).
 void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
     const ui::Rect& v = layout.viewport;
     float toPixels = static_cast<float>(in.framebufferWidth) / in.windowWidth;
@@ -367,7 +367,7 @@ void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
         return;
     }
     target.bind();
-    drawViews(layout, toPixels, static_cast<float>(h) / toPixels, -v.x, -v.y);
+    drawViewports(layout, toPixels, static_cast<float>(h) / toPixels, -v.x, -v.y);
     Image image = target.readRgb();
     bindFramebuffer(in.targetFramebuffer);
     workspace.saveScreenshot(image);
@@ -402,7 +402,7 @@ bool App::init(Diagnostics& diagnostics) {
     m.shaderEditor.vertex = builtin.vertex;
     m.shaderEditor.fragment = builtin.fragment;
     m.shaderEditor.lighting = builtin.lighting;
-    m.viewSamples = supportedSamples(m.options.viewSamples);
+    m.viewportSamples = supportedSamples(m.options.viewportSamples);
     return true;
 }
 
@@ -414,7 +414,7 @@ FrameOutput App::frame(const FrameInput& in) {
         m.setPresenter(true); // --presenter: as if P had been pressed in this window
     }
     m.windowWidth = in.windowWidth;
-    if (m.viewDrawn) {
+    if (m.viewportDrawn) {
         // The cost of drawing the model (a frame that only redrew the UI would show the UI's,
         // and would change the overlay, and so the screen, on every frame).
         m.frameMs = in.lastFrameSeconds * 1000.0f;
@@ -425,7 +425,7 @@ FrameOutput App::frame(const FrameInput& in) {
     ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.panels == Impl::Panels::All,
                                            m.panels != Impl::Panels::None, m.panel.tab});
     const ui::Rect& viewportA = layout.viewportOf(0, ws.view.compare);
-    ws.setViewAspect(viewportA.h > 0.0f ? viewportA.w / viewportA.h : 1.0f); // what F and a dropped model are framed for
+    ws.setViewportAspect(viewportA.h > 0.0f ? viewportA.w / viewportA.h : 1.0f); // what F and a dropped model are framed for
     if (!m.started) {
         // The first preset opens in the first frame, once the view's shape is known: a glTF model
         // without a camera is framed for the view it is shown in (a 1024x768 projector's view is
@@ -460,7 +460,7 @@ FrameOutput App::frame(const FrameInput& in) {
         m.screenshot(layout, in);
     }
     float scale = m.resolution.update(events.dragging, in.lastFrameSeconds, m.options.frameBudgetSeconds);
-    m.viewDrawn = m.updateViews(layout, in, scale);
+    m.viewportDrawn = m.updateViewports(layout, in, scale);
     bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);
     bindFramebuffer(in.targetFramebuffer);
     // A toast is removed when its time is up; nothing else on screen changes by itself (a
@@ -481,8 +481,8 @@ FrameOutput App::frame(const FrameInput& in) {
     out.toggleFullscreen = std::exchange(m.toggleFullscreen, false);
     out.pickFile = std::exchange(m.pickFile, false);
     out.copyLink = std::exchange(m.copyLink, false);
-    out.viewDrawn = m.viewDrawn;
-    out.viewScale = scale;
+    out.viewportDrawn = m.viewportDrawn;
+    out.viewportScale = scale;
     out.redrawIn = redrawIn;
     return out;
 }

@@ -8,7 +8,7 @@
 // top and presents. The loop belongs to the platform (platform/window.h); the app never sees
 // GLFW or the browser, and draws no ImGui itself.
 //
-// Frames are drawn only when something changes (app/frame_pacer.h), and the 3D view only when
+// Frames are drawn only when something changes (app/frame_pacer.h), and the model's viewport only when
 // what it shows changes (app/viewport_cache.h).
 //
 // Implemented: live panel, plots, presets list, open/save/revert with unsaved-changes prompt,
@@ -62,9 +62,9 @@ struct FrameOutput {
     // When the next frame is needed without input (app/frame_pacer.h): 0 at once, > 0 in that
     // many seconds (a toast going away), < 0 only on input.
     float redrawIn = -1.0f;
-    bool viewDrawn = false;  // the 3D view was drawn this frame (otherwise its cached copy was shown)
+    bool viewportDrawn = false;  // the model's viewport was drawn this frame (otherwise its cached copy was shown)
     bool presented = true;   // the window was drawn (false: it would have looked exactly as the last; no swap needed)
-    float viewScale = 1.0f;  // the fraction of the view's width and height drawn (< 1 while dragging on a slow machine)
+    float viewportScale = 1.0f;  // the fraction of the view's width and height drawn (< 1 while dragging on a slow machine)
 };
 
 struct AppOptions {
@@ -78,8 +78,8 @@ struct AppOptions {
     bool saveByDownload = false;
     // Where Save puts the edits of a shipped preset (defaultUserFolder() when empty).
     std::filesystem::path userFolder;
-    int viewSamples = 0; // multisampling of the 3D view (the desktop asks for 4 where the GL has them)
-    // While dragging, the 3D view is drawn at a lower resolution when frames take longer than
+    int viewportSamples = 0; // multisampling of the model's viewport (the desktop asks for 4 where the GL has them)
+    // While dragging, the model's viewport is drawn at a lower resolution when frames take longer than
     // this (app/viewport_cache.h); 0 turns that off.
     float frameBudgetSeconds = 0.05f;
 };
@@ -94,7 +94,7 @@ public:
     // shaders do not compile; a preset that fails to open is shown as an error in the window.
     bool init(Diagnostics& diagnostics);
 
-    // Between ImGui::NewFrame() and ImGui::Render(): the UI, the requests, and the 3D views
+    // Between ImGui::NewFrame() and ImGui::Render(): the UI, the requests, and the viewports
     // drawn offscreen where what they show changed. Draws nothing into the window.
     FrameOutput frame(const FrameInput& input);
     // The window's picture under ImGui's draw data: the background and this frame's views, into

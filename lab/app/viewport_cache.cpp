@@ -1,4 +1,4 @@
-// viewport_cache.cpp — the offscreen 3D view and its resolution while dragging.
+// viewport_cache.cpp — the model's viewport kept offscreen, and its resolution while dragging.
 #include "app/viewport_cache.h"
 
 #include <algorithm>
@@ -6,7 +6,7 @@
 
 namespace lab {
 
-bool CachedView::update(Renderer& renderer, const ViewKey& key, const Viewport& full, int samples) {
+bool CachedViewport::update(Renderer& renderer, const ViewportKey& key, const Viewport& full, int samples) {
     if (key_ && *key_ == key && target_) {
         return false;
     }
@@ -29,18 +29,18 @@ bool CachedView::update(Renderer& renderer, const ViewKey& key, const Viewport& 
     return true;
 }
 
-void CachedView::present(unsigned target, const Viewport& dest) const {
+void CachedViewport::present(unsigned target, const Viewport& dest) const {
     if (target_ && key_) {
         target_->present(target, dest, key_->width, key_->height);
     }
 }
 
-void CachedView::reset() {
+void CachedViewport::reset() {
     key_.reset();
     target_.reset();
 }
 
-float ViewResolution::update(bool dragging, float lastFrameSeconds, float budgetSeconds) {
+float ViewportResolution::update(bool dragging, float lastFrameSeconds, float budgetSeconds) {
     if (!dragging || budgetSeconds <= 0.0f) {
         scale_ = 1.0f;
     } else if (lastFrameSeconds > budgetSeconds) {

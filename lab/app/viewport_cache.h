@@ -1,4 +1,4 @@
-// viewport_cache.h — the 3D view drawn only when what it shows changes, and at a lower resolution
+// viewport_cache.h — the model's viewport drawn only when what it shows changes, and at a lower resolution
 // while the user drags on a machine too slow to draw it at full size in time.
 //
 // Hovering, opening a menu, dragging V in the plot or typing in a field changes nothing the 3D
@@ -18,28 +18,28 @@
 namespace lab {
 
 // Everything a drawn view depends on; the view is drawn again when any of it changes.
-struct ViewKey {
+struct ViewportKey {
     Preset preset;                     // as drawn (the view mode applied)
     std::shared_ptr<const Mesh> mesh;  // held, so a new mesh can never reuse a cached one's address
     int width = 0, height = 0;         // the pixels drawn (less than the view's while dragging)
     bool normals = false;              // DrawOptions::showNormals
     unsigned programs = 0;             // Renderer::generation()
-    bool operator==(const ViewKey&) const = default;
+    bool operator==(const ViewportKey&) const = default;
 };
 
 // One view's offscreen copy (A, or B in compare mode).
-class CachedView {
+class CachedViewport {
 public:
     // Draws the view into the offscreen target if `key` differs from the last one drawn; true
     // when it drew. `full`: the view's size in the window (key's size is at most that);
     // `samples`: multisampling of the target (0 for none).
-    bool update(Renderer& renderer, const ViewKey& key, const Viewport& full, int samples);
+    bool update(Renderer& renderer, const ViewportKey& key, const Viewport& full, int samples);
     // Copies the last drawn view into `dest` of framebuffer `target`, scaled to fit.
     void present(unsigned target, const Viewport& dest) const;
     void reset(); // forget it (the next update draws)
 
 private:
-    std::optional<ViewKey> key_;
+    std::optional<ViewportKey> key_;
     std::unique_ptr<ViewTarget> target_;
 };
 
@@ -47,7 +47,7 @@ private:
 // and the frames are over budget, then lowered (at most halving the pixels a frame, never below
 // a quarter of the width) until a frame fits, raised again when there is room, and back to 1 on
 // the first frame after the drag.
-class ViewResolution {
+class ViewportResolution {
 public:
     static constexpr float kLowest = 0.25f;
     float update(bool dragging, float lastFrameSeconds, float budgetSeconds);

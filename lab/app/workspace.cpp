@@ -207,7 +207,7 @@ void Workspace::open(const fs::path& file) {
         problem("Cannot open " + file.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }
-    if (!meshes_.get(*loaded, d, nullptr, viewAspect_)) { // (a glTF model without a camera in the file is framed here, for the view)
+    if (!meshes_.get(*loaded, d, nullptr, viewportAspect_)) { // (a glTF model without a camera in the file is framed here, for the view)
         problem("Cannot load the model of " + file.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }
@@ -330,7 +330,7 @@ void Workspace::useModel(const fs::path& path) {
 void Workspace::frameModel() {
     std::shared_ptr<const Mesh> mesh = this->mesh(Side::A);
     if (std::optional<Sphere> bounds = mesh ? drawnBounds(*mesh, doc_.preset.model) : std::nullopt) {
-        doc_.preset.camera = framedCamera(doc_.preset.camera, *bounds, viewAspect_);
+        doc_.preset.camera = framedCamera(doc_.preset.camera, *bounds, viewportAspect_);
     }
 }
 

@@ -79,10 +79,10 @@ public:
     void openLink(const std::string& fragment); // "preset=name" or "p=..." (core/scene/share_link.h)
     bool saveTo(const std::filesystem::path& file);
     void useModel(const std::filesystem::path& file); // a .gltf/.glb becomes the model, framed
-    // The camera frames A's model (core/scene/camera.h framedCamera) at the view's aspect (setViewAspect).
+    // The camera frames A's model (core/scene/camera.h framedCamera) at the view's aspect (setViewportAspect).
     void frameModel();
-    // The 3D view's width / height (A's half in compare mode), for framing; the app sets it each frame.
-    void setViewAspect(float aspect) { viewAspect_ = aspect; }
+    // The model's viewport's width / height (A's half in compare mode), for framing; the app sets it each frame.
+    void setViewportAspect(float aspect) { viewportAspect_ = aspect; }
     void drop(const std::vector<std::string>& files);
     void requestQuit();
     // A PNG of the view into the screenshot folder (a download in the browser), named
@@ -142,7 +142,7 @@ private:
     std::array<Resolved, 2> resolved_; // A's and B's
     std::vector<std::filesystem::path> presetFiles_;
     int currentPreset_ = -1;
-    float viewAspect_ = 1.0f;
+    float viewportAspect_ = 1.0f;
     std::optional<std::string> question_;
     std::function<void()> pending_;
     bool quit_ = false;

@@ -79,7 +79,7 @@ WindowOptions fitted(WindowOptions options) {
 }
 
 // A GLFW window with an OpenGL ES 3.0 context (EGL); nullptr with `error`. No multisampling:
-// the 3D view has its own (AppOptions::viewSamples), and the view is copied into the window with
+// the model's viewport has its own (AppOptions::viewportSamples), and the view is copied into the window with
 // a blit, which a multisampled window would refuse.
 GLFWwindow* openWindow(const WindowOptions& options, std::string& error) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
@@ -173,7 +173,7 @@ WindowResult runWindow(const AppOptions& appOptions, const WindowOptions& option
     WindowResult result = WindowResult::Closed;
     {
         AppOptions withSamples = appOptions;
-        withSamples.viewSamples = 4;
+        withSamples.viewportSamples = 4;
         App app(withSamples); // its GL objects go before the context does
         WindowState state;
         ImGuiHost host(kFonts);

@@ -186,7 +186,7 @@ FrameOutput ImGuiHost::frame(const FrameInput& in, const std::function<void()>& 
     FrameOutput out = m.app->frame(in);
     ImGui::Render();
     std::string drawn = snapshot(*ImGui::GetDrawData(), in);
-    out.presented = in.repaint || out.viewDrawn || drawn != m.lastDrawn;
+    out.presented = in.repaint || out.viewportDrawn || drawn != m.lastDrawn;
     m.lastDrawn = std::move(drawn);
     if (out.presented) {
         m.app->compose(in.targetFramebuffer, in.framebufferWidth, in.framebufferHeight);

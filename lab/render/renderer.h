@@ -107,7 +107,7 @@ private:
     bool complete_ = false;
 };
 
-// A 3D view kept offscreen between frames (the interactive lab draws the model only when what it
+// A viewport's render kept offscreen between frames (the interactive lab draws the model only when what it
 // shows changes): colour and depth at width × height with `samples` (0: none) for drawing into,
 // resolved into a single-sample copy that present() scales onto the bound draw framebuffer. A
 // smaller view (drawn while dragging) uses the bottom-left `used` part, so nothing is allocated

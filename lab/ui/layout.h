@@ -1,4 +1,4 @@
-// layout.h — where the panel, the plots and the 3D view go in the window: a pure function.
+// layout.h — where the panel, the plots and the model's viewport go in the window: a pure function.
 //
 // Window units (ImGui's). The panel is on the left; the plots on the right whenever the model still
 // has room beside them (presenter mode included), below the view only on narrow or portrait

@@ -134,10 +134,10 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     sweepWindow(*m.sweep, *m.a, events.requests);
     dialogs(m, events);
     const Rect& active = m.b ? layout.halves[0] : layout.viewport;
-    events.view = viewControls(*m.a, active, layout.viewport, *m.viewControls, m.clicks, m.motion);
-    lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewControls->light, m.lightShapes);
+    events.viewport = viewportControls(*m.a, active, layout.viewport, *m.viewportControls, m.clicks, m.motion);
+    lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewportControls->light, m.lightShapes);
     viewOverlay(m.overlay, layout);
-    events.gesture = ImGui::IsAnyItemActive() || events.view.gesture;
+    events.gesture = ImGui::IsAnyItemActive() || events.viewport.gesture;
     events.dragging = events.gesture && ImGui::IsAnyMouseDown();
     return events;
 }

@@ -1,5 +1,5 @@
 // screen.h — the whole UI of one frame, laid out: the panel, the plots, the tools, the dialogs,
-// and the 3D view's controls and overlay.
+// and the model's viewport's controls and overlay.
 //
 // The app fills a ScreenModel with what there is to show and edit (plain references into the
 // workspace and its own UI state), calls drawScreen between ImGui::NewFrame and ImGui::Render,
@@ -35,7 +35,7 @@ struct ScreenModel {
     ShaderEditorState* shaderEditor = nullptr;
     SweepViewState* sweep = nullptr;
     std::string_view lightingSource;
-    ViewControls* viewControls = nullptr;
+    ViewportControls* viewportControls = nullptr;
     const ProbeResult* probe = nullptr; // the last probe, shown while probeOpen
     bool* probeOpen = nullptr;
     bool* showHelp = nullptr;
@@ -49,7 +49,7 @@ struct ScreenModel {
 
 struct ScreenEvents {
     std::vector<Request> requests;        // buttons and fields, in the order they were used
-    ViewEvents view;                      // gestures and probe clicks in the 3D view
+    ViewportEvents viewport;                  // gestures and probe clicks in the model's viewport
     bool problemClosed = false;
     std::optional<UnsavedAnswer> answer;
     bool gesture = false; // a widget or a view gesture is still active (one undo step when it ends)

@@ -1,4 +1,4 @@
-// viewport.cpp — gestures, light markers and overlay text of the 3D view.
+// viewport.cpp — gestures, light markers and overlay text of the model's viewport.
 #include "ui/viewport.h"
 
 #include "core/scene/camera.h"
@@ -67,27 +67,27 @@ void dragLight(Preset& scene, int index, ImVec2 delta, const Rect& r, const Ligh
     l.position = glm::clamp(l.position + step, glm::vec3(limits::kCoordinate.min), glm::vec3(limits::kCoordinate.max));
 }
 
-void startGesture(const Preset& scene, const Rect& active, ViewControls& s) {
+void startGesture(const Preset& scene, const Rect& active, ViewportControls& s) {
     ImGuiIO& io = ImGui::GetIO();
     s.pressX = io.MousePos.x;
     s.pressY = io.MousePos.y;
     s.pressMoved = false;
     s.button = ImGui::IsMouseClicked(0) ? 0 : ImGui::IsMouseClicked(1) ? 1 : 2;
-    s.drag = s.button == 0 ? ViewControls::Drag::Orbit : ViewControls::Drag::Pan; // touch: two fingers are the middle button
-    if (s.drag == ViewControls::Drag::Orbit) {
+    s.drag = s.button == 0 ? ViewportControls::Drag::Orbit : ViewportControls::Drag::Pan; // touch: two fingers are the middle button
+    if (s.drag == ViewportControls::Drag::Orbit) {
         s.light = lightUnderMouse(scene, active, io.MousePos);
         if (s.light >= 0) {
-            s.drag = ViewControls::Drag::Light;
+            s.drag = ViewportControls::Drag::Light;
         }
     }
 }
 
 } // namespace
 
-ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, ViewControls& s,
+ViewportEvents viewportControls(Preset& scene, const Rect& active, const Rect& whole, ViewportControls& s,
                         const std::vector<std::pair<float, float>>& clicks, const LightMotion* motion) {
     ImGuiIO& io = ImGui::GetIO();
-    ViewEvents events;
+    ViewportEvents events;
     for (const auto& [x, y] : clicks) {
         if (!events.probed && !io.WantCaptureMouse && active.contains(x, y)) {
             events.probed = active;
@@ -99,18 +99,18 @@ ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, Vi
     if (hovered && io.MouseWheel != 0.0f) {
         zoomCamera(scene.camera, std::pow(0.9f, io.MouseWheel));
     }
-    if (hovered && s.drag == ViewControls::Drag::None && (ImGui::IsMouseClicked(0) || ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2))) {
+    if (hovered && s.drag == ViewportControls::Drag::None && (ImGui::IsMouseClicked(0) || ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2))) {
         startGesture(motion ? orbitedScene(scene, *motion) : scene, active, s); // picked where shown
     }
-    if (s.drag == ViewControls::Drag::None) {
+    if (s.drag == ViewportControls::Drag::None) {
         return events;
     }
     ImVec2 delta = io.MouseDelta;
     s.pressMoved = s.pressMoved || std::hypot(io.MousePos.x - s.pressX, io.MousePos.y - s.pressY) > 3.0f;
     if (s.pressMoved && (delta.x != 0.0f || delta.y != 0.0f)) {
-        if (s.drag == ViewControls::Drag::Orbit) {
+        if (s.drag == ViewportControls::Drag::Orbit) {
             orbitCamera(scene.camera, -delta.x * 0.35f, delta.y * 0.35f);
-        } else if (s.drag == ViewControls::Drag::Pan) {
+        } else if (s.drag == ViewportControls::Drag::Pan) {
             panCamera(scene.camera, delta.x / active.h, -delta.y / active.h);
         } else if (s.light < static_cast<int>(scene.lights.size())) {
             dragLight(scene, s.light, delta, active, motion);
@@ -118,10 +118,10 @@ ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, Vi
     }
     bool released = ImGui::IsMouseReleased(s.button);
     if (released) { // a release without a move was a click: the queued clicks above probe it
-        s.drag = ViewControls::Drag::None;
+        s.drag = ViewportControls::Drag::None;
         s.light = -1;
     }
-    events.gesture = s.drag != ViewControls::Drag::None;
+    events.gesture = s.drag != ViewportControls::Drag::None;
     return events;
 }
 

@@ -1,13 +1,13 @@
-// viewport.h — the 3D view's ImGui side: mouse gestures, light markers and the text drawn over it.
+// viewport.h — the model's viewport's ImGui side: mouse gestures, light markers and the text drawn over it.
 //
-// viewControls() edits the camera and the light positions of the preset it is given, in place,
+// viewportControls() edits the camera and the light positions of the preset it is given, in place,
 // like the panel edits the rest (left drag orbits, right or middle drag pans, the wheel zooms, a drag on a
 // light marker moves that light in the plane parallel to the image), and reports a click that
 // did not move as a probe. lightMarkers() draws the lights: numbered markers (at the view's edge
 // for lights outside it), spot cones and directional lights' rays. viewOverlay() draws the
 // header, the caption, the frame time, the view mode, the compare labels, the probe's marker
 // and the toast. All of it goes under ImGui's windows and dialogs (the background draw list),
-// over the 3D view. ImGui only: the 3D view itself is drawn by the renderer.
+// over the model's viewport. ImGui only: the model's viewport itself is drawn by the renderer.
 #pragma once
 
 #include "core/scene/light_orbit.h"
@@ -23,7 +23,7 @@
 namespace lab::ui {
 
 // What a gesture remembers between frames.
-struct ViewControls {
+struct ViewportControls {
     enum class Drag { None, Orbit, Pan, Light } drag = Drag::None;
     bool pressMoved = false;
     float pressX = 0, pressY = 0;
@@ -31,7 +31,7 @@ struct ViewControls {
     int button = 0;  // the mouse button that started the drag
 };
 
-struct ViewEvents {
+struct ViewportEvents {
     std::optional<Rect> probed;  // a click: the pixel is probeX/probeY in this rectangle
     float probeX = 0, probeY = 0; // window units
     bool gesture = false;         // a drag is in progress (one undo step when it ends)
@@ -42,7 +42,7 @@ struct ViewEvents {
 // `active`, away from ImGui's windows, is the probe. `motion`, while lights orbit
 // (core/scene/light_orbit.h), is where they are shown: a marker is picked where it is shown, and a
 // dragged one moves the preset's light by the inverse turn, so the shown light follows the mouse.
-ViewEvents viewControls(Preset& scene, const Rect& active, const Rect& whole, ViewControls& state,
+ViewportEvents viewportControls(Preset& scene, const Rect& active, const Rect& whole, ViewportControls& state,
                         const std::vector<std::pair<float, float>>& clicks, const LightMotion* motion = nullptr);
 
 // Numbered markers at the point and spot lights (window units, named for the GUI tests), and
