@@ -13,9 +13,9 @@ bool CachedViewport::update(Renderer& renderer, const ViewportKey& key, const Vi
     int w = std::max(full.width, key.width), h = std::max(full.height, key.height);
     if (!target_ || target_->width() != w || target_->height() != h || target_->samples() != samples) {
         target_.reset(); // its memory first
-        target_ = std::make_unique<ViewTarget>(w, h, samples);
+        target_ = std::make_unique<ViewportTarget>(w, h, samples);
         if (!target_->complete() && samples > 0) { // a driver that offers samples it cannot attach
-            target_ = std::make_unique<ViewTarget>(w, h, 0);
+            target_ = std::make_unique<ViewportTarget>(w, h, 0);
         }
     }
     target_->bind();

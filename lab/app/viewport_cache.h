@@ -2,7 +2,7 @@
 // while the user drags on a machine too slow to draw it at full size in time.
 //
 // Hovering, opening a menu, dragging V in the plot or typing in a field changes nothing the 3D
-// view shows, so the window composites the view kept offscreen (render/renderer.h, ViewTarget)
+// view shows, so the window composites the view kept offscreen (render/renderer.h, ViewportTarget)
 // instead of shading every pixel again; on Mesa's llvmpipe that is the difference between a
 // frame of a few milliseconds and one of a few hundred. Screenshots, `lab render` and the
 // goldens never go through here: they are always drawn at full resolution.
@@ -40,7 +40,7 @@ public:
 
 private:
     std::optional<ViewportKey> key_;
-    std::unique_ptr<ViewTarget> target_;
+    std::unique_ptr<ViewportTarget> target_;
 };
 
 // The fraction of the view's width and height that is drawn: 1 unless the user is dragging

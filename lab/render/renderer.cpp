@@ -340,7 +340,7 @@ Image Framebuffer::readRgb() const {
 }
 
 //----------------------------------------------------------------------------------------
-// ViewTarget
+// ViewportTarget
 //----------------------------------------------------------------------------------------
 
 namespace {
@@ -365,7 +365,7 @@ int supportedSamples(int wanted) {
     return std::max(0, std::min(wanted, static_cast<int>(most)));
 }
 
-ViewTarget::ViewTarget(int width, int height, int samples) : width_(width), height_(height), samples_(samples) {
+ViewportTarget::ViewportTarget(int width, int height, int samples) : width_(width), height_(height), samples_(samples) {
     glGenFramebuffers(1, &drawFbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, drawFbo_);
     drawColor_ = renderbuffer(GL_RGBA8, width, height, samples);
@@ -382,7 +382,7 @@ ViewTarget::ViewTarget(int width, int height, int samples) : width_(width), heig
     }
 }
 
-ViewTarget::~ViewTarget() {
+ViewportTarget::~ViewportTarget() {
     glDeleteFramebuffers(1, &drawFbo_);
     glDeleteRenderbuffers(1, &drawColor_);
     glDeleteRenderbuffers(1, &depth_);
@@ -392,9 +392,9 @@ ViewTarget::~ViewTarget() {
     }
 }
 
-void ViewTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, drawFbo_); }
+void ViewportTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, drawFbo_); }
 
-void ViewTarget::resolve(int usedWidth, int usedHeight) const {
+void ViewportTarget::resolve(int usedWidth, int usedHeight) const {
     if (readFbo_) {
         glDisable(GL_SCISSOR_TEST); // a blit obeys the scissor
         glBindFramebuffer(GL_READ_FRAMEBUFFER, drawFbo_);
@@ -403,7 +403,7 @@ void ViewTarget::resolve(int usedWidth, int usedHeight) const {
     }
 }
 
-void ViewTarget::present(unsigned target, const Viewport& dest, int usedWidth, int usedHeight) const {
+void ViewportTarget::present(unsigned target, const Viewport& dest, int usedWidth, int usedHeight) const {
     glDisable(GL_SCISSOR_TEST); // a blit obeys the scissor
     glBindFramebuffer(GL_READ_FRAMEBUFFER, readFbo_ ? readFbo_ : drawFbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);

@@ -112,12 +112,12 @@ private:
 // resolved into a single-sample copy that present() scales onto the bound draw framebuffer. A
 // smaller view (drawn while dragging) uses the bottom-left `used` part, so nothing is allocated
 // per frame.
-class ViewTarget {
+class ViewportTarget {
 public:
-    ViewTarget(int width, int height, int samples);
-    ~ViewTarget();
-    ViewTarget(const ViewTarget&) = delete;
-    ViewTarget& operator=(const ViewTarget&) = delete;
+    ViewportTarget(int width, int height, int samples);
+    ~ViewportTarget();
+    ViewportTarget(const ViewportTarget&) = delete;
+    ViewportTarget& operator=(const ViewportTarget&) = delete;
 
     bool complete() const { return complete_; }
     int width() const { return width_; }

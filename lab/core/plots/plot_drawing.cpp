@@ -34,7 +34,7 @@ Palette paletteOf(std::initializer_list<std::pair<Ink, FigureColor>> entries) {
 const Palette& screenPalette() {
     // Grid and axes bright enough to survive a projector: light grey on near black.
     static const Palette p = paletteOf({
-        {Ink::Text, {225, 225, 232}},       {Ink::Muted, {190, 190, 200}},     {Ink::Grid, {135, 135, 150}},
+        {Ink::Text, {225, 225, 232}},       {Ink::Muted, {205, 205, 214}},     {Ink::Grid, {135, 135, 150}},
         {Ink::Axis, {215, 215, 225}},       {Ink::Background, {16, 16, 20}},   {Ink::Diffuse, {90, 160, 255}},
         {Ink::Specular, {255, 160, 60}},    {Ink::Total, {255, 255, 255}},     {Ink::Compare, {240, 100, 230}},
         {Ink::Light, {255, 230, 90}},       {Ink::Mirror, {120, 220, 120}},    {Ink::Viewer, {90, 220, 230}},
@@ -137,9 +137,14 @@ glm::vec2 dirFromDeg(float deg, float side) {
 }
 
 PlotMargins polarMargins(const PlotStyle& s, bool caption) {
+    if (!caption) {
+        // Compact, for a plot among others in a window: the spoke labels beside the rim may reach
+        // into the corners the half-disc leaves free.
+        const float side = 0.75f * s.width(degrees(60.0f), s.text()) + s.pad();
+        return {side, side, s.text() + s.pad(), s.text() + s.pad()};
+    }
     const float side = s.width(degrees(90.0f), s.text()) + s.pad();
-    const float below = caption ? 2.0f * (s.text() + s.pad()) + s.pad() : s.text() + 2.0f * s.pad();
-    return {side, side, s.text() + 2.0f * s.pad(), below};
+    return {side, side, s.text() + 2.0f * s.pad(), 2.0f * (s.text() + s.pad()) + s.pad()};
 }
 
 Polar polarFrame(glm::vec2 corner, float width, float height, const PlotStyle& style, bool caption) {

@@ -134,7 +134,8 @@ struct Polar {
 glm::vec2 dirFromDeg(float deg, float side);
 
 // The room around the half-disc: the angle labels beside and above the rim, the ring values
-// and 90° labels under the surface line, and (with `caption`) the caption under them.
+// and 90° labels under the surface line, and (with `caption`, a figure's page) the caption
+// under them; without, compact (a plot among others in a window).
 PlotMargins polarMargins(const PlotStyle& style, bool caption);
 // The largest half-disc in the area (x, y, width, height) with those margins.
 Polar polarFrame(glm::vec2 corner, float width, float height, const PlotStyle& style, bool caption);
