@@ -1,7 +1,7 @@
 // actions_test.cpp — the command table: every command reachable, keys unambiguous, and the
 // README's shortcut table exactly the help overlay's.
-#include "ui/actions.h"
 #include "test_files.h"
+#include "ui/actions.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // camera_test.cpp — orbit keeps the distance and never flips, zoom and pan move as documented,
 // framing puts the whole bounding sphere in view at any size.
 #include "core/scene/camera.h"
-#include "core/scene/preset.h"
 #include "core/scene/limits.h"
+#include "core/scene/preset.h"
 
 #include <gtest/gtest.h>
 

@@ -10,8 +10,8 @@
 #include "probes.h"
 
 #include "core/lighting/lighting.h"
-#include "core/scene/limits.h"
 #include "core/plots/plot_data.h"
+#include "core/scene/limits.h"
 
 #include <gtest/gtest.h>
 

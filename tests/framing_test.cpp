@@ -5,13 +5,13 @@
 // OffscreenRenderer that `lab render` and `lab check` use. The model must cover a similar share
 // of each image and touch no border; an explicit camera, a `lights` key and built-in models are
 // left as they are. The unit tests of framedCamera itself are in camera_test.cpp.
-#include "core/scene/camera.h"
 #include "core/gltf/mesh_cache.h"
 #include "core/gltf/model_loader.h"
+#include "core/scene/camera.h"
 #include "core/scene/preset.h"
+#include "gl_suite.h"
 #include "platform/headless_gl.h"
 #include "render/offscreen.h"
-#include "gl_suite.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>

@@ -5,10 +5,10 @@
 // evaluation of the same point and normal (lab::shade). Each probe's object-space position is
 // chosen so that it projects onto the centre of its own pixel. Per-vertex shading (flat,
 // Gouraud) evaluates in lit.vert, Phong shading in lit.frag: both paths are covered for every BRDF.
-#include "gl_suite.h"
-#include "probes.h"
 #include "core/lighting/lighting.h"
+#include "gl_suite.h"
 #include "platform/headless_gl.h"
+#include "probes.h"
 #include "render/renderer.h"
 
 #include <gtest/gtest.h>

@@ -8,8 +8,8 @@
 // through the same matrices.
 #pragma once
 
-#include "core/lighting/lighting.h"
 #include "core/io/image.h"
+#include "core/lighting/lighting.h"
 #include "core/scene/mesh.h"
 #include "render/offscreen.h"
 #include "render/renderer.h"

@@ -1,9 +1,9 @@
 // shader_test.cpp — the shader editor's half in the renderer: edited lighting.glsl and stage
 // bodies compiled on the headless GL context, compile errors and non-ASCII text named by file and
 // line, the previous programs kept on failure, and the built-in ones restored by a revert.
-#include "gl_suite.h"
 #include "core/gltf/mesh_cache.h"
 #include "core/scene/preset.h"
+#include "gl_suite.h"
 #include "platform/headless_gl.h"
 #include "render/gl.h"
 #include "render/renderer.h"

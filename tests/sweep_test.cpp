@@ -3,8 +3,8 @@
 #include "cli/commands.h"
 #include "core/plots/sweep_grid.h"
 #include "core/scene/sweep.h"
-#include "render/offscreen.h"
 #include "gl_suite.h"
+#include "render/offscreen.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>

@@ -1,11 +1,11 @@
 // viewport_cache_test.cpp — the 3D view drawn only when what it shows changes, and at a reduced
 // resolution only while dragging (app/viewport_cache.h), on real App frames (HeadlessApp).
 #include "app/app.h"
-#include "ui/actions.h"
 #include "platform/headless_app.h"
 #include "platform/headless_gl.h"
-#include "ui/widget_map.h"
 #include "test_files.h"
+#include "ui/actions.h"
+#include "ui/widget_map.h"
 
 #include <gtest/gtest.h>
 

@@ -4,9 +4,9 @@
 #include "app/figure_export.h"
 #include "app/workspace.h"
 
+#include "core/gltf/model_loader.h"
 #include "core/scene/camera.h"
 #include "core/scene/share_link.h"
-#include "core/gltf/model_loader.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>

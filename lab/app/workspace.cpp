@@ -1,12 +1,12 @@
 // workspace.cpp — files, links, commands and meshes of the editing state.
 #include "app/workspace.h"
 
-#include "core/scene/preset_choices.h"
-#include "core/scene/camera.h"
-#include "core/scene/share_link.h"
 #include "core/gltf/model_loader.h"
 #include "core/io/paths.h"
 #include "core/io/safe_text.h"
+#include "core/scene/camera.h"
+#include "core/scene/preset_choices.h"
+#include "core/scene/share_link.h"
 
 #include <algorithm>
 #include <cstdio>

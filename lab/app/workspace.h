@@ -13,11 +13,11 @@
 #pragma once
 
 #include "app/document.h"
-#include "ui/actions.h"
+#include "core/gltf/mesh_cache.h"
 #include "core/io/diagnostics.h"
 #include "core/io/image.h"
-#include "core/gltf/mesh_cache.h"
 #include "core/scene/view_mode.h"
+#include "ui/actions.h"
 
 #include <array>
 #include <filesystem>

@@ -10,11 +10,11 @@
 #include "cli/command_kit.h"
 #include "cli/csv_compare.h"
 #include "cli/output.h"
-#include "core/plots/sweep_grid.h"
 #include "core/io/file_io.h"
-#include "core/plots/plot_data.h"
-#include "core/scene/preset.h"
 #include "core/io/safe_text.h"
+#include "core/plots/plot_data.h"
+#include "core/plots/sweep_grid.h"
+#include "core/scene/preset.h"
 
 #include <unistd.h>
 

@@ -3,14 +3,14 @@
 
 #include "cli/command_kit.h"
 #include "cli/output.h"
-#include "core/plots/sweep_grid.h"
-#include "core/plots/energy.h"
-#include "core/io/file_io.h"
-#include "core/scene/limits.h"
 #include "core/gltf/model_loader.h"
-#include "core/plots/plot_data.h"
-#include "core/scene/preset.h"
+#include "core/io/file_io.h"
 #include "core/io/safe_text.h"
+#include "core/plots/energy.h"
+#include "core/plots/plot_data.h"
+#include "core/plots/sweep_grid.h"
+#include "core/scene/limits.h"
+#include "core/scene/preset.h"
 
 #include <algorithm>
 #include <charconv>

@@ -5,8 +5,8 @@
 // `check`, an image or plot that differs or a missing golden. Output files are written atomically. Nothing here parses argv (main.cpp does).
 #pragma once
 
-#include "core/plots/figures.h"
 #include "core/io/image.h"
+#include "core/plots/figures.h"
 #include "core/scene/sweep.h"
 
 #include <filesystem>

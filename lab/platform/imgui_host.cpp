@@ -1,9 +1,9 @@
 // imgui_host.cpp — ImGui context, OpenGL3 backend, fonts and the frame order.
 #include "platform/imgui_host.h"
 
-#include "ui/actions.h"
 #include "render/gl.h"
 #include "render/renderer.h"
+#include "ui/actions.h"
 
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>

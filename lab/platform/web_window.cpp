@@ -24,8 +24,8 @@
 #include "app/touch.h"
 #include "platform/imgui_glfw.h"
 #include "platform/imgui_host.h"
-#include "ui/widget_map.h"
 #include "render/gl.h"
+#include "ui/widget_map.h"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>

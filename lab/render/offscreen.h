@@ -4,8 +4,8 @@
 // Needs a current GL context (platform/headless_gl.h).
 #pragma once
 
-#include "core/io/image.h"
 #include "core/gltf/mesh_cache.h"
+#include "core/io/image.h"
 #include "core/scene/preset.h"
 #include "render/renderer.h"
 

@@ -2,8 +2,8 @@
 // ImGui only; the answers go back to the app, which carries them out.
 #pragma once
 
-#include "ui/actions.h"
 #include "core/io/diagnostics.h"
+#include "ui/actions.h"
 
 #include <optional>
 #include <string>

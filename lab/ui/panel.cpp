@@ -1,11 +1,11 @@
 // panel.cpp — the control panel's sections.
 #include "ui/panel.h"
 
-#include "core/scene/camera.h"
-#include "core/scene/preset_choices.h"
-#include "core/lighting/lighting.h"
-#include "core/scene/limits.h"
 #include "core/io/safe_text.h"
+#include "core/lighting/lighting.h"
+#include "core/scene/camera.h"
+#include "core/scene/limits.h"
+#include "core/scene/preset_choices.h"
 #include "ui/widgets.h"
 
 #include <glm/glm.hpp>

@@ -6,9 +6,9 @@
 // (ui/actions.h) for the app to carry out. ImGui only: no GL, no file access.
 #pragma once
 
-#include "ui/actions.h"
 #include "core/scene/preset.h"
 #include "core/scene/view_mode.h"
+#include "ui/actions.h"
 #include "ui/layout.h"
 
 #include <filesystem>

@@ -19,8 +19,8 @@
 // and text offsets scale with the font (ImGui::GetFontSize() / 13).
 #pragma once
 
-#include "core/plots/plot_data.h"
 #include "core/lighting/probe.h"
+#include "core/plots/plot_data.h"
 #include "ui/plot_cache.h"
 #include "ui/plots_3d.h"
 

@@ -7,8 +7,8 @@
 // copied into the draw list each frame; the grid lines, arrows and labels are drawn on top.
 #include "ui/plots_3d.h"
 #include "ui/plot_kit.h"
-#include "ui/widgets.h"
 #include "ui/plots.h"
+#include "ui/widgets.h"
 
 #include "core/lighting/lighting.h"
 

@@ -9,8 +9,8 @@
 #include "ui/plot_kit.h"
 #include "ui/widgets.h"
 
-#include "core/plots/energy.h"
 #include "core/lighting/lighting.h"
+#include "core/plots/energy.h"
 #include "core/scene/limits.h"
 
 #include <algorithm>

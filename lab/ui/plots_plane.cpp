@@ -11,8 +11,8 @@
 #include "ui/widgets.h"
 
 #include "core/lighting/lighting.h"
-#include "core/scene/limits.h"
 #include "core/plots/plot_layout.h"
+#include "core/scene/limits.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>

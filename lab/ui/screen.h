@@ -6,15 +6,15 @@
 // and carries out the ScreenEvents that come back. ImGui only: no GL, no files.
 #pragma once
 
-#include "ui/actions.h"
 #include "core/io/diagnostics.h"
 #include "core/lighting/probe.h"
+#include "ui/actions.h"
 #include "ui/layout.h"
 #include "ui/panel.h"
 #include "ui/plots.h"
 #include "ui/shader_editor.h"
-#include "ui/sweep_view.h"
 #include "ui/small_windows.h"
+#include "ui/sweep_view.h"
 #include "ui/viewport.h"
 
 #include <optional>

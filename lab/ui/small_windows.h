@@ -3,8 +3,8 @@
 // ImGui only; what they ask for comes back as requests (ui/actions.h) for the app.
 #pragma once
 
-#include "ui/actions.h"
 #include "core/lighting/probe.h"
+#include "ui/actions.h"
 
 #include <string>
 #include <string_view>

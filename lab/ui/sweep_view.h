@@ -7,8 +7,8 @@
 // SaveSweep request. Nothing here when the window is closed.
 #pragma once
 
-#include "ui/actions.h"
 #include "core/scene/preset.h"
+#include "ui/actions.h"
 
 #include <string>
 #include <vector>

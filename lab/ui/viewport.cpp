@@ -1,11 +1,11 @@
 // viewport.cpp — gestures, light markers and overlay text of the model's viewport.
 #include "ui/viewport.h"
 
-#include "core/scene/camera.h"
-#include "core/scene/preset_choices.h"
-#include "core/lighting/lighting.h"
-#include "core/scene/limits.h"
 #include "core/io/safe_text.h"
+#include "core/lighting/lighting.h"
+#include "core/scene/camera.h"
+#include "core/scene/limits.h"
+#include "core/scene/preset_choices.h"
 #include "ui/widgets.h"
 
 #include <imgui.h>

@@ -18,9 +18,11 @@
 //   5. Gltf (load_ms vs read_ms): loading a generated 1-million-triangle .glb against reading
 //      the file's bytes.
 // Wall-clock times; every GL benchmark ends its iteration with glFinish.
+#include "../../tools/glb_writer.h"
+#include "../test_files.h"
 #include "app/app.h"
-#include "core/io/file_io.h"
 #include "core/gltf/reader.h"
+#include "core/io/file_io.h"
 #include "core/lighting/lighting.h"
 #include "core/scene/mesh.h"
 #include "platform/headless_app.h"
@@ -29,8 +31,6 @@
 #include "render/shader.h"
 #include "ui/plots.h"
 #include "ui/widgets.h"
-#include "../test_files.h"
-#include "../../tools/glb_writer.h"
 
 #include <benchmark/benchmark.h>
 #include <imgui.h>

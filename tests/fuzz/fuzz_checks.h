@@ -9,13 +9,13 @@
 
 #include "cli/command_line.h"
 #include "cli/commands.h"
-#include "core/io/file_io.h"
 #include "core/gltf/reader.h"
+#include "core/io/file_io.h"
 #include "core/io/image.h"
+#include "core/io/safe_text.h"
 #include "core/lighting/lighting.h"
 #include "core/plots/plot_data.h"
 #include "core/scene/preset.h"
-#include "core/io/safe_text.h"
 #include "platform/headless_gl.h"
 #include "render/offscreen.h" // kMaxRenderSide
 

@@ -18,8 +18,8 @@
 // (LAB_HAVE_MESHOPT, LAB_HAVE_DRACO) refuses a file that needs it, naming the extension.
 #pragma once
 
-#include "core/io/diagnostics.h"
 #include "core/gltf/accessors.h"
+#include "core/io/diagnostics.h"
 
 #include <nlohmann/json.hpp>
 

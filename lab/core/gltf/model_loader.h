@@ -1,8 +1,8 @@
 // model_loader.h — the mesh a preset's `model` names: a built-in shape or a glTF file.
 #pragma once
 
-#include "core/scene/camera.h"
 #include "core/io/diagnostics.h"
+#include "core/scene/camera.h"
 #include "core/scene/mesh.h"
 #include "core/scene/preset.h"
 

@@ -1,8 +1,8 @@
 // energy.cpp — the albedo of each term by quadrature over the hemisphere (see energy.h).
 #include "core/plots/energy.h"
 
-#include "core/lighting/lighting.h"
 #include "core/io/number_format.h"
+#include "core/lighting/lighting.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/vec3.hpp>

@@ -4,13 +4,13 @@
 // in the print style: dark on white, text measured with the font the PNG draws with.
 #include "core/plots/figures.h"
 
-#include "core/plots/energy.h"
-#include "core/scene/preset_choices.h"
 #include "core/io/file_io.h"
-#include "core/lighting/lighting.h"
 #include "core/io/number_format.h"
+#include "core/lighting/lighting.h"
+#include "core/plots/energy.h"
 #include "core/plots/plot_drawing.h"
 #include "core/plots/plot_layout.h"
+#include "core/scene/preset_choices.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>

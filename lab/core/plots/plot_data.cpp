@@ -1,8 +1,8 @@
 // plot_data.cpp — samples the lighting model in the plane of incidence.
 #include "core/plots/plot_data.h"
 
-#include "core/lighting/lighting.h"
 #include "core/io/number_format.h"
+#include "core/lighting/lighting.h"
 #include "core/plots/plot_layout.h"
 
 #include <algorithm>

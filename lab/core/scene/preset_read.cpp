@@ -13,10 +13,10 @@
 
 #include "core/io/file_io.h"
 #include "core/io/json_text.h"
-#include "core/scene/limits.h"
 #include "core/io/paths.h"
-#include "core/scene/preset_names.h"
 #include "core/io/safe_text.h"
+#include "core/scene/limits.h"
+#include "core/scene/preset_names.h"
 #include "core/scene/sweep.h"
 
 #include <glm/geometric.hpp>
