@@ -16,13 +16,13 @@ namespace lab::ui::plotkit {
 
 PlotStyle screenStyle() {
     // The figures' text is 14 pixels; the UI's is ImGui's font size.
-    return PlotStyle{&screenPalette(), ImGui::GetFontSize() / 14.0f, [](std::string_view text, float size) {
+    return PlotStyle{&kScreenPalette, ImGui::GetFontSize() / 14.0f, [](std::string_view text, float size) {
                          return ImGui::GetFont()->CalcTextSizeA(size, FLT_MAX, 0.0f, text.data(), text.data() + text.size()).x;
                      }};
 }
 
 ImU32 ink(Ink i) {
-    const FigureColor c = colorOf(screenPalette(), i);
+    const FigureColor c = colorOf(kScreenPalette, i);
     return IM_COL32(c.r, c.g, c.b, 255);
 }
 

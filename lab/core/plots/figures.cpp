@@ -33,12 +33,12 @@ constexpr float kPolarHeight = 500.0f;
 constexpr float kCartesianHeight = 460.0f;
 constexpr float kMargin = 18.0f;
 // The print style's sizes (plot_drawing.h).
-const PlotStyle& kStyle = printStyle();
-const float kTitleSize = kStyle.title();
-const float kTextSize = kStyle.text();
-const float kPad = kStyle.pad();
-const float kStroke = kStyle.stroke();
-const float kBold = kStyle.bold();
+constexpr const PlotStyle& kStyle = kPrintStyle;
+constexpr float kTitleSize = kStyle.title();
+constexpr float kTextSize = kStyle.text();
+constexpr float kPad = kStyle.pad();
+constexpr float kStroke = kStyle.stroke();
+constexpr float kBold = kStyle.bold();
 
 float textWidth(const std::string& text, float size) { return kStyle.width(text, size); }
 

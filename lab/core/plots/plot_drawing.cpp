@@ -21,7 +21,7 @@ namespace lab {
 
 namespace {
 
-Palette paletteOf(std::initializer_list<std::pair<Ink, FigureColor>> entries) {
+constexpr Palette paletteOf(std::initializer_list<std::pair<Ink, FigureColor>> entries) {
     Palette p{};
     for (auto [ink, color] : entries) {
         p[static_cast<std::size_t>(ink)] = color;
@@ -31,39 +31,31 @@ Palette paletteOf(std::initializer_list<std::pair<Ink, FigureColor>> entries) {
 
 } // namespace
 
-const Palette& screenPalette() {
-    // Grid and axes bright enough to survive a projector: light grey on near black.
-    static const Palette p = paletteOf({
-        {Ink::Text, {225, 225, 232}},       {Ink::Muted, {205, 205, 214}},     {Ink::Grid, {135, 135, 150}},
-        {Ink::Axis, {215, 215, 225}},       {Ink::Background, {16, 16, 20}},   {Ink::Diffuse, {90, 160, 255}},
-        {Ink::Specular, {255, 160, 60}},    {Ink::Total, {255, 255, 255}},     {Ink::Compare, {240, 100, 230}},
-        {Ink::Light, {255, 230, 90}},       {Ink::Mirror, {120, 220, 120}},    {Ink::Viewer, {90, 220, 230}},
-        {Ink::Half, {255, 110, 110}},       {Ink::Probe, {180, 180, 186}},     {Ink::Warning, {255, 120, 100}},
-        {Ink::Overlay1, {255, 110, 110}},   {Ink::Overlay2, {120, 230, 120}},  {Ink::Overlay3, {120, 170, 255}},
-    });
-    return p;
-}
+// Grid and axes bright enough to survive a projector: light grey on near black.
+constexpr Palette kScreenPalette = paletteOf({
+    {Ink::Text, {225, 225, 232}},       {Ink::Muted, {205, 205, 214}},     {Ink::Grid, {135, 135, 150}},
+    {Ink::Axis, {215, 215, 225}},       {Ink::Background, {16, 16, 20}},   {Ink::Diffuse, {90, 160, 255}},
+    {Ink::Specular, {255, 160, 60}},    {Ink::Total, {255, 255, 255}},     {Ink::Compare, {240, 100, 230}},
+    {Ink::Light, {255, 230, 90}},       {Ink::Mirror, {120, 220, 120}},    {Ink::Viewer, {90, 220, 230}},
+    {Ink::Half, {255, 110, 110}},       {Ink::Probe, {180, 180, 186}},     {Ink::Warning, {255, 120, 100}},
+    {Ink::Overlay1, {255, 110, 110}},   {Ink::Overlay2, {120, 230, 120}},  {Ink::Overlay3, {120, 170, 255}},
+});
 
-const Palette& printPalette() {
-    // The screen's hues darkened where white would wash them out; the total is black, as it is
-    // white on screen.
-    static const Palette p = paletteOf({
-        {Ink::Text, {25, 25, 30}},          {Ink::Muted, {90, 90, 100}},       {Ink::Grid, {200, 200, 210}},
-        {Ink::Axis, {60, 60, 70}},          {Ink::Background, {255, 255, 255}}, {Ink::Diffuse, {30, 110, 220}},
-        {Ink::Specular, {225, 120, 10}},    {Ink::Total, {20, 20, 20}},        {Ink::Compare, {200, 40, 180}},
-        {Ink::Light, {190, 140, 0}},        {Ink::Mirror, {40, 150, 60}},      {Ink::Viewer, {0, 140, 160}},
-        {Ink::Half, {200, 60, 60}},         {Ink::Probe, {110, 110, 120}},     {Ink::Warning, {200, 60, 40}},
-        {Ink::Overlay1, {215, 50, 50}},     {Ink::Overlay2, {40, 160, 60}},    {Ink::Overlay3, {50, 100, 230}},
-    });
-    return p;
-}
+// The screen's hues darkened where white would wash them out; the total is black, as it is white
+// on screen.
+constexpr Palette kPrintPalette = paletteOf({
+    {Ink::Text, {25, 25, 30}},          {Ink::Muted, {90, 90, 100}},       {Ink::Grid, {200, 200, 210}},
+    {Ink::Axis, {60, 60, 70}},          {Ink::Background, {255, 255, 255}}, {Ink::Diffuse, {30, 110, 220}},
+    {Ink::Specular, {225, 120, 10}},    {Ink::Total, {20, 20, 20}},        {Ink::Compare, {200, 40, 180}},
+    {Ink::Light, {190, 140, 0}},        {Ink::Mirror, {40, 150, 60}},      {Ink::Viewer, {0, 140, 160}},
+    {Ink::Half, {200, 60, 60}},         {Ink::Probe, {110, 110, 120}},     {Ink::Warning, {200, 60, 40}},
+    {Ink::Overlay1, {215, 50, 50}},     {Ink::Overlay2, {40, 160, 60}},    {Ink::Overlay3, {50, 100, 230}},
+});
 
-const PlotStyle& printStyle() {
-    static const PlotStyle style{&printPalette(), 1.0f, [](std::string_view text, float size) {
-                                     const TextFont& font = sharedTextFont();
-                                     return font.measure(text, size * font.lineHeightPerEm()).width;
-                                 }};
-    return style;
+
+float printedWidth(std::string_view text, float size) {
+    const TextFont& font = sharedTextFont();
+    return font.measure(text, size * font.lineHeightPerEm()).width;
 }
 
 std::string format(const char* f, ...) {

@@ -21,7 +21,6 @@
 
 #include <array>
 #include <cstddef>
-#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -54,13 +53,13 @@ enum class Ink {
     Count
 };
 using Palette = std::array<FigureColor, static_cast<std::size_t>(Ink::Count)>;
-const Palette& screenPalette(); // light on the plots' near-black background
-const Palette& printPalette();  // dark on white
+extern const Palette kScreenPalette; // light on the plots' near-black background
+extern const Palette kPrintPalette;  // dark on white
 inline Ink overlayInk(std::size_t i) { return static_cast<Ink>(static_cast<std::size_t>(Ink::Overlay1) + i); }
 inline FigureColor colorOf(const Palette& palette, Ink ink) { return palette[static_cast<std::size_t>(ink)]; }
 
 // The width of `text` at em size `size`, in the figure's pixels.
-using TextMeasure = std::function<float(std::string_view text, float size)>;
+using TextMeasure = float (*)(std::string_view text, float size);
 
 // The figures' page sizes (pixels at scale 1) times `scale`, the palette and the text measure.
 struct PlotStyle {
@@ -68,19 +67,21 @@ struct PlotStyle {
     float scale = 1.0f;
     TextMeasure measure;
 
-    float text() const { return 14.0f * scale; }   // labels, legends, arrow names
-    float small() const { return 12.5f * scale; }  // ring values and captions
-    float title() const { return 18.0f * scale; }
-    float pad() const { return 6.0f * scale; }     // text from what it labels
-    float thin() const { return 1.0f * scale; }    // grid lines
-    float stroke() const { return 2.0f * scale; }  // curves, axes, arrows
-    float bold() const { return 3.0f * scale; }    // the total and L
-    float head() const { return 11.0f * scale; }   // an arrowhead's length at most
+    constexpr float text() const { return 14.0f * scale; }   // labels, legends, arrow names
+    constexpr float small() const { return 12.5f * scale; }  // ring values and captions
+    constexpr float title() const { return 18.0f * scale; }
+    constexpr float pad() const { return 6.0f * scale; }     // text from what it labels
+    constexpr float thin() const { return 1.0f * scale; }    // grid lines
+    constexpr float stroke() const { return 2.0f * scale; }  // curves, axes, arrows
+    constexpr float bold() const { return 3.0f * scale; }    // the total and L
+    constexpr float head() const { return 11.0f * scale; }   // an arrowhead's length at most
     FigureColor color(Ink ink) const { return colorOf(*palette, ink); }
     float width(std::string_view t, float size) const { return measure(t, size); }
 };
-// The figures' style: scale 1, the print palette, measured with the PNG's font (text_raster.h).
-const PlotStyle& printStyle();
+// The width of text as the figures' PNG draws it (text_raster.h's shared font).
+float printedWidth(std::string_view text, float size);
+// The figures' style: scale 1, the print palette, measured with the PNG's font.
+inline constexpr PlotStyle kPrintStyle{&kPrintPalette, 1.0f, &printedWidth};
 
 inline constexpr const char* kDeg = "\xc2\xb0";   // °
 inline constexpr const char* kTheta = "\xce\xb8"; // θ
