@@ -16,9 +16,12 @@ namespace lab::ui::plotkit {
 
 PlotStyle screenStyle() {
     // The figures' text is 14 pixels; the UI's is ImGui's font size.
-    return PlotStyle{&kScreenPalette, ImGui::GetFontSize() / 14.0f, [](std::string_view text, float size) {
+    // The rings get about a segment every 4 pixels.
+    return PlotStyle{&kScreenPalette, ImGui::GetFontSize() / 14.0f,
+                     [](std::string_view text, float size) {
                          return ImGui::GetFont()->CalcTextSizeA(size, FLT_MAX, 0.0f, text.data(), text.data() + text.size()).x;
-                     }};
+                     },
+                     4.0f};
 }
 
 ImU32 ink(Ink i) {
@@ -30,13 +33,14 @@ namespace {
 
 ImU32 imColor(FigureColor c) { return IM_COL32(c.r, c.g, c.b, 255); }
 
-std::vector<ImVec2> imPoints(const std::vector<glm::vec2>& points) {
-    std::vector<ImVec2> out;
-    out.reserve(points.size());
+// The points as ImGui takes them, in a buffer kept for the next call (no allocation a line).
+const std::vector<ImVec2>& imPoints(const std::vector<glm::vec2>& points) {
+    static std::vector<ImVec2> buffer;
+    buffer.clear();
     for (glm::vec2 p : points) {
-        out.push_back(toImVec2(p));
+        buffer.push_back(toImVec2(p));
     }
-    return out;
+    return buffer;
 }
 
 void paintText(ImDrawList* dl, const FigureText& t) {
@@ -61,11 +65,11 @@ void paint(ImDrawList* dl, const Figure& figure) {
     for (const FigureShape& shape : figure.shapes) {
         if (const auto* l = std::get_if<FigureLine>(&shape)) {
             if (l->points.size() >= 2) {
-                std::vector<ImVec2> pts = imPoints(l->points);
+                const std::vector<ImVec2>& pts = imPoints(l->points);
                 dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), imColor(l->color), 0, l->width);
             }
         } else if (const auto* g = std::get_if<FigurePolygon>(&shape)) {
-            std::vector<ImVec2> pts = imPoints(g->points);
+            const std::vector<ImVec2>& pts = imPoints(g->points);
             dl->AddConvexPolyFilled(pts.data(), static_cast<int>(pts.size()), imColor(g->fill));
         } else if (const auto* d = std::get_if<FigureDisc>(&shape)) {
             dl->AddCircleFilled(toImVec2(d->centre), d->radius, imColor(d->fill));

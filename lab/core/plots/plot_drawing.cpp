@@ -71,6 +71,14 @@ std::string tickText(float v) { return format("%.3g", double(v)); }
 
 std::string degrees(float deg) { return format("%.0f", double(deg)) + kDeg; }
 
+namespace {
+
+// degrees(60) and degrees(90), which margins and grids measure on every frame.
+constexpr const char* kSixtyDegrees = "60\xc2\xb0";
+constexpr const char* kNinetyDegrees = "90\xc2\xb0";
+
+} // namespace
+
 //----------------------------------------------------------------------------------------
 // A plot being drawn
 //----------------------------------------------------------------------------------------
@@ -132,10 +140,10 @@ PlotMargins polarMargins(const PlotStyle& s, bool caption) {
     if (!caption) {
         // Compact, for a plot among others in a window: the spoke labels beside the rim may reach
         // into the corners the half-disc leaves free.
-        const float side = 0.75f * s.width(degrees(60.0f), s.text()) + s.pad();
+        const float side = 0.75f * s.width(kSixtyDegrees, s.text()) + s.pad();
         return {side, side, s.text() + s.pad(), s.text() + s.pad()};
     }
-    const float side = s.width(degrees(90.0f), s.text()) + s.pad();
+    const float side = s.width(kNinetyDegrees, s.text()) + s.pad();
     return {side, side, s.text() + 2.0f * s.pad(), 2.0f * (s.text() + s.pad()) + s.pad()};
 }
 
@@ -151,13 +159,34 @@ float polarMaxHeight(const PlotStyle& style, float width, bool caption) {
 
 namespace {
 
-// A ring of radius r (unit) as a polyline, from the surface on the left over the top.
-std::vector<glm::vec2> arc(const Polar& p, float r) {
+// (-cos a, sin a) for a = π·i/120, i = 0…120: the half circle every arc is drawn along.
+const std::array<glm::vec2, 121>& halfCircle() {
+    static const std::array<glm::vec2, 121> table = [] {
+        std::array<glm::vec2, 121> t{};
+        for (int i = 0; i <= 120; ++i) {
+            const float a = glm::pi<float>() * static_cast<float>(i) / 120;
+            t[static_cast<std::size_t>(i)] = {-std::cos(a), std::sin(a)};
+        }
+        return t;
+    }();
+    return table;
+}
+
+// A ring of radius r (unit) as a polyline, from the surface on the left over the top: 120
+// segments, or on screen (arcStep > 0) about one per arcStep pixels, 24 at the least.
+std::vector<glm::vec2> arc(const Polar& p, float r, const PlotStyle& style) {
+    int every = 1; // every 1st, 2nd, 3rd, 4th or 5th point of the table: 120, 60, 40, 30 or 24 segments
+    if (style.arcStep > 0.0f) {
+        const float segments = std::max(r * p.radius / style.arcStep, 1.0f);
+        every = std::clamp(static_cast<int>(120.0f / segments), 1, 5);
+        while (120 % every != 0) {
+            --every;
+        }
+    }
     std::vector<glm::vec2> pts;
-    const int n = 120;
-    for (int i = 0; i <= n; ++i) {
-        const float a = glm::pi<float>() * static_cast<float>(i) / n;
-        pts.push_back(p.at({-std::cos(a) * r, std::sin(a) * r}));
+    pts.reserve(static_cast<std::size_t>(120 / every + 1));
+    for (std::size_t i = 0; i <= 120; i += static_cast<std::size_t>(every)) {
+        pts.push_back(p.at(halfCircle()[i] * r));
     }
     return pts;
 }
@@ -185,14 +214,14 @@ void polarGrid(PlotCanvas& canvas, const Polar& p, float outer, RadialScale scal
     }
     const float below = p.origin.y + s.pad() + s.text() * 0.5f;
     for (float side : {-1.0f, 1.0f}) {
-        canvas.text({p.origin.x + side * (p.radius + s.pad()), below}, degrees(90.0f), s.text(), Ink::Text, TextAnchor::Middle);
+        canvas.text({p.origin.x + side * (p.radius + s.pad()), below}, kNinetyDegrees, s.text(), Ink::Text, TextAnchor::Middle);
     }
     // Ring values stop short of the 90° label, and skip one that would crowd the last.
-    const float limit = p.origin.x + p.radius + s.pad() - s.width(degrees(90.0f), s.text()) * 0.5f - s.pad();
+    const float limit = p.origin.x + p.radius + s.pad() - s.width(kNinetyDegrees, s.text()) * 0.5f - s.pad();
     float labelsEnd = p.origin.x;
     for (auto [v, r] : radialRings(outer, scale)) {
         if (r < 0.999f) {
-            canvas.line(arc(p, r), s.thin(), Ink::Grid);
+            canvas.line(arc(p, r, s), s.thin(), Ink::Grid);
         }
         const std::string t = tickText(v);
         const float w = s.width(t, s.small()), x = p.origin.x + r * p.radius;
@@ -209,7 +238,7 @@ void polarGrid(PlotCanvas& canvas, const Polar& p, float outer, RadialScale scal
         const float out = s.pad() + 0.5f * (std::abs(d.x) * s.width(t, s.text()) + std::abs(d.y) * s.text());
         canvas.text({rim.x + d.x * out, rim.y - d.y * out}, t, s.text(), Ink::Text, TextAnchor::Middle);
     }
-    canvas.line(arc(p, 1.0f), s.thin(), Ink::Axis);
+    canvas.line(arc(p, 1.0f, s), s.thin(), Ink::Axis);
     if (scale == RadialScale::Log) {
         for (const DecadeMark& mark : decadeMarks(outer, s)) {
             for (float side : {-1.0f, 1.0f}) {

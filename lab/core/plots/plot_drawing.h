@@ -66,6 +66,7 @@ struct PlotStyle {
     const Palette* palette = nullptr;
     float scale = 1.0f;
     TextMeasure measure;
+    float arcStep = 0.0f; // a ring's segments on screen: about one per arcStep pixels (0: the figures' 120)
 
     constexpr float text() const { return 14.0f * scale; }   // labels, legends, arrow names
     constexpr float small() const { return 12.5f * scale; }  // ring values and captions
