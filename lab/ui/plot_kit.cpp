@@ -166,6 +166,16 @@ Canvas beginCanvas(const char* id, const char* name, float width, float height) 
     return c;
 }
 
+std::optional<Box> canvasBox(const Canvas& c, const PlotStyle& style, const std::string& yLabel, const std::string& xLabel) {
+    const float text = style.text(), pad = style.pad();
+    Box b{{c.corner.x + style.width(yLabel, text) + 2.0f * pad, c.corner.y + c.height - text - 2.0f * pad},
+          {c.corner.x + c.width - style.width(xLabel, text) * 0.5f - pad, c.corner.y + text * 0.6f}};
+    if (b.hi.x - b.lo.x < text || b.lo.y - b.hi.y < text) {
+        return std::nullopt;
+    }
+    return b;
+}
+
 //----------------------------------------------------------------------------------------
 // A plot's block: readout strip, canvas, controls
 //----------------------------------------------------------------------------------------

@@ -17,6 +17,7 @@
 #include <imgui.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -122,6 +123,10 @@ struct Block {
 // `box` in the area at `origin`; `cramped`: a low band; `controls`: a row of controls below.
 Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout& r, const char* readoutMark,
                  bool cramped, bool controls, float minCanvas, const std::function<float(float)>& maxCanvas);
+
+// A Cartesian plot's box in a canvas: room for the values left of the y axis (`yLabel` the widest)
+// and under the x axis, half of the last x value (`xLabel`) right of the box. Nullopt when too small.
+std::optional<Box> canvasBox(const Canvas& c, const PlotStyle& style, const std::string& yLabel, const std::string& xLabel);
 
 // Where a curve's unit points go in a polar plot (plot_cache.h).
 inline CurvePlacement placementOf(const Polar& p) { return {true, p.origin, {p.radius, -p.radius}}; }

@@ -81,12 +81,12 @@ void energyCanvas(const Canvas& c, const std::vector<AlbedoSample>& a, const std
     const float top = std::ceil(largest / step - 1e-4f) * step;
     ScreenPlot plot;
     const PlotStyle& style = plot.style;
-    const float text = style.text(), pad = style.pad();
-    const Box box{{c.corner.x + style.width("0.25", text) + 2.0f * pad, c.corner.y + c.height - text - 2.0f * pad},
-                  {c.corner.x + c.width - style.width(degrees(90.0f), text) * 0.5f - pad, c.corner.y + text * 0.6f}};
-    if (box.hi.x - box.lo.x < text || box.lo.y - box.hi.y < text) {
+    const float text = style.text();
+    const std::optional<Box> fits = canvasBox(c, style, "0.25", degrees(90.0f));
+    if (!fits) {
         return;
     }
+    const Box& box = *fits;
     auto at = [&](float deg, float value) { return box.at(deg / 90.0f, value / top); };
     std::vector<AxisTick> xs, ys{{0.0f, 0.0f}};
     const int count = std::clamp(static_cast<int>((box.lo.y - box.hi.y) / (2.5f * text)), 1, 6);

@@ -179,18 +179,6 @@ void lobeCurves(ScreenPlot& plot, const Lobes& lobes, PlotSettings& s, const Cur
     }
 }
 
-// A Cartesian plot's box in a canvas: room for the values left of the y axis (`yLabel` the widest)
-// and under the x axis, half of the last x value (`xLabel`) right of the box. Nullopt when too small.
-std::optional<Box> canvasBox(const Canvas& c, const PlotStyle& style, const std::string& yLabel, const std::string& xLabel) {
-    const float text = style.text(), pad = style.pad();
-    Box b{{c.corner.x + style.width(yLabel, text) + 2.0f * pad, c.corner.y + c.height - text - 2.0f * pad},
-          {c.corner.x + c.width - style.width(xLabel, text) * 0.5f - pad, c.corner.y + text * 0.6f}};
-    if (b.hi.x - b.lo.x < text || b.lo.y - b.hi.y < text) {
-        return std::nullopt;
-    }
-    return b;
-}
-
 // x: θo from -90 to 90; y: intensity (radius function), 0 at the bottom.
 void cartesianLobes(const Canvas& c, const Lobes& lobes, PlotSettings& s) {
     ScreenPlot plot;

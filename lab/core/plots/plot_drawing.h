@@ -103,7 +103,6 @@ class PlotCanvas {
 public:
     PlotCanvas(Figure& figure, const PlotStyle& style) : figure_(figure), style_(style) {}
     const PlotStyle& style() const { return style_; }
-    Figure& figure() { return figure_; }
 
     void line(std::vector<glm::vec2> points, float width, Ink ink, std::string id = {});
     // Text whose capitals are centred on `at.y` (DejaVu's cap height is 0.73 em).
