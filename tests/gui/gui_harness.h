@@ -232,10 +232,14 @@ private:
         settle();
     }
 
+    // The finished files only: the lab writes each through a hidden ".NAME.tmp-XXXXXX" it then
+    // renames, and a listing taken in between would name a file that is gone when it is read.
     std::set<fs::path> files() const {
         std::set<fs::path> all;
         for (const fs::directory_entry& e : fs::directory_iterator(shots_)) {
-            all.insert(e.path());
+            if (e.path().filename().string().rfind('.', 0) != 0) {
+                all.insert(e.path());
+            }
         }
         return all;
     }
