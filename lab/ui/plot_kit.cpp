@@ -24,14 +24,15 @@ PlotStyle screenStyle() {
                      4.0f};
 }
 
-ImU32 ink(Ink i) {
-    const FigureColor c = colorOf(kScreenPalette, i);
-    return IM_COL32(c.r, c.g, c.b, 255);
-}
-
 namespace {
 
 ImU32 imColor(FigureColor c) { return IM_COL32(c.r, c.g, c.b, 255); }
+
+} // namespace
+
+ImU32 ink(Ink i) { return imColor(colorOf(kScreenPalette, i)); }
+
+namespace {
 
 // The points as ImGui takes them, in a buffer kept for the next call (no allocation a line).
 const std::vector<ImVec2>& imPoints(const std::vector<glm::vec2>& points) {
