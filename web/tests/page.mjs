@@ -33,6 +33,12 @@ export async function newLabPage(browser, url, { width = 1280, height = 760, sca
     await context.addInitScript(initScript);
   }
   const page = await context.newPage();
+  // Playwright turns Chromium's file-chooser interception on when a page gets its first 'filechooser'
+  // listener and off when the last one goes, by a message it does not wait for: a click sent right
+  // after waitForEvent('filechooser') can open the picker before interception is on, and the event
+  // never comes (CI saw it once: 30 s, no 'filechooser'). One listener for the page's life keeps it
+  // on from before the page loads; waitForEvent then only adds and removes a second one.
+  page.on('filechooser', () => {});
   const problems = [];
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
   page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
