@@ -47,7 +47,7 @@ TEST(Camera, ZoomScalesTheDistanceWithinLimits) {
 
 TEST(Camera, PanDragsTheSceneWithTheMouse) {
     Camera c; // looking down -z from (0, 0, 4): right is +x, up is +y
-    panCamera(c, 0.5f, 0.0f); // drag the scene right by half a view height
+    panCamera(c, 0.5f, 0.0f); // drag the scene right by half the view's narrower side
     float viewHeight = 2.0f * 4.0f * std::tan(glm::radians(22.5f));
     EXPECT_NEAR(c.eye.x, -0.5f * viewHeight, 1e-5f);
     EXPECT_NEAR(c.target.x, -0.5f * viewHeight, 1e-5f);
@@ -89,7 +89,9 @@ struct Reach {
 
 Reach reach(const Camera& c, const Sphere& s, float aspect) {
     glm::mat4 view = glm::lookAt(c.eye, c.target, c.up);
-    glm::mat4 projection = glm::perspective(glm::radians(c.fovyDeg), aspect, c.near, c.far);
+    // fovy_deg spans the narrower side: the width when the view is taller than wide.
+    float tanHalfY = std::tan(glm::radians(c.fovyDeg) / 2.0f) / std::min(aspect, 1.0f);
+    glm::mat4 projection = glm::perspective(2.0f * std::atan(tanHalfY), aspect, c.near, c.far);
     Reach r;
     for (int i = 0; i < 64; ++i) {        // directions over the whole sphere
         for (int j = 0; j <= 32; ++j) {

@@ -23,6 +23,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string>
+#include <utility>
 
 namespace lab {
 namespace {
@@ -171,6 +173,25 @@ TEST_F(Framing, TheDefaultCameraDoesNotShowALargeModel) {
     Image image = render(writePreset(dir.path(), "large", "large.gltf", 1000.0f, R"(, "camera": {})"));
     Coverage c = coverage(image, Preset{}.background);
     EXPECT_TRUE(c.share < 0.08 || c.onBorder) << c.share;
+}
+
+// fovy_deg spans the image's narrower side: a shipped preset's sphere, framed for a square, stays
+// whole in an image twice as tall as wide (cut at both sides when fovy was always vertical) and in
+// one twice as wide as tall.
+TEST_F(Framing, AShippedPresetsModelIsWholeInTallAndWideImages) {
+    ASSERT_NE(renderer_, nullptr);
+    for (const char* name : {"05-full-phong", "13-cook-torrance-beckmann-schlick"}) {
+        LoadedPreset preset = load(fs::path(LAB_SOURCE_DIR) / "presets" / (std::string(name) + ".json"));
+        for (auto [w, h] : {std::pair{300, 600}, std::pair{600, 300}}) {
+            SCOPED_TRACE(std::string(name) + " at " + std::to_string(w) + "x" + std::to_string(h));
+            Diagnostics d;
+            std::optional<Image> image = renderer_->render(preset, w, h, d);
+            ASSERT_TRUE(image) << toString(d);
+            Coverage c = coverage(*image, preset.preset.background);
+            EXPECT_FALSE(c.onBorder) << "the model is cut at the image's border";
+            EXPECT_GT(c.share, 0.1) << "the sphere should span most of the narrower side";
+        }
+    }
 }
 
 //----------------------------------------------------------------------------------------

@@ -312,6 +312,28 @@ TEST(Lighting, LightsMoveIntoEyeSpaceWithTheView) {
     EXPECT_NEAR(in.lights[0].cosCutoff, std::cos(glm::radians(30.0f)), 1e-7f);
 }
 
+// fovy_deg is the field of view of the view's narrower side: a point seen fovy/2 off the axis
+// lands on the edge of the narrower side, vertical when wider than tall, horizontal when taller.
+TEST(Lighting, FovyIsTheFieldOfViewOfTheNarrowerSide) {
+    Preset p; // eye (0, 0, 4) looking at the origin, fovy 45
+    float edge = 4.0f * std::tan(glm::radians(22.5f)); // at the target's depth
+    auto ndc = [&](float aspect, glm::vec3 world) {
+        Transforms t = computeTransforms(p, aspect);
+        glm::vec4 clip = t.projection * t.view * glm::vec4(world, 1.0f);
+        return glm::vec2(clip) / clip.w;
+    };
+    for (float aspect : {1.0f, 16.0f / 9.0f, 3.0f}) { // wide: vertical, as glm::perspective takes it
+        SCOPED_TRACE(aspect);
+        EXPECT_NEAR(ndc(aspect, {0, edge, 0}).y, 1.0f, 1e-5f);
+        EXPECT_NEAR(ndc(aspect, {edge, 0, 0}).x, 1.0f / aspect, 1e-5f);
+    }
+    for (float aspect : {0.5f, 9.0f / 16.0f, 0.999f}) { // tall: horizontal
+        SCOPED_TRACE(aspect);
+        EXPECT_NEAR(ndc(aspect, {edge, 0, 0}).x, 1.0f, 1e-5f);
+        EXPECT_NEAR(ndc(aspect, {0, edge, 0}).y, aspect, 1e-5f);
+    }
+}
+
 TEST(Lighting, NormalMatrixUnderNonUniformScale) {
     Preset p;
     p.camera.eye = {0, 0, 1};

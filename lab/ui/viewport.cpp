@@ -59,7 +59,8 @@ void dragLight(Preset& scene, int index, ImVec2 delta, const Rect& r, const Ligh
     glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
     glm::vec3 up = glm::cross(right, forward);
     float depth = glm::dot(shownAt - camera.eye, forward);
-    float perPixel = 2.0f * std::max(depth, 0.01f) * std::tan(glm::radians(camera.fovyDeg) / 2.0f) / r.h;
+    // fovy_deg spans the view's narrower side (core/lighting/lighting.h).
+    float perPixel = 2.0f * std::max(depth, 0.01f) * std::tan(glm::radians(camera.fovyDeg) / 2.0f) / std::min(r.w, r.h);
     glm::vec3 step = (delta.x * right - delta.y * up) * perPixel;
     if (l.orbit.on) {
         step = orbitUnrotate(l.orbit, seconds, step);
@@ -111,7 +112,8 @@ ViewportEvents viewportControls(Preset& scene, const Rect& active, const Rect& w
         if (s.drag == ViewportControls::Drag::Orbit) {
             orbitCamera(scene.camera, -delta.x * 0.35f, delta.y * 0.35f);
         } else if (s.drag == ViewportControls::Drag::Pan) {
-            panCamera(scene.camera, delta.x / active.h, -delta.y / active.h);
+            float side = std::min(active.w, active.h); // panCamera's unit: the view's narrower side
+            panCamera(scene.camera, delta.x / side, -delta.y / side);
         } else if (s.light < static_cast<int>(scene.lights.size())) {
             dragLight(scene, s.light, delta, active, motion);
         }

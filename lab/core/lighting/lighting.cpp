@@ -3,6 +3,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
+
 namespace lab {
 
 namespace glsl {
@@ -17,11 +19,24 @@ glm::mat4 modelMatrix(const Model& model) {
     return glm::scale(m, model.scale);
 }
 
+float verticalFovRadians(const Camera& camera, float aspect) {
+    float fov = glm::radians(camera.fovyDeg);
+    if (!(aspect < 1.0f) || !(aspect > 0.0f)) {
+        return fov; // wider than tall (or square): fovy_deg is the vertical field of view
+    }
+    // Taller than wide: fovy_deg spans the width, tan(vertical / 2) = tan(fovy / 2) / aspect.
+    return 2.0f * std::atan(std::tan(fov * 0.5f) / aspect);
+}
+
+glm::mat4 projectionMatrix(const Camera& camera, float aspect) {
+    return glm::perspective(verticalFovRadians(camera, aspect), aspect, camera.near, camera.far);
+}
+
 Transforms computeTransforms(const Preset& preset, float aspect) {
     Transforms t;
     t.model = modelMatrix(preset.model);
     t.view = glm::lookAt(preset.camera.eye, preset.camera.target, preset.camera.up);
-    t.projection = glm::perspective(glm::radians(preset.camera.fovyDeg), aspect, preset.camera.near, preset.camera.far);
+    t.projection = projectionMatrix(preset.camera, aspect);
     t.modelView = t.view * t.model;
     glm::mat3 mv(t.modelView);
     // The correct normal matrix is the inverse-transpose; the model-view matrix itself is the

@@ -67,8 +67,13 @@ struct Transforms {
     glm::mat3 normalMatrix; // per the preset's normal_matrix mode
 };
 
-// Model = T·Rz·Ry·Rx·S; view = lookAt; projection = perspective(fovy, aspect, near, far).
+// Model = T·Rz·Ry·Rx·S; view = lookAt; projection = perspective(vertical field of view, aspect, near,
+// far), where the camera's fovy_deg is the field of view of the view's narrower side: vertical when
+// the view is at least as wide as tall (aspect = width / height >= 1), horizontal when it is taller
+// than wide (Blender's sensor fit "auto"), so what a camera frames stays whole in any shape.
 glm::mat4 modelMatrix(const Model& model);
+float verticalFovRadians(const Camera& camera, float aspect);
+glm::mat4 projectionMatrix(const Camera& camera, float aspect);
 Transforms computeTransforms(const Preset& preset, float aspect);
 
 // The preset's material, BRDF and term switches, as the shaders take them.

@@ -60,8 +60,8 @@ void panCamera(Camera& camera, float dx, float dy) {
     forward /= distance;
     glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
     glm::vec3 up = glm::cross(right, forward);
-    float viewHeight = 2.0f * distance * std::tan(glm::radians(camera.fovyDeg) / 2.0f);
-    glm::vec3 move = (-dx * right - dy * up) * viewHeight;
+    float viewSide = 2.0f * distance * std::tan(glm::radians(camera.fovyDeg) / 2.0f); // the narrower side's extent
+    glm::vec3 move = (-dx * right - dy * up) * viewSide;
     camera.eye += move;
     camera.target += move;
     keepCameraValid(camera);
@@ -101,11 +101,10 @@ Camera framedCamera(const Camera& base, const Sphere& sphere, float aspect) {
     dir = length > 0.0f && std::isfinite(length) ? dir / length : glm::vec3(0.0f, 0.0f, 1.0f);
     // (An infinite radius, from bounds that overflow, is the largest; NaN the smallest.)
     float radius = std::isnan(sphere.radius) ? kMinFramedRadius : std::clamp(sphere.radius, kMinFramedRadius, kMaxFramedRadius);
-    aspect = aspect > 0.0f && std::isfinite(aspect) ? aspect : 1.0f;
+    (void)aspect; // (the narrower side decides, whatever the shape)
 
-    // The smaller of the vertical and horizontal half angles decides (tan halfX = tan halfY · aspect).
-    float tanHalfY = std::tan(glm::radians(limits::clamp(limits::kFovyDeg, base.fovyDeg)) * 0.5f);
-    float tanHalf = tanHalfY * std::min(1.0f, aspect);
+    // fovy_deg spans the view's narrower side whatever its shape (core/lighting/lighting.h).
+    float tanHalf = std::tan(glm::radians(limits::clamp(limits::kFovyDeg, base.fovyDeg)) * 0.5f);
     float distance = framingDistance(radius, tanHalf);
 
     // The target inside the coordinate range, as keepCameraValid keeps it; the eye as far back as
@@ -125,7 +124,7 @@ Camera framedCamera(const Camera& base, const Sphere& sphere, float aspect) {
         distance = room;
         float sinA = std::min(radius / distance, 0.999f);
         float tanA = sinA / std::sqrt(1.0f - sinA * sinA);
-        float fovy = glm::degrees(2.0f * std::atan(tanA / kFramedShare / std::min(1.0f, aspect)));
+        float fovy = glm::degrees(2.0f * std::atan(tanA / kFramedShare));
         c.fovyDeg = limits::clamp(limits::kFovyDeg, std::max(base.fovyDeg, fovy));
     }
     c.eye = c.target + dir * distance;

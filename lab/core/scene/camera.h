@@ -42,8 +42,8 @@ void orbitCamera(Camera& camera, float yawDeg, float pitchDeg);
 // the distance within [near * 2, far / 2].
 void zoomCamera(Camera& camera, float factor);
 
-// Drags the scene by (dx, dy) view heights at the target's distance (x right, y up): eye and
-// target move together the opposite way.
+// Drags the scene by (dx, dy) times the view's narrower side (which fovy_deg spans) at the
+// target's distance (x right, y up): eye and target move together the opposite way.
 void panCamera(Camera& camera, float dx, float dy);
 
 } // namespace lab
