@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace lab::ui {
 namespace {
@@ -126,6 +129,106 @@ TEST(Layout, ATinyWindowStillHasAView) {
     Layout l = computeLayout({1, 1, 1.0f, true, true});
     EXPECT_GE(l.viewport.w, 1.0f);
     EXPECT_GE(l.viewport.h, 1.0f);
+}
+
+//----------------------------------------------------------------------------------------
+// placeText: the view's text beside the model, never over it
+//----------------------------------------------------------------------------------------
+
+bool intersects(const Rect& a, const Rect& b) {
+    return a.w > 0.0f && a.h > 0.0f && b.w > 0.0f && b.h > 0.0f && a.x < b.x + b.w - 0.01f && b.x < a.x + a.w - 0.01f &&
+           a.y < b.y + b.h - 0.01f && b.y < a.y + a.h - 0.01f;
+}
+
+bool inside(const Rect& r, const Rect& in) {
+    return r.x >= in.x - 0.01f && r.y >= in.y - 0.01f && r.x + r.w <= in.x + in.w + 0.01f && r.y + r.h <= in.y + in.h + 0.01f;
+}
+
+// A caption of `lines` lines of 20 units at any width, however wide: a stand-in for the font's.
+TextRoom room(float lines, bool compare = false) {
+    TextRoom t;
+    t.header = 30.0f;
+    t.footer = 28.0f;
+    t.label = compare ? 26.0f : 0.0f;
+    if (lines > 0.0f) {
+        t.captionHeight = [lines](float width) { return 20.0f * lines * std::max(1.0f, 300.0f / width); };
+        t.captionWidth = 470.0f;
+        t.sideWidth = 240.0f;
+    }
+    return t;
+}
+
+void expectApart(const Layout& l, const std::string& where) {
+    std::vector<std::pair<const char*, const Rect*>> text = {
+        {"header", &l.header}, {"caption", &l.captionBand}, {"footer", &l.footer}, {"label A", &l.labels[0]}, {"label B", &l.labels[1]}};
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        EXPECT_TRUE(text[i].second->w == 0.0f || inside(*text[i].second, l.view)) << where << ": " << text[i].first;
+        EXPECT_FALSE(intersects(*text[i].second, l.viewport) && text[i].second != &l.labels[0] && text[i].second != &l.labels[1])
+            << where << ": " << text[i].first << " over the model";
+        for (const Rect& half : l.halves) {
+            EXPECT_FALSE(intersects(*text[i].second, half)) << where << ": " << text[i].first << " over a half";
+        }
+        for (std::size_t j = i + 1; j < text.size(); ++j) {
+            EXPECT_FALSE(intersects(*text[i].second, *text[j].second)) << where << ": " << text[i].first << " / " << text[j].first;
+        }
+    }
+    EXPECT_TRUE(inside(l.viewport, l.view)) << where;
+    EXPECT_TRUE(inside(l.caption, l.captionBand)) << where;
+}
+
+TEST(LayoutText, HeaderFooterAndCaptionTakeStripsOfTheViewAndTheModelTheRest) {
+    for (auto [w, h] : {std::pair{1024.0f, 768.0f}, {1280.0f, 800.0f}, {1920.0f, 1080.0f}, {390.0f, 844.0f}, {768.0f, 1024.0f}}) {
+        for (bool panel : {true, false}) {
+            for (float lines : {0.0f, 3.0f}) {
+                for (bool compare : {false, true}) {
+                    std::string where = std::to_string(int(w)) + "x" + std::to_string(int(h)) + (panel ? " panel" : "") +
+                                        " caption " + std::to_string(int(lines)) + (compare ? " compare" : "");
+                    Layout l = computeLayout({w, h, 1.0f, panel, true});
+                    const Rect view = l.view;
+                    placeText(l, room(lines, compare));
+                    EXPECT_EQ(l.view.x, view.x) << where;
+                    EXPECT_EQ(l.view.h, view.h) << where;
+                    EXPECT_FLOAT_EQ(l.header.h, 30.0f) << where;
+                    EXPECT_FLOAT_EQ(l.header.y, view.y) << where;
+                    EXPECT_FLOAT_EQ(l.footer.y + l.footer.h, view.y + view.h) << where;
+                    EXPECT_EQ(l.caption.w > 0.0f, lines > 0.0f) << where;
+                    if (compare) {
+                        for (int i = 0; i < 2; ++i) {
+                            EXPECT_FLOAT_EQ(l.labels[i].y + l.labels[i].h, l.halves[i].y) << where << ": a label above its half";
+                            EXPECT_TRUE(inside(l.halves[i], l.viewport)) << where;
+                        }
+                    }
+                    expectApart(l, where);
+                }
+            }
+        }
+    }
+}
+
+// A wide view (a projector without the panel) takes the caption as a column at its left: the
+// model keeps more of its height. A tall one takes it across the top.
+TEST(LayoutText, TheCaptionGoesWhereTheModelKeepsTheLargerNarrowerSide) {
+    Layout wide = computeLayout({1920.0f, 1080.0f, 1.0f, false, false});
+    placeText(wide, room(4.0f));
+    EXPECT_FLOAT_EQ(wide.caption.w, 240.0f);
+    EXPECT_FLOAT_EQ(wide.viewport.x, wide.view.x + 240.0f);
+    EXPECT_FLOAT_EQ(wide.viewport.h, 1080.0f - 30.0f - 28.0f);
+    Layout tall = computeLayout({1024.0f, 768.0f, 1.0f, false, true});
+    ASSERT_LT(tall.view.w, tall.view.h);
+    placeText(tall, room(4.0f));
+    EXPECT_FLOAT_EQ(tall.caption.y, tall.view.y + 30.0f);
+    EXPECT_FLOAT_EQ(tall.viewport.y, tall.caption.y + tall.caption.h);
+    EXPECT_FLOAT_EQ(tall.viewport.w, tall.view.w);
+}
+
+TEST(LayoutText, ATinyViewStillHasAModelViewport) {
+    Layout l = computeLayout({100.0f, 60.0f, 1.0f, false, false});
+    placeText(l, room(20.0f, true));
+    EXPECT_GE(l.viewport.w, 1.0f);
+    EXPECT_GE(l.viewport.h, 1.0f);
+    for (const Rect& half : l.halves) {
+        EXPECT_GE(half.h, 1.0f);
+    }
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 #include "app/figure_export.h"
 #include "app/orbit_clock.h"
 #include "app/sweep_image.h"
+#include "app/frame_speed.h"
 #include "app/viewport_cache.h"
 #include "core/gltf/model_loader.h"
 #include "core/io/file_io.h"
@@ -64,6 +65,7 @@ struct App::Impl {
     ui::ViewportControls viewportControls;
     enum class Panels { All, PlotsOnly, None } panels = Panels::All; // Tab cycles
     bool showHelp = false, presenter = false, caption = false, lightShapes = true;
+    bool frameTime = true; // the frame time while the model changes (T; off in presenter mode until asked)
     float presenterScale = 1.75f;
     std::optional<InputEvent> pressed; // a left press whose release has not come yet
     std::optional<ProbeResult> probe;
@@ -72,7 +74,9 @@ struct App::Impl {
     std::optional<Problem> problem;
     std::string toast;
     float toastLeft = 0.0f;
-    float frameMs = 0.0f;   // what the last frame that drew the model's viewport cost
+    FrameSpeed speed;       // the frame time shown while the model changes
+    double clock = 0.0;     // seconds since the first frame (the sum of the frames' deltaTime)
+    bool interacting = false;   // the last frame belonged to an interaction (a gesture, a moving light)
     bool viewportDrawn = false; // by the last frame
     bool started = false;   // the workspace opened its first preset (in the first frame, App::frame)
     std::array<CachedViewport, 2> renders; // A's and B's, kept between frames
@@ -106,6 +110,7 @@ struct App::Impl {
     void setPresenter(bool on) {
         presenter = on;
         caption = on;
+        frameTime = !on; // the room sees the model, not the lab's timings
         if (on && windowWidth < 1600.0f && panels == Panels::All) {
             panels = Panels::PlotsOnly;
         } else if (!on && panels == Panels::PlotsOnly) {
@@ -151,7 +156,7 @@ ui::ScreenModel App::Impl::screenModel() {
     m.showHelp = &showHelp;
     m.problem = problem ? &*problem : nullptr;
     m.unsavedQuestion = workspace.question() ? &*workspace.question() : nullptr;
-    m.overlay = {name, doc.dirty(), m.a, m.b, workspace.view.mode, frameMs,
+    m.overlay = {name, doc.dirty(), m.a, m.b, workspace.view.mode, frameTime ? speed.shownMs(clock) : std::nullopt,
                  toastLeft > 0.0f ? toast.c_str() : nullptr, caption,
                  probe && probeOpen ? std::optional<glm::vec3>(probe->positionWorld) : std::nullopt};
     m.lightShapes = lightShapes;
@@ -197,6 +202,7 @@ void App::Impl::carryOut(const Request& r) {
     case Command::TogglePresenter: setPresenter(!presenter); break;
     case Command::ToggleCaption: caption = !caption; break;
     case Command::ToggleLightShapes: lightShapes = !lightShapes; break;
+    case Command::ToggleFrameTime: frameTime = !frameTime; break;
     case Command::PresenterLarger:
         if (!presenter) {
             setPresenter(true);
@@ -414,26 +420,27 @@ FrameOutput App::frame(const FrameInput& in) {
         m.setPresenter(true); // --presenter: as if P had been pressed in this window
     }
     m.windowWidth = in.windowWidth;
-    if (m.viewportDrawn) {
-        // The cost of drawing the model (a frame that only redrew the UI would show the UI's,
-        // and would change the overlay, and so the screen, on every frame).
-        m.frameMs = in.lastFrameSeconds * 1000.0f;
+    m.clock += in.deltaTime;
+    if (m.viewportDrawn && m.interacting) {
+        // The cost of a frame that drew the model while something changed it (a frame that only
+        // redrew the UI would show the UI's; the first frames, the start-up's).
+        m.speed.interactionFrame(m.clock, in.lastFrameSeconds);
     }
     Workspace& ws = m.workspace;
 
     //--- layout -> UI -> requests ---------------------------------------------------------
     ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.panels == Impl::Panels::All,
                                            m.panels != Impl::Panels::None, m.panel.tab});
-    const ui::Rect& viewportA = layout.viewportOf(0, ws.view.compare);
-    ws.setViewportAspect(viewportA.h > 0.0f ? viewportA.w / viewportA.h : 1.0f); // what F and a dropped model are framed for
     if (!m.started) {
-        // The first preset opens in the first frame, once the view's shape is known: a glTF model
-        // without a camera is framed for the view it is shown in (a 1024x768 projector's view is
-        // taller than wide; framed for a square, the model's sides were cut off).
+        // The first preset opens in the first frame, once the view's shape is known.
+        ws.setViewportAspect(layout.view.h > 0.0f ? layout.view.w / layout.view.h : 1.0f);
         ws.start(fs::current_path(), m.options.preset);
         m.started = true;
     }
     ui::ScreenModel model = m.screenModel();
+    ui::placeText(layout, ui::measureText(model.overlay, layout.view)); // the text beside the model, never over it
+    const ui::Rect& viewportA = layout.viewportOf(0, ws.view.compare);
+    ws.setViewportAspect(viewportA.h > 0.0f ? viewportA.w / viewportA.h : 1.0f); // what F and a dropped model are framed for
     model.clicks = clicksOf(in.events, m.pressed);
     model.panelInfo.compareStacked = layout.compareStacked;
     ui::ScreenEvents events = ui::drawScreen(layout, model);
@@ -465,7 +472,13 @@ FrameOutput App::frame(const FrameInput& in) {
     bindFramebuffer(in.targetFramebuffer);
     // A toast is removed when its time is up; nothing else on screen changes by itself (a
     // reduced view is drawn at full size by the frame that ends the drag).
-    float redrawIn = m.orbits.redrawIn(sweepDrawn ? 0.0f : m.toastLeft > 0.0f ? m.toastLeft : -1.0f, orbiting, in.deltaTime);
+    m.interacting = events.gesture || events.dragging || orbiting;
+    float hides = m.toastLeft > 0.0f ? m.toastLeft : -1.0f; // the toast, then the frame time, go away by themselves
+    float timeHides = m.interacting ? -1.0f : m.speed.hidesIn(m.clock);
+    if (timeHides >= 0.0f && (hides < 0.0f || timeHides < hides)) {
+        hides = timeHides;
+    }
+    float redrawIn = m.orbits.redrawIn(sweepDrawn ? 0.0f : hides, orbiting, in.deltaTime);
     if (m.options.layoutFile) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }

@@ -27,6 +27,7 @@ constexpr std::array kRows = {
     CommandRow{C::TogglePresenter,    'P',                 kNoModifier,   "Presenter",        "presenter mode (large UI, with the caption)"},
     CommandRow{C::ToggleCaption,      'I',                 kNoModifier,   "Caption",          "show or hide the caption: the preset's name and description"},
     CommandRow{C::ToggleLightShapes,  'L',                 kNoModifier,   "Light shapes",     "show or hide the spot cones and the directional lights' rays"},
+    CommandRow{C::ToggleFrameTime,    'T',                 kNoModifier,   "Frame time",       "show or hide the frame time: the median cost of a frame while the model changes (a drag, a moving light), gone 3 s after; off in presenter mode"},
     CommandRow{C::PresenterLarger,    keys::Equal,         kCtrl,         "Larger",           "presenter scale up (1.5x to 2.5x)",                     true},
     CommandRow{C::PresenterLarger,    keys::KeypadAdd,     kCtrl,         "Larger",           "",                                                      true},
     CommandRow{C::PresenterSmaller,   keys::Minus,         kCtrl,         "Smaller",          "presenter scale down",                                  true},

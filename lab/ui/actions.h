@@ -36,6 +36,7 @@ enum class Command {
     // The window and its tools (the app carries these out)
     ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
     ToggleLightShapes,
+    ToggleFrameTime,
     ToggleFullscreen, Screenshot, FocusOpenPath, PickFile, CopyLink, ToggleShaderEditor, CompileShaders,
     ExportFigures,
     RevertShaders, ToggleSweep, SaveSweep,

@@ -66,6 +66,7 @@ Layout computeLayout(const LayoutInput& in) {
         Layout l = compactLayout(in);
         l.viewport.w = std::max(l.viewport.w, 1.0f);
         l.viewport.h = std::max(l.viewport.h, 1.0f);
+        l.view = l.viewport;
         splitForCompare(l);
         return l;
     }
@@ -90,8 +91,50 @@ Layout computeLayout(const LayoutInput& in) {
     }
     l.viewport.w = std::max(l.viewport.w, 1.0f);
     l.viewport.h = std::max(l.viewport.h, 1.0f);
+    l.view = l.viewport;
     splitForCompare(l);
     return l;
+}
+
+void placeText(Layout& l, const TextRoom& room) {
+    const Rect v = l.view;
+    // At most half the view's height each for the header and the footer strips; the rest is the model's.
+    float header = std::min(room.header, v.h * 0.25f), footer = std::min(room.footer, v.h * 0.25f);
+    l.header = {v.x, v.y, v.w, header};
+    l.footer = {v.x, v.y + v.h - footer, v.w, footer};
+    Rect model{v.x, v.y + header, v.w, std::max(v.h - header - footer, 1.0f)};
+    l.caption = l.captionBand = {};
+    if (room.captionHeight) {
+        // Across the top, under the header...
+        float topW = std::min(room.captionWidth, v.w);
+        float topH = std::min(room.captionHeight(topW), model.h * 0.5f);
+        Rect top{model.x, model.y + topH, model.w, std::max(model.h - topH, 1.0f)};
+        // ... or as a column at the left, when that leaves the model the larger narrower side.
+        float sideW = std::min(room.sideWidth, v.w * 0.4f);
+        float sideH = room.captionHeight(sideW);
+        Rect side{model.x + sideW, model.y, std::max(model.w - sideW, 1.0f), model.h};
+        auto narrower = [](const Rect& r) { return std::min(r.w, r.h); };
+        if (sideH <= model.h && narrower(side) > narrower(top)) {
+            l.caption = {model.x, model.y, sideW, sideH};
+            l.captionBand = {model.x, model.y, sideW, model.h};
+            model = side;
+        } else {
+            l.caption = {model.x, model.y, topW, topH};
+            l.captionBand = {model.x, model.y, model.w, topH};
+            model = top;
+        }
+    }
+    l.viewport = model;
+    splitForCompare(l);
+    l.labels = {};
+    if (room.label > 0.0f) {
+        for (std::size_t i = 0; i < 2; ++i) {
+            Rect& half = l.halves[i];
+            float label = std::min(room.label, half.h * 0.25f);
+            l.labels[i] = {half.x, half.y, half.w, label};
+            half = {half.x, half.y + label, half.w, std::max(half.h - label, 1.0f)};
+        }
+    }
 }
 
 } // namespace lab::ui

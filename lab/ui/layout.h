@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 
 namespace lab::ui {
 
@@ -36,8 +37,16 @@ struct LayoutInput {
 
 struct Layout {
     Rect panel, plots;  // empty when hidden
-    Rect viewport;      // where the model is shown (never empty)
-    std::array<Rect, 2> halves; // in compare mode, the viewport's halves: A's and B's
+    Rect view;          // the 3D view: the model's viewport and the text around it (placeText)
+    Rect viewport;      // where the model is shown (never empty): the view less its text
+    std::array<Rect, 2> halves; // in compare mode, the viewport's halves: A's and B's, under their labels
+    // The view's text, each in a place of its own that the model's viewport does not cover
+    // (empty when there is none): the header strip at the top, the caption (a strip under the
+    // header or a column at the view's left, whichever leaves the model more room), the footer
+    // strip at the bottom (toasts, the frame time) and, in compare mode, each half's label.
+    Rect header, caption, footer;
+    Rect captionBand;           // the caption's strip (across the view) or column (down to the footer)
+    std::array<Rect, 2> labels;
     bool plotsBelow = false;
     bool compareStacked = false; // A above B rather than beside it
     // Compact: the view on top, then the tab row (`tabs`, empty when the control panel is
@@ -54,6 +63,25 @@ struct Layout {
 // (whatever the UI's scale: a projector at presenter scale keeps its columns).
 bool isCompact(float width, float height);
 
+// The view and the model's viewport are the same rectangle until placeText() carves the text's
+// places out of it.
 Layout computeLayout(const LayoutInput& input);
+
+// What the view's text needs (window units; ui/viewport.h measures it with the font).
+struct TextRoom {
+    float header = 0;   // the header strip's height
+    float footer = 0;   // the footer strip's height
+    float label = 0;    // each compare half's label strip (0 outside compare mode)
+    // The caption's height when it is `width` wide (wrapped), and the widths it may take: at most
+    // `captionWidth` across the top, `sideWidth` as a column. No function: no caption.
+    std::function<float(float width)> captionHeight;
+    float captionWidth = 0, sideWidth = 0;
+};
+
+// Carves the text's places out of `layout.view` (see Layout): the header at the top, the
+// footer at the bottom, the caption where the model keeps the larger narrower side, and
+// re-splits the rest, the model's viewport, for compare mode with each half's label on top.
+// The model's viewport keeps at least one unit each way.
+void placeText(Layout& layout, const TextRoom& room);
 
 } // namespace lab::ui

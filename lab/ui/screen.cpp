@@ -126,9 +126,12 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     events.typing = ImGui::GetIO().WantTextInput;
     panels(layout, m, events);
     widgets().set("view", layout.viewport);
+    widgets().set("view.area", layout.view);
     helpWindow(*m.showHelp);
     if (m.probe) {
-        probeWindow(*m.probe, *m.a, *m.probeOpen, layout.viewport.x + 10.0f, layout.viewport.y + ImGui::GetFontSize() * 2.5f);
+        // The readout opens beside the model (over the plots or the panel), not over it.
+        const Rect& beside = layout.plots.w > 0.0f ? layout.plots : layout.panel.w > 0.0f ? layout.panel : layout.footer;
+        probeWindow(*m.probe, *m.a, *m.probeOpen, beside.x + 10.0f, beside.y + ImGui::GetFontSize() * 2.0f);
     }
     shaderEditorWindow(*m.shaderEditor, events.requests, m.lightingSource);
     sweepWindow(*m.sweep, *m.a, events.requests);

@@ -260,41 +260,113 @@ std::string setSummary(const char* name, const Preset& p) {
     return std::string(name) + "shading " + label(p.shading) + "  |  BRDF " + label(p.brdf);
 }
 
+// The strips' text is inset by this much from their edges (window units).
+float inset() { return 0.4f * ImGui::GetFontSize(); }
+
+ImVec2 wrapped(const char* text, float width, float size = 0.0f) {
+    return ImGui::GetFont()->CalcTextSizeA(size > 0.0f ? size : ImGui::GetFontSize(), width, width, text);
+}
+
+// The header: which file and what the model shows (the view mode when it is not the lit image).
+std::string headerText(const OverlayModel& m) {
+    std::string head = m.documentName + (m.dirty ? " *" : "");
+    if (!m.b) { // in compare mode each half's label says it
+        head += "  |  " + setSummary("", *m.a);
+    }
+    if (m.viewMode != ViewMode::Lit) {
+        head += std::string("  |  view ") + toString(m.viewMode);
+    }
+    return head;
+}
+
+// The frame time, and the room it takes at the footer's right while it is shown.
+std::string frameTimeText(float ms) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.1f ms/frame", std::min(ms, 9999.9f));
+    return text;
+}
+float frameTimeRoom(const OverlayModel& m) {
+    return m.frameMs ? ImGui::CalcTextSize(frameTimeText(*m.frameMs).c_str()).x + 2.0f * inset() : 0.0f;
+}
+
+// The preset's name (larger) and description, wrapped: the lecture's story. Its size at `width`.
+ImVec2 captionSize(const Preset& p, float width) {
+    float size = ImGui::GetFontSize(), pad = inset();
+    const std::string name = printable(p.name, true), description = printable(p.description); // from the file
+    float inner = std::max(width - 2 * pad, 1.0f);
+    ImVec2 title = wrapped(name.c_str(), inner, size * 1.35f);
+    ImVec2 text = description.empty() ? ImVec2(0, 0) : wrapped(description.c_str(), inner);
+    return {std::max(title.x, text.x) + 2 * pad, title.y + (description.empty() ? 0.0f : text.y + 0.3f * size) + 2 * pad};
+}
+
+void caption(const Preset& p, const Rect& r, ImDrawList* dl) {
+    ImFont* font = ImGui::GetFont();
+    float size = ImGui::GetFontSize(), pad = inset(), inner = std::max(r.w - 2 * pad, 1.0f);
+    const std::string name = printable(p.name, true), description = printable(p.description);
+    ImVec2 title = wrapped(name.c_str(), inner, size * 1.35f);
+    dl->AddText(font, size * 1.35f, ImVec2(r.x + pad, r.y + pad), IM_COL32(255, 255, 255, 255), name.c_str(), nullptr, inner);
+    if (!description.empty()) {
+        dl->AddText(font, size, ImVec2(r.x + pad, r.y + pad + title.y + 0.3f * size), IM_COL32(225, 225, 225, 255),
+                    description.c_str(), nullptr, inner);
+    }
+    ImVec2 used = captionSize(p, r.w);
+    widgets().set("view.caption", {r.x, r.y, std::min(used.x, r.w), std::min(used.y, r.h)});
+}
+
+constexpr ImU32 kStrip = IM_COL32(30, 32, 40, 255); // the text's places: darker than the panels, apart from the model
+
+void strip(const Rect& r, ImDrawList* dl) {
+    if (r.w > 0.0f && r.h > 0.0f) {
+        dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h), kStrip);
+    }
+}
+
+void header(const OverlayModel& m, const Rect& r, ImDrawList* dl) {
+    std::string head = headerText(m);
+    float pad = inset(), width = std::max(r.w - 2 * pad, 1.0f);
+    ImVec2 size = wrapped(head.c_str(), width);
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(r.x + pad, r.y + pad), IM_COL32(255, 255, 255, 215),
+                head.c_str(), nullptr, width);
+    widgets().set("view.header", {r.x + pad, r.y + pad, size.x, size.y});
+}
+
+// The toast at the footer's left, wrapped to its width; the frame time at its right while shown.
+void footer(const OverlayModel& m, const Rect& r, ImDrawList* dl) {
+    float pad = inset();
+    if (m.frameMs) {
+        std::string text = frameTimeText(*m.frameMs);
+        ImVec2 size = ImGui::CalcTextSize(text.c_str());
+        ImVec2 at(r.x + r.w - size.x - pad, r.y + pad);
+        dl->AddText(at, IM_COL32(255, 255, 255, 200), text.c_str());
+        widgets().set("view.frame-time", {at.x, at.y, size.x, size.y});
+    }
+    if (m.toast) {
+        float width = std::max(r.w - 2 * pad - frameTimeRoom(m), 1.0f);
+        ImVec2 size = wrapped(m.toast, width);
+        dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(r.x + pad, r.y + pad), IM_COL32(255, 255, 255, 255), m.toast,
+                    nullptr, width);
+        widgets().set("view.toast", {r.x + pad, r.y + pad, size.x, size.y});
+    }
+}
+
 void compareLabels(const OverlayModel& m, const Layout& layout, ImDrawList* dl) {
-    const Rect &a = layout.halves[0], &b = layout.halves[1];
+    const Rect& b = layout.halves[1];
     ImVec2 end = layout.compareStacked ? ImVec2(b.x + b.w, b.y) : ImVec2(b.x, b.y + b.h);
     dl->AddLine(ImVec2(b.x, b.y), end, IM_COL32(255, 255, 255, 160), 2.0f);
-    float line = ImGui::GetFontSize() * 1.5f;
-    dl->AddText(ImVec2(b.x + 8, b.y + b.h - line), IM_COL32(230, 90, 220, 255), setSummary("B: ", *m.b).c_str());
-    dl->AddText(ImVec2(a.x + 8, a.y + a.h - line), IM_COL32(255, 255, 255, 230), setSummary("A: ", *m.a).c_str());
-}
-
-void toast(const char* text, const Rect& v, ImDrawList* dl) {
-    ImVec2 size = ImGui::CalcTextSize(text);
-    ImVec2 at(v.x + (v.w - size.x) * 0.5f, v.y + v.h - size.y * 3.0f);
-    dl->AddRectFilled(ImVec2(at.x - 8, at.y - 4), ImVec2(at.x + size.x + 8, at.y + size.y + 4), IM_COL32(0, 0, 0, 180), 4.0f);
-    dl->AddText(at, IM_COL32(255, 255, 255, 255), text);
-}
-
-// The preset's name (larger) and description, wrapped, on a dark band: the lecture's story.
-// Returns the height used.
-float caption(const Preset& p, ImVec2 at, float width, ImDrawList* dl) {
-    ImFont* font = ImGui::GetFont();
-    float size = ImGui::GetFontSize(), big = size * 1.35f, pad = 0.5f * size;
-    width -= 2 * pad; // the text's own width inside the band
-    const std::string name = printable(p.name, true), description = printable(p.description); // from the file
-    ImVec2 title = font->CalcTextSizeA(big, width, width, name.c_str());
-    ImVec2 text = description.empty() ? ImVec2(0, 0) : font->CalcTextSizeA(size, width, width, description.c_str());
-    float height = title.y + (description.empty() ? 0.0f : text.y + 0.3f * size) + 2 * pad;
-    float w = std::max(title.x, text.x) + 2 * pad;
-    dl->AddRectFilled(at, ImVec2(at.x + w, at.y + height), IM_COL32(0, 0, 0, 170), 4.0f);
-    dl->AddText(font, big, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 255, 255, 255), name.c_str(), nullptr, width);
-    if (!description.empty()) {
-        dl->AddText(font, size, ImVec2(at.x + pad, at.y + pad + title.y + 0.3f * size), IM_COL32(225, 225, 225, 255),
-                    description.c_str(), nullptr, width);
+    const char* names[2] = {"label-a", "label-b"};
+    const Preset* sets[2] = {m.a, m.b};
+    const ImU32 colors[2] = {IM_COL32(255, 255, 255, 230), IM_COL32(230, 90, 220, 255)};
+    for (std::size_t i = 0; i < 2; ++i) {
+        const Rect& r = layout.labels[i];
+        strip(r, dl);
+        std::string text = setSummary(i == 0 ? "A: " : "B: ", *sets[i]);
+        float pad = inset();
+        ImVec2 size = ImGui::CalcTextSize(text.c_str());
+        dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h), true);
+        dl->AddText(ImVec2(r.x + pad, r.y + pad), colors[i], text.c_str());
+        dl->PopClipRect();
+        widgets().set(std::string("view.") + names[i], {r.x + pad, r.y + pad, std::min(size.x, r.w - pad), size.y});
     }
-    widgets().set("view.caption", {at.x, at.y, w, height});
-    return height;
 }
 
 // A ring and a cross at the probed point.
@@ -304,52 +376,50 @@ void probeMarker(const Preset& scene, const glm::vec3& world, const Rect& r, ImD
         return;
     }
     float s = 8.0f * uiUnit(), w = 2.0f * uiUnit();
+    dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h), true); // on the model, never on the text
     dl->AddCircle(*at, s, IM_COL32(0, 0, 0, 200), 0, w + 2.0f);
     dl->AddCircle(*at, s, IM_COL32(255, 255, 80, 255), 0, w);
     dl->AddLine(ImVec2(at->x - 2 * s, at->y), ImVec2(at->x - s, at->y), IM_COL32(255, 255, 80, 255), w);
     dl->AddLine(ImVec2(at->x + s, at->y), ImVec2(at->x + 2 * s, at->y), IM_COL32(255, 255, 80, 255), w);
     dl->AddLine(ImVec2(at->x, at->y - 2 * s), ImVec2(at->x, at->y - s), IM_COL32(255, 255, 80, 255), w);
     dl->AddLine(ImVec2(at->x, at->y + s), ImVec2(at->x, at->y + 2 * s), IM_COL32(255, 255, 80, 255), w);
+    dl->PopClipRect();
     widgets().set("view.probe-marker", {at->x - s, at->y - s, 2 * s, 2 * s});
-}
-
-// The header: which file, then what the model shows; the frame time at the right. Returns the
-// height used.
-float header(const OverlayModel& m, const Rect& v, ImDrawList* dl) {
-    char text[160];
-    std::snprintf(text, sizeof text, "%.1f ms", m.frameMs);
-    ImVec2 size = ImGui::CalcTextSize(text);
-    dl->AddText(ImVec2(v.x + v.w - size.x - 8, v.y + 6), IM_COL32(255, 255, 255, 200), text);
-    widgets().set("view.frame-time", {v.x + v.w - size.x - 8, v.y + 6, size.x, size.y});
-    std::string head = m.documentName + (m.dirty ? " *" : "") + "  |  " + setSummary("", *m.a);
-    float wrap = std::max(v.w - size.x - 32.0f, 40.0f);
-    ImVec2 headSize = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), wrap, wrap, head.c_str());
-    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(v.x + 8, v.y + 6), IM_COL32(255, 255, 255, 200), head.c_str(),
-                nullptr, wrap);
-    widgets().set("view.header", {v.x + 8, v.y + 6, headSize.x, headSize.y});
-    return 6.0f + headSize.y + 0.3f * ImGui::GetFontSize();
 }
 
 } // namespace
 
+TextRoom measureText(const OverlayModel& m, const Rect& view) {
+    TextRoom room;
+    float line = ImGui::GetFontSize(), pad = inset();
+    room.header = wrapped(headerText(m).c_str(), std::max(view.w - 2 * pad, 1.0f)).y + 2 * pad;
+    float toastLines = m.toast ? wrapped(m.toast, std::max(view.w - 2 * pad - frameTimeRoom(m), 1.0f)).y : line;
+    room.footer = std::max(line, toastLines) + 2 * pad;
+    room.label = m.b ? line + 2 * pad : 0.0f;
+    if (m.caption) {
+        const Preset* p = m.a;
+        room.captionHeight = [p](float width) { return captionSize(*p, width).y; };
+        room.captionWidth = line * 36.0f;
+        room.sideWidth = line * 18.0f;
+    }
+    return room;
+}
+
 void viewOverlay(const OverlayModel& m, const Layout& layout) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    const Rect& v = layout.viewport;
-    float y = v.y + header(m, v, dl);
-    if (m.caption) {
-        y += caption(*m.a, ImVec2(v.x + 8, y), std::min(v.w - 16.0f, ImGui::GetFontSize() * 36.0f), dl) + 6.0f;
+    for (const Rect* r : {&layout.header, &layout.captionBand, &layout.footer}) {
+        strip(*r, dl);
     }
-    if (m.viewMode != ViewMode::Lit) {
-        dl->AddText(ImVec2(v.x + 8, y), IM_COL32(255, 220, 120, 230), toString(m.viewMode));
+    header(m, layout.header, dl);
+    if (m.caption && layout.caption.w > 0.0f) {
+        caption(*m.a, layout.caption, dl);
     }
+    footer(m, layout.footer, dl);
     if (m.probePoint) {
-        probeMarker(*m.a, *m.probePoint, m.b ? layout.halves[0] : v, dl);
+        probeMarker(*m.a, *m.probePoint, m.b ? layout.halves[0] : layout.viewport, dl);
     }
     if (m.b) {
         compareLabels(m, layout, dl);
-    }
-    if (m.toast) {
-        toast(m.toast, v, dl);
     }
 }
 

@@ -4,10 +4,12 @@
 // like the panel edits the rest (left drag orbits, right or middle drag pans, the wheel zooms, a drag on a
 // light marker moves that light in the plane parallel to the image), and reports a click that
 // did not move as a probe. lightMarkers() draws the lights: numbered markers (at the view's edge
-// for lights outside it), spot cones and directional lights' rays. viewOverlay() draws the
-// header, the caption, the frame time, the view mode, the compare labels, the probe's marker
-// and the toast. All of it goes under ImGui's windows and dialogs (the background draw list),
-// over the model's viewport. ImGui only: the model's viewport itself is drawn by the renderer.
+// for lights outside it), spot cones and directional lights' rays, clipped to the model's
+// viewport. viewOverlay() draws the header (file, shading, BRDF, view mode), the caption, the
+// footer (toast, frame time) and the compare labels, each in its own strip beside the model
+// (ui/layout.h placeText), and the probe's marker on the model. All of it goes under ImGui's
+// windows and dialogs (the background draw list). ImGui only: the model's viewport itself is
+// drawn by the renderer.
 #pragma once
 
 #include "core/scene/light_orbit.h"
@@ -55,12 +57,18 @@ struct OverlayModel {
     const Preset* a = nullptr;
     const Preset* b = nullptr; // compare mode's B, else nullptr
     ViewMode viewMode = ViewMode::Lit;
-    float frameMs = 0;
-    const char* toast = nullptr;               // a short message at the bottom of the view, else nullptr
-    bool caption = false;                      // the preset's name and description over the view
+    std::optional<float> frameMs;              // what a frame costs while the model changes (app/frame_speed.h), if shown
+    const char* toast = nullptr;               // a short message in the footer, else nullptr
+    bool caption = false;                      // the preset's name and description beside the model
     std::optional<glm::vec3> probePoint;       // the probed point (world), marked while the probe is open
 };
 
+// What the overlay's text needs, measured with the current font: placeText (ui/layout.h) gives
+// each piece its place around the model's viewport.
+TextRoom measureText(const OverlayModel& model, const Rect& view);
+
+// The text in the places placeText gave it, on strips of their own, and the probe's marker on the
+// model. Nothing of it is drawn over the model's viewport but the marker.
 void viewOverlay(const OverlayModel& model, const Layout& layout);
 
 } // namespace lab::ui
