@@ -2,6 +2,7 @@
 #include "ui/layout.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lab::ui {
 
@@ -47,12 +48,14 @@ Layout compactLayout(const LayoutInput& in) {
 void splitForCompare(Layout& l) {
     const Rect& v = l.viewport;
     l.compareStacked = v.w * 0.5f < v.h * 0.8f;
-    if (l.compareStacked) {
-        l.halves[0] = {v.x, v.y, v.w, v.h * 0.5f};
-        l.halves[1] = {v.x, v.y + v.h * 0.5f, v.w, v.h * 0.5f};
+    if (l.compareStacked) { // (whole units: the halves meet on a pixel's edge)
+        float h = std::floor(v.h * 0.5f);
+        l.halves[0] = {v.x, v.y, v.w, h};
+        l.halves[1] = {v.x, v.y + h, v.w, v.h - h};
     } else {
-        l.halves[0] = {v.x, v.y, v.w * 0.5f, v.h};
-        l.halves[1] = {v.x + v.w * 0.5f, v.y, v.w * 0.5f, v.h};
+        float w = std::floor(v.w * 0.5f);
+        l.halves[0] = {v.x, v.y, w, v.h};
+        l.halves[1] = {v.x + w, v.y, v.w - w, v.h};
     }
 }
 
@@ -99,7 +102,8 @@ Layout computeLayout(const LayoutInput& in) {
 void placeText(Layout& l, const TextRoom& room) {
     const Rect v = l.view;
     // At most half the view's height each for the header and the footer strips; the rest is the model's.
-    float header = std::min(room.header, v.h * 0.25f), footer = std::min(room.footer, v.h * 0.25f);
+    // Whole units, so that the strips and the model's viewport meet on a pixel's edge.
+    float header = std::ceil(std::min(room.header, v.h * 0.25f)), footer = std::ceil(std::min(room.footer, v.h * 0.25f));
     l.header = {v.x, v.y, v.w, header};
     l.footer = {v.x, v.y + v.h - footer, v.w, footer};
     Rect model{v.x, v.y + header, v.w, std::max(v.h - header - footer, 1.0f)};
@@ -107,10 +111,10 @@ void placeText(Layout& l, const TextRoom& room) {
     if (room.captionHeight) {
         // Across the top, under the header...
         float topW = std::min(room.captionWidth, v.w);
-        float topH = std::min(room.captionHeight(topW), model.h * 0.5f);
+        float topH = std::ceil(std::min(room.captionHeight(topW), model.h * 0.5f));
         Rect top{model.x, model.y + topH, model.w, std::max(model.h - topH, 1.0f)};
         // ... or as a column at the left, when that leaves the model the larger narrower side.
-        float sideW = std::min(room.sideWidth, v.w * 0.4f);
+        float sideW = std::ceil(std::min(room.sideWidth, v.w * 0.4f));
         float sideH = room.captionHeight(sideW);
         Rect side{model.x + sideW, model.y, std::max(model.w - sideW, 1.0f), model.h};
         auto narrower = [](const Rect& r) { return std::min(r.w, r.h); };
@@ -130,7 +134,7 @@ void placeText(Layout& l, const TextRoom& room) {
     if (room.label > 0.0f) {
         for (std::size_t i = 0; i < 2; ++i) {
             Rect& half = l.halves[i];
-            float label = std::min(room.label, half.h * 0.25f);
+            float label = std::ceil(std::min(room.label, half.h * 0.25f));
             l.labels[i] = {half.x, half.y, half.w, label};
             half = {half.x, half.y + label, half.w, std::max(half.h - label, 1.0f)};
         }

@@ -127,6 +127,10 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     panels(layout, m, events);
     widgets().set("view", layout.viewport);
     widgets().set("view.area", layout.view);
+    if (m.b) {
+        widgets().set("view.a", layout.halves[0]);
+        widgets().set("view.b", layout.halves[1]);
+    }
     helpWindow(*m.showHelp);
     if (m.probe) {
         // The readout opens beside the model (over the plots or the panel), not over it.

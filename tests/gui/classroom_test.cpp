@@ -6,6 +6,9 @@
 #include "gui_harness.h"
 
 #include <cstdlib>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace lab::test {
 namespace {
@@ -71,6 +74,96 @@ TEST(GuiFit, TheWindowAndEveryPlotFitTheScreenNormalAndInPresenterMode) {
     }
     ASSERT_TRUE(lab.has("panel") && lab.has("plots")) << "Tab should bring every panel back";
     expectEverythingFits(lab, screenW, screenH, "presenter 2.5x, all panels");
+}
+
+bool intersects(const Rect& a, const Rect& b) {
+    return a.w > 0 && a.h > 0 && b.w > 0 && b.h > 0 && a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+}
+
+std::string str(const Rect& r) {
+    return "(" + std::to_string(r.x) + " " + std::to_string(r.y) + " " + std::to_string(r.w) + " " + std::to_string(r.h) + ")";
+}
+
+// The view's text (header, caption, toast, frame time, compare labels) lies inside the view,
+// over neither the model's viewport (each half's, in compare mode) nor another piece of text, and
+// no light marker covers any of it. The model itself (F12's picture of the model's viewport,
+// outside compare mode) touches none of its viewport's borders: it is whole.
+void expectModelWholeAndUncovered(Lab& lab, const std::string& mode) {
+    auto rects = lab.layout();
+    ASSERT_TRUE(rects.count("view") && rects.count("view.area") && rects.count("view.header")) << mode;
+    const Rect area = rects["view.area"];
+    std::vector<Rect> models;
+    for (const char* name : {"view.a", "view.b"}) {
+        if (rects.count(name)) {
+            models.push_back(rects[name]);
+        }
+    }
+    if (models.empty()) {
+        models.push_back(rects["view"]);
+    }
+    std::vector<std::pair<std::string, Rect>> text;
+    for (const char* name : {"view.header", "view.caption", "view.toast", "view.frame-time", "view.label-a", "view.label-b"}) {
+        if (rects.count(name)) {
+            text.emplace_back(name, rects[name]);
+        }
+    }
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto& [name, r] = text[i];
+        EXPECT_TRUE(inside(r, area)) << mode << ": " << name << " " << str(r) << " leaves the view " << str(area);
+        for (const Rect& model : models) {
+            EXPECT_FALSE(intersects(r, model)) << mode << ": " << name << " " << str(r) << " over the model's viewport " << str(model);
+        }
+        for (std::size_t j = i + 1; j < text.size(); ++j) {
+            EXPECT_FALSE(intersects(r, text[j].second)) << mode << ": " << name << " over " << text[j].first;
+        }
+        for (const auto& [marker, m] : rects) {
+            if (marker.rfind("view.light", 0) == 0) {
+                EXPECT_FALSE(intersects(r, m)) << mode << ": " << marker << " " << str(m) << " over " << name;
+            }
+        }
+    }
+    if (models.size() == 1) {
+        Image shot = lab.viewShot();
+        ASSERT_GT(shot.width, 2) << mode;
+        const std::uint8_t* bg = &shot.rgb[0]; // a corner: the background
+        bool touched = false;
+        int modelPixels = 0;
+        for (int y = 0; y < shot.height; ++y) {
+            for (int x = 0; x < shot.width; ++x) {
+                const std::uint8_t* p = &shot.rgb[3 * static_cast<std::size_t>(y * shot.width + x)];
+                if (std::abs(p[0] - bg[0]) + std::abs(p[1] - bg[1]) + std::abs(p[2] - bg[2]) > 6) {
+                    ++modelPixels;
+                    touched = touched || x == 0 || y == 0 || x == shot.width - 1 || y == shot.height - 1;
+                }
+            }
+        }
+        EXPECT_GT(modelPixels, shot.width * shot.height / 20) << mode << ": the model should fill a fair share of its viewport";
+        EXPECT_FALSE(touched) << mode << ": the model is cut at its viewport's border (" << shot.width << "x" << shot.height << ")";
+    }
+}
+
+// The first seconds a class sees, on each projector's screen: the model whole and no text over
+// it — normal (with the start's "Opened" message), in presenter mode (the caption), and in
+// compare mode; for a sphere with the default camera and for a glTF model framed by the lab.
+TEST(GuiFit, TheModelIsWholeAndNoTextCoversItNormalPresenterAndCompare) {
+    for (const char* name : {"05-full-phong", "24-gltf-trefoil"}) {
+        START_LAB(lab, "--preset", preset(name));
+        lab.settle();
+        ASSERT_TRUE(lab.has("view.toast")) << "the start's message is shown";
+        expectModelWholeAndUncovered(lab, std::string(name) + " normal");
+        Rect view = lab.widget("view");
+        lab.moveTo(view.cx(), view.cy());
+        lab.press("p");
+        lab.settle();
+        ASSERT_TRUE(lab.has("view.caption")) << "presenter mode shows the caption";
+        expectModelWholeAndUncovered(lab, std::string(name) + " presenter");
+        lab.press("c");
+        lab.settle();
+        expectModelWholeAndUncovered(lab, std::string(name) + " presenter, compare");
+        lab.press("p");
+        lab.settle();
+        expectModelWholeAndUncovered(lab, std::string(name) + " compare");
+    }
 }
 
 TEST(GuiClassroom, TheCaptionTellsThePresetsStoryAndFollowsTheSteps) {
