@@ -1,6 +1,7 @@
 // plot_panel_test.cpp — the plots panel, drawn on the CPU (an ImGui context without a renderer)
 // into the window the app gives it, at every window size and UI scale a class may use: nothing
 // makes the window scroll, and every canvas lies inside the window.
+#include "cpu_imgui.h"
 #include "ui/layout.h"
 #include "ui/plots.h"
 #include "ui/widget_map.h"
@@ -19,40 +20,6 @@
 
 namespace lab {
 namespace {
-
-// An ImGui context as the lab's host sets it up at scale `s` (DejaVu Sans at 15·s when installed,
-// the built-in font at 13·s otherwise; every style size scaled), its font atlas built on the CPU.
-class CpuImGui {
-public:
-    explicit CpuImGui(float s) : previous_(ImGui::GetCurrentContext()), context_(ImGui::CreateContext()) {
-        ImGui::SetCurrentContext(context_);
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DeltaTime = 1.0f / 60.0f;
-        ImGui::StyleColorsDark();
-        ImGui::GetStyle().ScaleAllSizes(s);
-        const char* dejavu = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(dejavu, ec) || !io.Fonts->AddFontFromFileTTF(dejavu, 15.0f * s)) {
-            ImFontConfig config;
-            config.SizePixels = 13.0f * s;
-            io.Fonts->AddFontDefault(&config);
-        }
-        unsigned char* pixels;
-        int w, h;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    }
-    ~CpuImGui() {
-        ImGui::DestroyContext(context_);
-        ImGui::SetCurrentContext(previous_);
-    }
-    CpuImGui(const CpuImGui&) = delete;
-    CpuImGui& operator=(const CpuImGui&) = delete;
-
-private:
-    ImGuiContext* previous_;
-    ImGuiContext* context_;
-};
 
 struct Outcome {
     float scrollX = 0, scrollY = 0;

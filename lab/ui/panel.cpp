@@ -112,9 +112,13 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
     if (ImGui::BeginListBox("##presets", ImVec2(-1, height))) {
         for (std::size_t i = 0; i < files.size(); ++i) {
             bool selected = static_cast<int>(i) == info.currentPreset;
-            // The file's name as a label (escaped: dropped files land in this list), its place as the ID.
-            std::string label = printable(files[i].stem().string(), true) + "###preset" + std::to_string(i);
-            if (ImGui::Selectable(label.c_str(), selected)) {
+            // The row's place is its ID; the file's name (escaped: dropped files land in this list) is
+            // drawn as it is, not as a label, where "##" would hide the rest of it.
+            std::string id = "###preset" + std::to_string(i);
+            bool clicked = ImGui::Selectable(id.c_str(), selected);
+            std::string name = printable(files[i].stem().string(), true);
+            ImGui::GetWindowDrawList()->AddText(ImGui::GetItemRectMin(), ImGui::GetColorU32(ImGuiCol_Text), name.c_str());
+            if (clicked) {
                 requests.push_back({Command::OpenPresetAt, {}, static_cast<int>(i)});
             }
             if (selected && (ImGui::IsWindowAppearing() || state.listScrolledTo != info.currentPreset)) {
@@ -145,6 +149,9 @@ void materialSection(Preset& p) {
     mark("material.diffuse");
     colorEdit("specular", p.material.specular);
     mark("material.specular");
+    if (p.brdf == BrdfModel::CookTorrance) {
+        return; // the exponent n has no effect there (the roughness m shapes the lobe), as m has none for Phong
+    }
     limitedSlider("shininess", p.material.shininess, limits::kShininess, "%.1f", ImGuiSliderFlags_Logarithmic);
     mark("material.shininess");
     helpMarker("The specular exponent n (logarithmic slider). Ctrl+click to type any value > 0.");
