@@ -3,8 +3,9 @@
 // Real files written at test time: a box as .gltf + .bin, 0.01, 1 and 1000 units across, in a
 // preset with no `camera` (and no `lights`) key, loaded with loadPreset and rendered with the
 // OffscreenRenderer that `lab render` and `lab check` use. The model must cover a similar share
-// of each image and touch no border; an explicit camera, a `lights` key and built-in models are
-// left as they are. The unit tests of framedCamera itself are in camera_test.cpp.
+// of each image and touch no border; a long box and the trefoil knot fill 80–90% of the narrower
+// side from a three-quarter view in square, wide and tall images; an explicit camera, a `lights`
+// key and built-in models are left as they are. The unit tests of framedCamera itself are in camera_test.cpp.
 #include "core/gltf/mesh_cache.h"
 #include "core/gltf/model_loader.h"
 #include "core/scene/camera.h"
@@ -22,9 +23,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace lab {
 namespace {
@@ -33,12 +36,14 @@ namespace fs = std::filesystem;
 
 constexpr int kSize = 96;
 
-// An axis-aligned box `size` units long (x), 0.6 · size high and 0.4 · size deep, centred on
-// size · (3, -2, 1), as `name`.gltf with its buffer in `name`.bin (positions and indices, no
-// normals: the lab computes them). Counter-clockwise faces seen from outside.
-void writeBox(const fs::path& folder, const std::string& name, float size) {
+// An axis-aligned box `size` · `proportions` across (by default `size` units long (x), 0.6 · size
+// high and 0.4 · size deep), centred on size · (3, -2, 1), as `name`.gltf with its buffer in
+// `name`.bin (positions and indices, no normals: the lab computes them). Counter-clockwise faces
+// seen from outside.
+void writeBox(const fs::path& folder, const std::string& name, float size,
+              glm::vec3 proportions = {1.0f, 0.6f, 0.4f}) {
     const glm::vec3 center = size * glm::vec3(3.0f, -2.0f, 1.0f);
-    const glm::vec3 half = size * glm::vec3(0.5f, 0.3f, 0.2f);
+    const glm::vec3 half = size * proportions * 0.5f;
     std::array<glm::vec3, 8> corners;
     for (int i = 0; i < 8; ++i) { // bit 0: +x, bit 1: +y, bit 2: +z
         corners[static_cast<std::size_t>(i)] =
@@ -94,11 +99,16 @@ Preset framed(const fs::path& file) {
     return p.preset;
 }
 
-// What an image of a preset shows: the share of pixels that are not the background, and
-// whether any of them lies on the border.
+// What an image of a preset shows: the share of pixels that are not the background, whether any
+// of them lies on the border, and the box around them (in pixels, inclusive).
 struct Coverage {
     double share = 0.0;
     bool onBorder = false;
+    glm::ivec2 min{INT32_MAX}, max{-1};
+    // The larger dimension of the model's pixels over the image's narrower side.
+    double fill(const Image& image) const {
+        return static_cast<double>(std::max(max.x - min.x + 1, max.y - min.y + 1)) / std::min(image.width, image.height);
+    }
 };
 
 Coverage coverage(const Image& image, glm::vec3 background) {
@@ -111,6 +121,8 @@ Coverage coverage(const Image& image, glm::vec3 background) {
             glm::ivec3 d = glm::abs(glm::ivec3(p[0], p[1], p[2]) - bg);
             if (std::max({d.x, d.y, d.z}) > 2) {
                 ++model;
+                c.min = glm::min(c.min, glm::ivec2(x, y));
+                c.max = glm::max(c.max, glm::ivec2(x, y));
                 c.onBorder = c.onBorder || x == 0 || y == 0 || x == image.width - 1 || y == image.height - 1;
             }
         }
@@ -194,6 +206,40 @@ TEST_F(Framing, AShippedPresetsModelIsWholeInTallAndWideImages) {
     }
 }
 
+// Issue 25: framed as model viewers do. A model without a camera is seen from above its front,
+// turned towards +x (core/scene/camera.h threeQuarterDirection), and its pixels span 80–90% of the
+// image's narrower side in their larger dimension (the projected box spans 85%; a model fills its
+// box's projection less or more), whole and centred in every shape of image: a long box (10 × 1 ×
+// 1, unturned, so that its box is itself) and the shipped trefoil knot.
+TEST_F(Framing, AModelWithoutACameraFillsTheNarrowerSideFromAThreeQuarterView) {
+    ASSERT_NE(renderer_, nullptr);
+    writeBox(dir.path(), "long", 10.0f, {1.0f, 0.1f, 0.1f});
+    fs::copy_file(fs::path(LAB_SOURCE_DIR) / "presets" / "models" / "trefoil.glb", dir.path() / "trefoil.glb");
+    for (const char* model : {"long.gltf", "trefoil.glb"}) {
+        fs::path file = dir.path() / (std::string(model) + ".json");
+        writeText(file, R"({"format": "lighting-lab-preset", "version": 1, "model": {"gltf": ")" + std::string(model) + R"("}})");
+        Camera camera = framed(file).camera;
+        glm::vec3 d = glm::normalize(camera.eye - camera.target);
+        float elevation = glm::degrees(std::asin(d.y)), azimuth = glm::degrees(std::atan2(d.x, d.z));
+        EXPECT_TRUE(elevation >= 20.0f && elevation <= 30.0f) << model << ": " << elevation << "° above the horizontal";
+        EXPECT_TRUE(azimuth >= 30.0f && azimuth <= 40.0f) << model << ": " << azimuth << "° from +z towards +x";
+        for (auto [w, h] : {std::pair{160, 160}, std::pair{256, 144}, std::pair{144, 256}, std::pair{256, 128}}) {
+            SCOPED_TRACE(std::string(model) + " at " + std::to_string(w) + "x" + std::to_string(h));
+            Diagnostics diagnostics;
+            std::optional<Image> image = renderer_->render(load(file), w, h, diagnostics);
+            ASSERT_TRUE(image) << toString(diagnostics);
+            Coverage c = coverage(*image, Preset{}.background);
+            EXPECT_FALSE(c.onBorder);
+            EXPECT_GE(c.fill(*image), 0.80);
+            EXPECT_LE(c.fill(*image), 0.90);
+            // Centred: the margins either side differ by a few pixels at most.
+            EXPECT_NEAR(c.min.x, w - 1 - c.max.x, 0.03 * std::min(w, h)) << "left and right margins";
+            EXPECT_NEAR(c.min.y, h - 1 - c.max.y, 0.03 * std::min(w, h)) << "top and bottom margins";
+            std::printf("[ fill     ] %s at %dx%d: %.3f\n", model, w, h, c.fill(*image));
+        }
+    }
+}
+
 //----------------------------------------------------------------------------------------
 // What the preset holds after framing (no GL)
 //----------------------------------------------------------------------------------------
@@ -240,8 +286,13 @@ TEST(FramingPreset, WithoutLightsTheDefaultLightStandsRelativeToTheBounds) {
     LightDesc rest = p.lights[0];
     rest.position = LightDesc{}.position;
     EXPECT_EQ(rest, LightDesc{}) << "only the position moves";
-    EXPECT_EQ(p.camera, framedCamera(Camera{}, *bounds)) << "the default camera's direction, aspect 1";
-    EXPECT_LT(glm::distance(p.camera.target, bounds->center), 1e-3f * bounds->radius);
+    std::optional<std::vector<glm::vec3>> drawn = drawnPositions(*mesh, p.model);
+    ASSERT_TRUE(drawn);
+    EXPECT_EQ(p.camera, framedCamera(Camera{}, *drawn, threeQuarterDirection())) << "the default camera, from three-quarters";
+    // The target lies across the image plane from the box's centre (centring its projection), at its depth.
+    glm::vec3 forward = glm::normalize(p.camera.target - p.camera.eye);
+    EXPECT_LT(std::abs(glm::dot(p.camera.target - bounds->center, forward)), 1e-3f * bounds->radius);
+    EXPECT_LT(glm::distance(p.camera.target, bounds->center), bounds->radius);
 
     // A `lights` key is kept as it is.
     Preset lit = framed(writePreset(dir.path(), "lit", "box.gltf", 1000.0f,
@@ -252,9 +303,10 @@ TEST(FramingPreset, WithoutLightsTheDefaultLightStandsRelativeToTheBounds) {
     EXPECT_EQ(lit.camera, p.camera) << "framed all the same";
 }
 
-TEST(FramingPreset, DrawnBoundsAreTheSphereOfTheTransformedPositions) {
+TEST(FramingPreset, DrawnPositionsAndBoundsAreTheTransformedPositionsAndTheirSphere) {
     Mesh m;
     EXPECT_FALSE(drawnBounds(m, Model{})) << "nothing to frame";
+    EXPECT_FALSE(drawnPositions(m, Model{}));
     m.positions = {{1.0f, 2.0f, 3.0f}, {3.0f, 2.0f, 1.0f}, {2.0f, 2.0f, 2.0f}};
     Model model;
     model.scale = glm::vec3(2.0f);
@@ -263,8 +315,12 @@ TEST(FramingPreset, DrawnBoundsAreTheSphereOfTheTransformedPositions) {
     ASSERT_TRUE(s);
     EXPECT_EQ(s->center, glm::vec3(4.0f, 4.0f, -6.0f));
     EXPECT_FLOAT_EQ(s->radius, 2.0f * std::sqrt(2.0f));
+    std::optional<std::vector<glm::vec3>> drawn = drawnPositions(m, model);
+    ASSERT_TRUE(drawn);
+    EXPECT_EQ(*drawn, (std::vector<glm::vec3>{{2.0f, 4.0f, -4.0f}, {6.0f, 4.0f, -8.0f}, {4.0f, 4.0f, -6.0f}}));
     m.positions = {{3e38f, 0.0f, 0.0f}, {-3e38f, 0.0f, 0.0f}}; // beyond float once scaled
     EXPECT_FALSE(drawnBounds(m, model));
+    EXPECT_FALSE(drawnPositions(m, model));
 }
 
 TEST(FramingPreset, BuiltInModelsAreNeverFramed) {

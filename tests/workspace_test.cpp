@@ -11,6 +11,17 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
 namespace lab {
 namespace {
 
@@ -259,43 +270,116 @@ TEST(Workspace, ADroppedModelInsideTheFolderBecomesTheModelAndOneOutsideIsRefuse
     EXPECT_EQ(f.ws.takeProblems().size(), 1u);
 }
 
-// Framing (README: Presets, Framing): a dropped model is framed at the view's aspect in the same
-// undo step as the model change; F frames the current model; a preset without a camera opens framed.
+// Framing (README: Presets, Framing): a dropped model is framed from three-quarters and its lights
+// carried to it in the same undo step as the model change; F frames the current model along the
+// current direction; a preset without a camera opens framed.
+
+// An axis-aligned box from `lo` to `hi` as `name`.gltf with its buffer in `name`.bin.
+void writeBox(const fs::path& folder, const std::string& name, glm::vec3 lo, glm::vec3 hi) {
+    std::array<glm::vec3, 8> corners;
+    for (int i = 0; i < 8; ++i) { // bit 0: +x, bit 1: +y, bit 2: +z
+        corners[static_cast<std::size_t>(i)] = {i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z};
+    }
+    const std::array<std::uint16_t, 36> indices = {0, 2, 1, 1, 2, 3,  4, 5, 6, 5, 7, 6,  0, 4, 2, 2, 4, 6,
+                                                   1, 3, 5, 3, 7, 5,  0, 1, 4, 1, 5, 4,  2, 6, 3, 3, 6, 7};
+    std::string bin(sizeof corners + sizeof indices, '\0');
+    std::memcpy(bin.data(), corners.data(), sizeof corners);
+    std::memcpy(bin.data() + sizeof corners, indices.data(), sizeof indices);
+    writeText(folder / (name + ".bin"), bin);
+    auto vec = [](glm::vec3 v) {
+        return "[" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + "]";
+    };
+    writeText(folder / (name + ".gltf"),
+              R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "buffers": [{"uri": ")" + name + R"(.bin", "byteLength": )" + std::to_string(bin.size()) + R"(}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 72}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3", "min": )" +
+                  vec(lo) + R"(, "max": )" + vec(hi) + R"(},
+                {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}]})");
+}
+
+// How much of a square view's side `points` span as seen from `c` (projected with glm, as the
+// renderer does), and the centre of their projection (0: centred).
+struct Span {
+    float larger = 0.0f;
+    glm::vec2 center{0.0f};
+};
+
+Span span(const Camera& c, const std::vector<glm::vec3>& points) {
+    glm::mat4 clip = glm::perspective(glm::radians(c.fovyDeg), 1.0f, c.near, c.far) * glm::lookAt(c.eye, c.target, c.up);
+    glm::vec2 mn(INFINITY), mx(-INFINITY);
+    for (const glm::vec3& point : points) {
+        glm::vec4 p = clip * glm::vec4(point, 1.0f);
+        mn = glm::min(mn, glm::vec2(p) / p.w);
+        mx = glm::max(mx, glm::vec2(p) / p.w);
+    }
+    return {std::max(mx.x - mn.x, mx.y - mn.y) / 2.0f, (mx + mn) / 2.0f};
+}
+
+std::vector<glm::vec3> corners(glm::vec3 lo, glm::vec3 hi) {
+    std::vector<glm::vec3> c;
+    for (int i = 0; i < 8; ++i) {
+        c.push_back({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
+    }
+    return c;
+}
+
+// Issue 25: a model 150 units across dropped on the default scene is seen as a preset without a
+// camera sees it. One undo restores model and camera.
 TEST(Workspace, ADroppedModelIsFramedInOneUndoStepWithTheModel) {
     Fixture f;
-    fs::copy_file(kModel, f.dir.path() / "trefoil.glb");
+    const glm::vec3 lo(-50.0f, -75.0f, 25.0f), hi(100.0f, 75.0f, 175.0f); // a cube 150 across
+    writeBox(f.dir.path(), "large", lo, hi);
     f.ws.a().camera.eye = {1.0f, 2.0f, 30.0f}; // looking from somewhere else, far away
     f.ws.endFrame(false);
     Preset before = f.ws.a();
-    f.ws.setViewportAspect(2.0f);
-    f.ws.drop({(f.dir.path() / "trefoil.glb").string()});
+
+    f.ws.drop({(f.dir.path() / "large.gltf").string()});
     f.ws.endFrame(false);
-    EXPECT_TRUE(f.ws.takeProblems().empty());
-    ASSERT_EQ(f.ws.a().model.gltf, "trefoil.glb");
-    std::optional<Sphere> bounds = drawnBounds(*f.ws.mesh(Side::A), f.ws.a().model);
-    ASSERT_TRUE(bounds);
-    EXPECT_EQ(f.ws.a().camera, framedCamera(before.camera, *bounds, 2.0f)) << "along the current direction";
-    EXPECT_EQ(f.ws.b().camera, f.ws.a().camera);
+    ASSERT_TRUE(f.ws.takeProblems().empty());
+    ASSERT_EQ(f.ws.a().model.gltf, "large.gltf");
+    const Preset& after = f.ws.a();
+    // The camera: from three-quarters (above the front, turned towards +x), the box spanning 85%.
+    glm::vec3 d = glm::normalize(after.camera.eye - after.camera.target);
+    EXPECT_NEAR(glm::dot(d, threeQuarterDirection()), 1.0f, 1e-5f);
+    EXPECT_GT(d.y, 0.0f);
+    EXPECT_GT(d.x, 0.0f);
+    Span s = span(after.camera, corners(lo, hi));
+    EXPECT_NEAR(s.larger, 0.85f, 0.005f);
+    EXPECT_NEAR(s.center.x, 0.0f, 0.005f);
+    EXPECT_NEAR(s.center.y, 0.0f, 0.005f);
+    EXPECT_EQ(f.ws.b().camera, after.camera);
+    Camera framed = after.camera;
+
     f.ws.run({Command::Undo});
     EXPECT_EQ(f.ws.a(), before) << "one undo restores the model and the camera together";
     f.ws.run({Command::Redo});
-    EXPECT_EQ(f.ws.a().model.gltf, "trefoil.glb");
-    EXPECT_EQ(f.ws.a().camera, framedCamera(before.camera, *bounds, 2.0f));
+    EXPECT_EQ(f.ws.a().model.gltf, "large.gltf");
+    EXPECT_EQ(f.ws.a().camera, framed);
 }
 
-TEST(Workspace, FFramesTheModelAndIsUndoable) {
+TEST(Workspace, FFramesTheModelTightlyAlongTheViewDirectionAndIsUndoable) {
     EXPECT_EQ(commandForKey('F', kNoModifier, false), Command::FrameModel);
     Fixture f;
-    f.ws.a().camera.eye = {0.0f, 0.0f, 50.0f};
+    f.ws.a().camera.eye = {30.0f, 10.0f, 50.0f};
+    f.ws.a().camera.target = {1.0f, 0.0f, 0.0f};
     f.ws.endFrame(false);
-    f.ws.setViewportAspect(0.5f);
+    Camera before = f.ws.a().camera;
     f.ws.run({Command::FrameModel});
     f.ws.endFrame(false);
-    // The unit sphere (radius 1) in a view half as wide as high: the width decides.
-    EXPECT_EQ(f.ws.a().camera, framedCamera(Camera{}, Sphere{glm::vec3(0.0f), 1.0f}, 0.5f));
+    const Camera& c = f.ws.a().camera;
+    EXPECT_NEAR(glm::dot(glm::normalize(c.eye - c.target), glm::normalize(before.eye - before.target)), 1.0f, 1e-6f)
+        << "the view direction is kept";
+    // The default sphere's points span 85% of the view, centred.
+    Span s = span(c, f.ws.mesh(Side::A)->positions);
+    EXPECT_NEAR(s.larger, 0.85f, 0.005f);
+    EXPECT_NEAR(s.center.x, 0.0f, 0.005f);
+    EXPECT_NEAR(s.center.y, 0.0f, 0.005f);
+    EXPECT_EQ(f.ws.a().lights, Preset{}.lights) << "F moves only the camera";
     EXPECT_FALSE(f.ws.document().dirty()) << "a camera move, like the gestures";
     f.ws.run({Command::Undo});
-    EXPECT_EQ(f.ws.a().camera.eye, glm::vec3(0.0f, 0.0f, 50.0f));
+    EXPECT_EQ(f.ws.a().camera, before);
 }
 
 TEST(Workspace, APresetWithoutACameraOpensFramedAndKeepsThatCamera) {
@@ -307,8 +391,9 @@ TEST(Workspace, APresetWithoutACameraOpensFramedAndKeepsThatCamera) {
     ASSERT_TRUE(f.ws.takeProblems().empty());
     ASSERT_EQ(f.ws.document().file(), bare);
     std::optional<Sphere> bounds = drawnBounds(*f.ws.mesh(Side::A), f.ws.a().model);
-    ASSERT_TRUE(bounds);
-    Camera framed = framedCamera(Camera{}, *bounds);
+    std::optional<std::vector<glm::vec3>> drawn = drawnPositions(*f.ws.mesh(Side::A), f.ws.a().model);
+    ASSERT_TRUE(bounds && drawn);
+    Camera framed = framedCamera(Camera{}, *drawn, threeQuarterDirection());
     EXPECT_EQ(f.ws.a().camera, framed);
     EXPECT_FALSE(f.ws.document().dirty());
     EXPECT_EQ(f.ws.a().lights[0].position, bounds->center + glm::vec3(2.0f) * bounds->radius);

@@ -207,7 +207,7 @@ void Workspace::open(const fs::path& file) {
         problem("Cannot open " + file.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }
-    if (!meshes_.get(*loaded, d, nullptr, viewportAspect_)) { // (a glTF model without a camera in the file is framed here, for the view)
+    if (!meshes_.get(*loaded, d)) { // (a glTF model without a camera in the file is framed here)
         problem("Cannot load the model of " + file.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }
@@ -321,16 +321,20 @@ void Workspace::useModel(const fs::path& path) {
         problem("Cannot load " + path.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }
+    // The model and the camera change in one frame: one undo step.
     doc_.preset.model = candidate;
-    frameModel(); // in the same frame as the model: one undo step
+    std::shared_ptr<const Mesh> mesh = this->mesh(Side::A);
+    if (auto drawn = mesh ? drawnPositions(*mesh, doc_.preset.model) : std::nullopt) {
+        doc_.preset.camera = framedCamera(Camera{}, *drawn, threeQuarterDirection());
+    }
     notes_.push_back(notes.empty() ? "Model " + candidate.gltf : notes.front());
 }
 
 // A's camera moved to show all of A's model, looking the way it looks now (B follows A's camera).
 void Workspace::frameModel() {
     std::shared_ptr<const Mesh> mesh = this->mesh(Side::A);
-    if (std::optional<Sphere> bounds = mesh ? drawnBounds(*mesh, doc_.preset.model) : std::nullopt) {
-        doc_.preset.camera = framedCamera(doc_.preset.camera, *bounds, viewportAspect_);
+    if (auto drawn = mesh ? drawnPositions(*mesh, doc_.preset.model) : std::nullopt) {
+        doc_.preset.camera = framedCamera(doc_.preset.camera, *drawn);
     }
 }
 

@@ -78,11 +78,14 @@ public:
     void open(const std::filesystem::path& file);
     void openLink(const std::string& fragment); // "preset=name" or "p=..." (core/scene/share_link.h)
     bool saveTo(const std::filesystem::path& file);
-    void useModel(const std::filesystem::path& file); // a .gltf/.glb becomes the model, framed
-    // The camera frames A's model (core/scene/camera.h framedCamera) at the view's aspect (setViewportAspect).
+    // A .gltf/.glb becomes A's model, framed as a preset without a camera is (seen from
+    // core/scene/camera.h threeQuarterDirection), in one undo step.
+    void useModel(const std::filesystem::path& file);
+    // The camera frames A's model tightly (core/scene/camera.h framedCamera) along its current direction.
     void frameModel();
-    // The model's viewport's width / height (A's half in compare mode), for framing; the app sets it each frame.
-    void setViewportAspect(float aspect) { viewportAspect_ = aspect; }
+    // (Framing fits a view of any shape since fovy_deg spans the narrower side: the aspect is no
+    // longer used. Kept until the app stops setting it.)
+    void setViewportAspect(float) {}
     void drop(const std::vector<std::string>& files);
     void requestQuit();
     // A PNG of the view into the screenshot folder (a download in the browser), named
@@ -142,7 +145,6 @@ private:
     std::array<Resolved, 2> resolved_; // A's and B's
     std::vector<std::filesystem::path> presetFiles_;
     int currentPreset_ = -1;
-    float viewportAspect_ = 1.0f;
     std::optional<std::string> question_;
     std::function<void()> pending_;
     bool quit_ = false;

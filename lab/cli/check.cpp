@@ -309,7 +309,7 @@ class Checker {
         Diagnostics diagnostics;
         bool renderFailed = false;
         std::optional<Image> grid;
-        if (frameForCells(preset, options_.sweepSize, diagnostics)) {
+        if (frameForCells(preset, diagnostics)) {
             grid = renderSweepGrid(gpu_, preset, axes, options_.sweepSize, error, renderFailed);
         } else {
             error = diagnostics.empty() ? "the model does not load" : diagnostics.front().str();

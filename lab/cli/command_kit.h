@@ -32,9 +32,9 @@ void printDiagnostics(const Diagnostics& diagnostics);
 std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<std::filesystem::path>& files,
                                                  bool* anyBad = nullptr);
 
-// A glTF preset without a camera or lights in its file framed for cells of `cell`'s shape, as
-// `lab render` frames it (core/gltf/model_loader.h frameOmitted); false when its model does not load.
-bool frameForCells(LoadedPreset& preset, Size cell, Diagnostics& diagnostics);
+// A glTF preset without a camera or lights in its file framed, as `lab render` frames it for cells
+// of any shape (core/gltf/model_loader.h frameOmitted); false when its model does not load.
+bool frameForCells(LoadedPreset& preset, Diagnostics& diagnostics);
 
 // `preset` (framed: frameForCells) swept along `axes` as one labelled grid of `cell`-sized
 // renders (core/scene/sweep.h). Nullopt with a one-line `error`: `renderFailed` tells a render that

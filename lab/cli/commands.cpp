@@ -51,7 +51,7 @@ std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<fs::path>& fi
     return loaded;
 }
 
-bool frameForCells(LoadedPreset& preset, Size cell, Diagnostics& diagnostics) {
+bool frameForCells(LoadedPreset& preset, Diagnostics& diagnostics) {
     if (preset.omitted == OmittedKeys{}) {
         return true;
     }
@@ -59,7 +59,7 @@ bool frameForCells(LoadedPreset& preset, Size cell, Diagnostics& diagnostics) {
     if (!mesh) {
         return false;
     }
-    frameOmitted(preset, *mesh, float(cell.width) / float(cell.height));
+    frameOmitted(preset, *mesh);
     return true;
 }
 
@@ -194,9 +194,9 @@ int runSweep(const std::vector<fs::path>& presets, const std::vector<SweepAxis>&
         printDiagnostics(diagnostics);
         return kExitBadInput;
     }
-    // A glTF model without a camera (or lights) in the file is framed first, for the cells' shape,
-    // as `lab render` frames it: a swept camera or light key then changes the framed one.
-    if (!frameForCells(*preset, size, diagnostics)) {
+    // A glTF model without a camera (or lights) in the file is framed first, as `lab render` frames
+    // it: a swept camera or light key then changes the framed one.
+    if (!frameForCells(*preset, diagnostics)) {
         printDiagnostics(diagnostics);
         return kExitBadInput;
     }

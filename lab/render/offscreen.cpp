@@ -10,8 +10,7 @@ std::optional<Image> OffscreenRenderer::render(const LoadedPreset& preset, int w
                                                Diagnostics& diagnostics, std::vector<std::string>* notes) {
     Diagnostics problems;
     LoadedPreset framed = preset; // a glTF model without a camera in its file is framed here (mesh_cache.h)
-    std::shared_ptr<const Mesh> mesh =
-        meshes_.get(framed, problems, notes, height > 0 ? static_cast<float>(width) / static_cast<float>(height) : 1.0f);
+    std::shared_ptr<const Mesh> mesh = meshes_.get(framed, problems, notes);
     if (!mesh) {
         for (Diagnostic& d : problems) {
             d.file = d.file.empty() ? preset.file.string() : preset.file.string() + ": " + d.file;

@@ -28,10 +28,10 @@ std::shared_ptr<const Mesh> MeshCache::get(const Model& model, const std::filesy
 }
 
 std::shared_ptr<const Mesh> MeshCache::get(LoadedPreset& preset, Diagnostics& diagnostics,
-                                           std::vector<std::string>* notes, float aspect) {
+                                           std::vector<std::string>* notes) {
     std::shared_ptr<const Mesh> mesh = get(preset.preset.model, preset.folder(), diagnostics, notes);
     if (mesh) {
-        frameOmitted(preset, *mesh, aspect);
+        frameOmitted(preset, *mesh);
     }
     return mesh;
 }

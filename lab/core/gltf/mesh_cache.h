@@ -31,9 +31,9 @@ public:
     // `camera` (and `lights`) is framed (frameOmitted, core/gltf/model_loader.h), so that from then
     // on the preset holds an ordinary camera. Every consumer of a preset file loads its mesh
     // through this: `lab render` and `lab check` (OffscreenRenderer), the GUI and the page
-    // (Workspace::open). `aspect` is the view's width / height the camera is framed for.
+    // (Workspace::open). The framing fits a view of any shape.
     std::shared_ptr<const Mesh> get(LoadedPreset& preset, Diagnostics& diagnostics,
-                                    std::vector<std::string>* notes = nullptr, float aspect = 1.0f);
+                                    std::vector<std::string>* notes = nullptr);
 
     std::size_t size() const { return entries_.size(); }
 

@@ -50,48 +50,76 @@ std::optional<Mesh> loadModel(const Model& model, const std::filesystem::path& f
     return std::move(result->mesh);
 }
 
-std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model) {
+namespace {
+
+constexpr float kMinRadius = 1.0e-3f; // the smallest model lights are placed for
+
+glm::vec3 inCoordinateRange(glm::vec3 p) {
+    return glm::clamp(p, glm::vec3(limits::kCoordinate.min), glm::vec3(limits::kCoordinate.max));
+}
+
+bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+} // namespace
+
+std::optional<std::vector<glm::vec3>> drawnPositions(const Mesh& mesh, const Model& model) {
     if (mesh.positions.empty()) {
         return std::nullopt;
     }
     const glm::mat4 m = modelMatrix(model);
-    auto drawn = [&](const glm::vec3& p) { return glm::vec3(m * glm::vec4(p, 1.0f)); };
+    std::vector<glm::vec3> drawn;
+    drawn.reserve(mesh.positions.size());
     glm::vec3 lo(limits::kUnbounded), hi(-limits::kUnbounded);
     for (const glm::vec3& p : mesh.positions) {
-        glm::vec3 q = drawn(p);
-        lo = glm::min(lo, q);
-        hi = glm::max(hi, q);
+        drawn.push_back(glm::vec3(m * glm::vec4(p, 1.0f)));
+        lo = glm::min(lo, drawn.back());
+        hi = glm::max(hi, drawn.back());
+    }
+    if (!finite(lo) || !finite(hi) || !finite(hi - lo)) {
+        return std::nullopt; // coordinates that overflow float once scaled: nothing to frame
+    }
+    return drawn;
+}
+
+std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model) {
+    std::optional<std::vector<glm::vec3>> drawn = drawnPositions(mesh, model);
+    if (!drawn) {
+        return std::nullopt;
+    }
+    glm::vec3 lo(limits::kUnbounded), hi(-limits::kUnbounded);
+    for (const glm::vec3& p : *drawn) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
     }
     Sphere s{(lo + hi) * 0.5f, 0.0f};
     float farthest2 = 0.0f;
-    for (const glm::vec3& p : mesh.positions) {
-        glm::vec3 d = drawn(p) - s.center;
+    for (const glm::vec3& p : *drawn) {
+        glm::vec3 d = p - s.center;
         farthest2 = std::max(farthest2, glm::dot(d, d));
     }
     s.radius = std::sqrt(farthest2);
-    if (!std::isfinite(s.radius) || !std::isfinite(s.center.x) || !std::isfinite(s.center.y) ||
-        !std::isfinite(s.center.z)) {
-        return std::nullopt; // coordinates that overflow float once scaled: nothing to frame
+    if (!std::isfinite(s.radius)) {
+        return std::nullopt;
     }
     return s;
 }
 
-void frameOmitted(LoadedPreset& loaded, const Mesh& mesh, float aspect) {
+void frameOmitted(LoadedPreset& loaded, const Mesh& mesh) {
     OmittedKeys omitted = std::exchange(loaded.omitted, OmittedKeys{});
     Preset& p = loaded.preset;
     if (p.model.gltf.empty() || !omitted.camera) {
         return;
     }
+    std::optional<std::vector<glm::vec3>> drawn = drawnPositions(mesh, p.model);
     std::optional<Sphere> bounds = drawnBounds(mesh, p.model);
-    if (!bounds) {
+    if (!drawn || !bounds) {
         return;
     }
-    p.camera = framedCamera(Camera{}, *bounds, aspect);
+    p.camera = framedCamera(Camera{}, *drawn, threeQuarterDirection());
     if (omitted.lights) {
         p.lights = Preset{}.lights;
         for (LightDesc& light : p.lights) {
-            light.position = glm::clamp(bounds->center + light.position * std::max(bounds->radius, 1.0e-3f),
-                                        glm::vec3(limits::kCoordinate.min), glm::vec3(limits::kCoordinate.max));
+            light.position = inCoordinateRange(bounds->center + light.position * std::max(bounds->radius, kMinRadius));
         }
     }
 }

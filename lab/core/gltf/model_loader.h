@@ -23,18 +23,21 @@ std::string modelCacheKey(const Model& model, const std::filesystem::path& folde
 std::optional<Mesh> loadModel(const Model& model, const std::filesystem::path& folder, Diagnostics& diagnostics,
                               std::vector<std::string>* notes = nullptr);
 
-// The bounding sphere of `mesh` as `model` draws it (after its scale, rotation and translation):
-// centred on the box around the transformed positions, through the farthest of them. nullopt
-// for a mesh without positions, or one whose drawn coordinates overflow float.
+// `mesh`'s positions as `model` draws them (after its scale, rotation and translation), what
+// framing fits in the view (core/scene/camera.h framedCamera); and their bounding sphere, centred
+// on the box around them through the farthest of them. nullopt for a mesh without positions, or
+// one whose drawn coordinates overflow float.
+std::optional<std::vector<glm::vec3>> drawnPositions(const Mesh& mesh, const Model& model);
 std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model);
 
 // Framing, for a preset met with its mesh (MeshCache::get does it for every consumer). A glTF
-// model whose file had no `camera` gets framedCamera(default camera, drawnBounds) at `aspect`
-// (the view's width / height: 1 for `lab render`'s square default; the GUI passes its view's):
-// it looks along -z, as the default camera does. Without `lights` either, the default light
-// stands where it stands for a unit sphere, scaled to the model: centre + (2, 2, 2) · radius
-// (inside the coordinate range). Built-in models and keys the file had are left as they are.
-// Clears `preset.omitted`: the camera and lights are then the preset's own, and saved as such.
-void frameOmitted(LoadedPreset& preset, const Mesh& mesh, float aspect = 1.0f);
+// model whose file had no `camera` gets framedCamera(default camera, drawnPositions,
+// threeQuarterDirection()) (core/scene/camera.h): seen from above the front, spanning 85% of the
+// view's narrower side in any shape of view. Without `lights` either, the default light
+// stands where it stands for a unit sphere, scaled to the model: centre + (2, 2, 2) · radius of
+// drawnBounds (inside the coordinate range). Built-in models and keys the file had are left as
+// they are. Clears `preset.omitted`: the camera and lights are then the preset's own, and saved as
+// such.
+void frameOmitted(LoadedPreset& preset, const Mesh& mesh);
 
 } // namespace lab

@@ -5,28 +5,40 @@
 
 #include <glm/vec3.hpp>
 
+#include <span>
+
 namespace lab {
 
-// A bounding sphere: what framing fits in the view.
+// A bounding sphere: what a model's lights are placed and carried by (core/gltf/model_loader.h),
+// and the centre orbiting lights turn about.
 struct Sphere {
     glm::vec3 center{0.0f};
     float radius = 1.0f;
 };
 
-// The sphere through a box's corners: its centre and half its diagonal.
-Sphere sphereAround(glm::vec3 boundsMin, glm::vec3 boundsMax);
+// The direction model viewers show a model from (<model-viewer>, Sketchfab): a three-quarter view
+// from above the front, 35° from +z (glTF's front) towards +x and 25° above the horizontal. A unit
+// vector from the target to the eye.
+glm::vec3 threeQuarterDirection();
 
-// A camera that shows all of `sphere`: it looks at the centre along `base`'s direction (from
-// the target to the eye; +z when that has no length), keeps `base`'s up and field of view, and
-// stands back so that the sphere spans about 80% of the view's smaller side at `aspect`
-// (width / height), touching no border. Near and far stand in the default camera's ratio to the
-// distance (0.1 and 100 at 4): the sphere lies well between them, and zooming in or out by the
-// gestures' limits keeps it there. Everything stays inside core/scene/limits.h: a radius below 0.001
-// is framed as 0.001 (as is one that is not a number; a centre that is not finite is `base`'s
-// target), and where the eye would leave the coordinate range it stays at the edge and the field
-// of view widens (up to 179°) to fit the sphere.
-Camera framedCamera(const Camera& base, const Sphere& sphere, float aspect = 1.0f);
-Camera framedCamera(const Camera& base, glm::vec3 boundsMin, glm::vec3 boundsMax, float aspect = 1.0f);
+// A camera that shows all of `points` (a model's drawn positions: core/gltf/model_loader.h
+// drawnPositions) tightly, as model viewers do: it looks along `direction` (from the target to
+// the eye; `base`'s own direction when not given, +z when that has no length), keeps `base`'s up
+// (unless the direction is parallel to it) and field of view, and stands where the points,
+// projected, span 85% of the view's narrower side in their larger dimension, centred: the target
+// is moved across the image plane to centre them, at the depth of the centre of their box.
+// fovy_deg spans the narrower side (core/lighting/lighting.h), so this holds in a view of any
+// shape and the points are whole in all. Near and far stand in the default camera's ratios to the
+// distance (0.1 and 100 at 4), near closer still when a point is: the points lie between them,
+// and zooming in or out by the gestures' limits keeps them there. Everything stays inside
+// core/scene/limits.h: points whose box has a half diagonal below 0.001 are framed as a cube of
+// that half diagonal (as are none, or ones that are not finite, at `base`'s target), points that
+// project to (almost) nothing (a rod seen end on) as their box with each side at least a
+// thousandth of its diagonal, and where the eye would leave the coordinate range the field of
+// view widens (up to 179°) until it stays inside. Linear in the number of points but for a sort
+// of those near the outline (about 0.1 s for a million triangles).
+Camera framedCamera(const Camera& base, std::span<const glm::vec3> points);
+Camera framedCamera(const Camera& base, std::span<const glm::vec3> points, glm::vec3 direction);
 
 // Keeps the camera what a preset may hold (core/scene/limits.h): eye and target inside the coordinate
 // range and at least twice the validator's minimum apart, in the direction they had. Every
