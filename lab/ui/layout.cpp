@@ -134,7 +134,7 @@ void placeText(Layout& l, const TextRoom& room) {
     if (room.label > 0.0f) {
         for (std::size_t i = 0; i < 2; ++i) {
             Rect& half = l.halves[i];
-            float label = std::ceil(std::min(room.label, half.h * 0.25f));
+            float label = std::ceil(std::min(room.label, half.h - 1.0f));
             l.labels[i] = {half.x, half.y, half.w, label};
             half = {half.x, half.y + label, half.w, std::max(half.h - label, 1.0f)};
         }

@@ -289,6 +289,25 @@ float frameTimeRoom(const OverlayModel& m) {
     return m.frameMs ? ImGui::CalcTextSize(frameTimeText(*m.frameMs).c_str()).x + 2.0f * inset() : 0.0f;
 }
 
+constexpr ImU32 kStrip = IM_COL32(30, 32, 40, 255); // the text's places: darker than the panels, apart from the model
+
+// Text is drawn clipped to its place (a small view may give it less than it needs), and its
+// widget is what shows of it.
+void textWidget(const std::string& name, Rect text, const Rect& place) {
+    float x1 = std::min(text.x + text.w, place.x + place.w), y1 = std::min(text.y + text.h, place.y + place.h);
+    text.x = std::max(text.x, place.x);
+    text.y = std::max(text.y, place.y);
+    widgets().set(name, {text.x, text.y, std::max(x1 - text.x, 0.0f), std::max(y1 - text.y, 0.0f)});
+}
+
+struct Clip {
+    Clip(ImDrawList* dl, const Rect& r) : dl_(dl) { dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h), true); }
+    ~Clip() { dl_->PopClipRect(); }
+    Clip(const Clip&) = delete;
+    Clip& operator=(const Clip&) = delete;
+    ImDrawList* dl_;
+};
+
 // The preset's name (larger) and description, wrapped: the lecture's story. Its size at `width`.
 ImVec2 captionSize(const Preset& p, float width) {
     float size = ImGui::GetFontSize(), pad = inset();
@@ -300,6 +319,7 @@ ImVec2 captionSize(const Preset& p, float width) {
 }
 
 void caption(const Preset& p, const Rect& r, ImDrawList* dl) {
+    Clip clip(dl, r);
     ImFont* font = ImGui::GetFont();
     float size = ImGui::GetFontSize(), pad = inset(), inner = std::max(r.w - 2 * pad, 1.0f);
     const std::string name = printable(p.name, true), description = printable(p.description);
@@ -310,10 +330,8 @@ void caption(const Preset& p, const Rect& r, ImDrawList* dl) {
                     description.c_str(), nullptr, inner);
     }
     ImVec2 used = captionSize(p, r.w);
-    widgets().set("view.caption", {r.x, r.y, std::min(used.x, r.w), std::min(used.y, r.h)});
+    textWidget("view.caption", {r.x, r.y, used.x, used.y}, r);
 }
-
-constexpr ImU32 kStrip = IM_COL32(30, 32, 40, 255); // the text's places: darker than the panels, apart from the model
 
 void strip(const Rect& r, ImDrawList* dl) {
     if (r.w > 0.0f && r.h > 0.0f) {
@@ -322,30 +340,32 @@ void strip(const Rect& r, ImDrawList* dl) {
 }
 
 void header(const OverlayModel& m, const Rect& r, ImDrawList* dl) {
+    Clip clip(dl, r);
     std::string head = headerText(m);
     float pad = inset(), width = std::max(r.w - 2 * pad, 1.0f);
     ImVec2 size = wrapped(head.c_str(), width);
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(r.x + pad, r.y + pad), IM_COL32(255, 255, 255, 215),
                 head.c_str(), nullptr, width);
-    widgets().set("view.header", {r.x + pad, r.y + pad, size.x, size.y});
+    textWidget("view.header", {r.x + pad, r.y + pad, size.x, size.y}, r);
 }
 
 // The toast at the footer's left, wrapped to its width; the frame time at its right while shown.
 void footer(const OverlayModel& m, const Rect& r, ImDrawList* dl) {
+    Clip clip(dl, r);
     float pad = inset();
     if (m.frameMs) {
         std::string text = frameTimeText(*m.frameMs);
         ImVec2 size = ImGui::CalcTextSize(text.c_str());
         ImVec2 at(r.x + r.w - size.x - pad, r.y + pad);
         dl->AddText(at, IM_COL32(255, 255, 255, 200), text.c_str());
-        widgets().set("view.frame-time", {at.x, at.y, size.x, size.y});
+        textWidget("view.frame-time", {at.x, at.y, size.x, size.y}, r);
     }
     if (m.toast) {
         float width = std::max(r.w - 2 * pad - frameTimeRoom(m), 1.0f);
         ImVec2 size = wrapped(m.toast, width);
         dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(r.x + pad, r.y + pad), IM_COL32(255, 255, 255, 255), m.toast,
                     nullptr, width);
-        widgets().set("view.toast", {r.x + pad, r.y + pad, size.x, size.y});
+        textWidget("view.toast", {r.x + pad, r.y + pad, size.x, size.y}, r);
     }
 }
 
@@ -362,10 +382,9 @@ void compareLabels(const OverlayModel& m, const Layout& layout, ImDrawList* dl) 
         std::string text = setSummary(i == 0 ? "A: " : "B: ", *sets[i]);
         float pad = inset();
         ImVec2 size = ImGui::CalcTextSize(text.c_str());
-        dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h), true);
+        Clip clip(dl, r);
         dl->AddText(ImVec2(r.x + pad, r.y + pad), colors[i], text.c_str());
-        dl->PopClipRect();
-        widgets().set(std::string("view.") + names[i], {r.x + pad, r.y + pad, std::min(size.x, r.w - pad), size.y});
+        textWidget(std::string("view.") + names[i], {r.x + pad, r.y + pad, size.x, size.y}, r);
     }
 }
 
