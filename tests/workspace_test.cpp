@@ -326,12 +326,27 @@ std::vector<glm::vec3> corners(glm::vec3 lo, glm::vec3 hi) {
 }
 
 // Issue 25: a model 150 units across dropped on the default scene is seen as a preset without a
-// camera sees it. One undo restores model and camera.
-TEST(Workspace, ADroppedModelIsFramedInOneUndoStepWithTheModel) {
+// camera sees it, and the scene's lights are carried to it: they stand as far from it, in its
+// radii, as they stood from the unit sphere (outside it), and their attenuation falls off over its
+// size. One undo restores model, camera and lights.
+TEST(Workspace, ADroppedModelIsFramedAndLitInOneUndoStepWithTheModel) {
     Fixture f;
     const glm::vec3 lo(-50.0f, -75.0f, 25.0f), hi(100.0f, 75.0f, 175.0f); // a cube 150 across
+    const glm::vec3 center = (lo + hi) / 2.0f;
+    const float radius = 75.0f * std::sqrt(3.0f); // every corner is farthest from the centre
     writeBox(f.dir.path(), "large", lo, hi);
     f.ws.a().camera.eye = {1.0f, 2.0f, 30.0f}; // looking from somewhere else, far away
+    f.ws.a().lights[0].attenuation = {1.0f, 0.5f, 0.25f};
+    LightDesc spot;
+    spot.type = LightType::Spot;
+    spot.position = {0.0f, 3.0f, 0.0f};
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.attenuation = {0.0f, 1.0f, 2.0f};
+    LightDesc sun;
+    sun.type = LightType::Directional;
+    sun.direction = {1.0f, -1.0f, 0.0f};
+    f.ws.a().lights.push_back(spot);
+    f.ws.a().lights.push_back(sun);
     f.ws.endFrame(false);
     Preset before = f.ws.a();
 
@@ -350,13 +365,44 @@ TEST(Workspace, ADroppedModelIsFramedInOneUndoStepWithTheModel) {
     EXPECT_NEAR(s.center.x, 0.0f, 0.005f);
     EXPECT_NEAR(s.center.y, 0.0f, 0.005f);
     EXPECT_EQ(f.ws.b().camera, after.camera);
-    Camera framed = after.camera;
+    // The lights: scaled about the centre by 150 · √3 / 2 over the unit sphere's 1.
+    ASSERT_EQ(after.lights.size(), 3u);
+    const float k = radius / 1.0f;
+    for (std::size_t i : {0u, 1u}) {
+        SCOPED_TRACE("light " + std::to_string(i));
+        glm::vec3 offset = after.lights[i].position - center;
+        EXPECT_GT(glm::length(offset), radius) << "outside the model";
+        EXPECT_NEAR(glm::length(offset) / radius, glm::length(before.lights[i].position), 1e-4f) << "as far, in radii";
+        EXPECT_NEAR(glm::dot(glm::normalize(offset), glm::normalize(before.lights[i].position)), 1.0f, 1e-5f);
+        glm::vec3 a = before.lights[i].attenuation, b = after.lights[i].attenuation;
+        EXPECT_EQ(b.x, a.x);
+        EXPECT_NEAR(b.y, a.y / k, 1e-6f * a.y);
+        EXPECT_NEAR(b.z, a.z / (k * k), 1e-6f * a.z);
+        EXPECT_EQ(after.lights[i].direction, before.lights[i].direction);
+        EXPECT_EQ(after.lights[i].orbit, before.lights[i].orbit);
+    }
+    EXPECT_EQ(after.lights[2], sun) << "a directional light keeps its direction";
 
     f.ws.run({Command::Undo});
-    EXPECT_EQ(f.ws.a(), before) << "one undo restores the model and the camera together";
+    EXPECT_EQ(f.ws.a(), before) << "one undo restores the model, the camera and the lights together";
     f.ws.run({Command::Redo});
     EXPECT_EQ(f.ws.a().model.gltf, "large.gltf");
-    EXPECT_EQ(f.ws.a().camera, framed);
+    EXPECT_NEAR(glm::length(f.ws.a().lights[0].position - center), glm::length(before.lights[0].position) * radius, 0.05f);
+}
+
+// A model dropped on a scene with a glTF model: the lights go from its bounds to the new one's.
+TEST(Workspace, ADroppedModelCarriesTheLightsFromTheModelBefore) {
+    Fixture f;
+    writeBox(f.dir.path(), "small", glm::vec3(9.0f), glm::vec3(11.0f));   // radius √3, centre 10
+    writeBox(f.dir.path(), "large", glm::vec3(-30.0f), glm::vec3(30.0f)); // radius 30 √3, centre 0
+    f.ws.drop({(f.dir.path() / "small.gltf").string()});
+    f.ws.endFrame(false);
+    f.ws.a().lights[0].position = {10.0f, 10.0f, 13.0f}; // 3 above the small box's centre
+    f.ws.endFrame(false);
+    f.ws.drop({(f.dir.path() / "large.gltf").string()});
+    f.ws.endFrame(false);
+    ASSERT_TRUE(f.ws.takeProblems().empty());
+    EXPECT_LT(glm::distance(f.ws.a().lights[0].position, glm::vec3(0.0f, 0.0f, 90.0f)), 1e-3f) << "3 · 30 above the centre";
 }
 
 TEST(Workspace, FFramesTheModelTightlyAlongTheViewDirectionAndIsUndoable) {

@@ -303,6 +303,9 @@ void Workspace::useModel(const fs::path& path) {
         problem("Cannot load the model", path.string() + ": no such file");
         return;
     }
+    // What the lights were placed for (before the folder may change): the built-ins fit the unit sphere.
+    std::shared_ptr<const Mesh> oldMesh = this->mesh(Side::A);
+    Sphere oldBounds = (oldMesh ? drawnBounds(*oldMesh, doc_.preset.model) : std::nullopt).value_or(Sphere{});
     if (doc_.file().empty() && !doc_.dirty()) {
         doc_.setFolder(canonicalFolder(path.parent_path())); // an untitled scene adopts the model's folder
     }
@@ -321,11 +324,14 @@ void Workspace::useModel(const fs::path& path) {
         problem("Cannot load " + path.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }
-    // The model and the camera change in one frame: one undo step.
+    // The model, the camera and the lights change in one frame: one undo step.
     doc_.preset.model = candidate;
     std::shared_ptr<const Mesh> mesh = this->mesh(Side::A);
     if (auto drawn = mesh ? drawnPositions(*mesh, doc_.preset.model) : std::nullopt) {
         doc_.preset.camera = framedCamera(Camera{}, *drawn, threeQuarterDirection());
+    }
+    if (std::optional<Sphere> bounds = mesh ? drawnBounds(*mesh, doc_.preset.model) : std::nullopt) {
+        carryLights(doc_.preset.lights, oldBounds, *bounds);
     }
     notes_.push_back(notes.empty() ? "Model " + candidate.gltf : notes.front());
 }

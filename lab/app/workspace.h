@@ -79,7 +79,9 @@ public:
     void openLink(const std::string& fragment); // "preset=name" or "p=..." (core/scene/share_link.h)
     bool saveTo(const std::filesystem::path& file);
     // A .gltf/.glb becomes A's model, framed as a preset without a camera is (seen from
-    // core/scene/camera.h threeQuarterDirection), in one undo step.
+    // core/scene/camera.h threeQuarterDirection), and A's lights are carried to it
+    // (core/gltf/model_loader.h carryLights from the old model's drawn bounds, the unit sphere when
+    // there were none): all in one undo step.
     void useModel(const std::filesystem::path& file);
     // The camera frames A's model tightly (core/scene/camera.h framedCamera) along its current direction.
     void frameModel();

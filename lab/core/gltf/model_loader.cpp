@@ -124,4 +124,19 @@ void frameOmitted(LoadedPreset& loaded, const Mesh& mesh) {
     }
 }
 
+void carryLights(std::vector<LightDesc>& lights, const Sphere& from, const Sphere& to) {
+    const float k = std::max(to.radius, kMinRadius) / std::max(from.radius, kMinRadius);
+    for (LightDesc& light : lights) {
+        if (light.type == LightType::Directional) {
+            continue;
+        }
+        light.position = inCoordinateRange(to.center + (light.position - from.center) * k);
+        glm::vec3 a = light.attenuation;
+        glm::vec3 scaled(a.x, limits::clamp(limits::kAttenuation, a.y / k), limits::clamp(limits::kAttenuation, a.z / (k * k)));
+        if (scaled != glm::vec3(0.0f)) { // (never all three 0, which the validator refuses: k far out of range)
+            light.attenuation = scaled;
+        }
+    }
+}
+
 } // namespace lab

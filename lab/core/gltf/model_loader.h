@@ -40,4 +40,12 @@ std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model);
 // such.
 void frameOmitted(LoadedPreset& preset, const Mesh& mesh);
 
+// The lights carried from a model bounded by `from` to one bounded by `to`, so that they light it
+// as they lit the old one: each point and spot light's position scaled about the centre by
+// k = to.radius / from.radius (position' = to.center + (position - from.center) · k, inside the
+// coordinate range), and its attenuation with it (c1 / k, c2 / k², c0 as it was; limits.h's
+// range). Directions (directional and spot lights) and orbit axes stay as they are. Radii below
+// 0.001 count as 0.001.
+void carryLights(std::vector<LightDesc>& lights, const Sphere& from, const Sphere& to);
+
 } // namespace lab
