@@ -128,6 +128,8 @@ struct App::Impl {
     bool updateViewports(const ui::Layout& layout, const FrameInput& in, float scale);
     std::vector<std::pair<const CachedViewport*, Viewport>> shown; // this frame's renders and where they go
     void screenshot(const ui::Layout& layout, const FrameInput& in);
+    void timeLastFrame(const FrameInput& in);
+    float textGoesIn() const;
     void writeLayoutFile(const FrameInput& in, bool settled);
 };
 
@@ -391,6 +393,23 @@ void App::Impl::writeLayoutFile(const FrameInput& in, bool settled) {
     writeFileAtomic(*options.layoutFile, layout, error, WriteSafety::Renewable); // made again every frame
 }
 
+// The clock, and the last frame's cost if it drew the model while something changed it (a frame
+// that only redrew the UI would show the UI's; the first frames, the start-up's, are not counted).
+void App::Impl::timeLastFrame(const FrameInput& in) {
+    clock += in.deltaTime;
+    if (viewportDrawn && interacting) {
+        speed.interactionFrame(clock, in.lastFrameSeconds);
+    }
+}
+
+// When text of the view goes away by itself (the toast, then the frame time): a frame is owed
+// then. < 0: none.
+float App::Impl::textGoesIn() const {
+    float toastGoes = toastLeft > 0.0f ? toastLeft : -1.0f;
+    float timeGoes = interacting ? -1.0f : speed.hidesIn(clock);
+    return timeGoes >= 0.0f && (toastGoes < 0.0f || timeGoes < toastGoes) ? timeGoes : toastGoes;
+}
+
 //----------------------------------------------------------------------------------------
 // App
 //----------------------------------------------------------------------------------------
@@ -420,27 +439,18 @@ FrameOutput App::frame(const FrameInput& in) {
         m.setPresenter(true); // --presenter: as if P had been pressed in this window
     }
     m.windowWidth = in.windowWidth;
-    m.clock += in.deltaTime;
-    if (m.viewportDrawn && m.interacting) {
-        // The cost of a frame that drew the model while something changed it (a frame that only
-        // redrew the UI would show the UI's; the first frames, the start-up's).
-        m.speed.interactionFrame(m.clock, in.lastFrameSeconds);
-    }
+    m.timeLastFrame(in);
     Workspace& ws = m.workspace;
 
     //--- layout -> UI -> requests ---------------------------------------------------------
     ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.panels == Impl::Panels::All,
                                            m.panels != Impl::Panels::None, m.panel.tab});
     if (!m.started) {
-        // The first preset opens in the first frame, once the view's shape is known.
-        ws.setViewportAspect(layout.view.h > 0.0f ? layout.view.w / layout.view.h : 1.0f);
-        ws.start(fs::current_path(), m.options.preset);
+        ws.start(fs::current_path(), m.options.preset); // the first preset opens in the first frame
         m.started = true;
     }
     ui::ScreenModel model = m.screenModel();
     ui::placeText(layout, ui::measureText(model.overlay, layout.view)); // the text beside the model, never over it
-    const ui::Rect& viewportA = layout.viewportOf(0, ws.view.compare);
-    ws.setViewportAspect(viewportA.h > 0.0f ? viewportA.w / viewportA.h : 1.0f); // what F and a dropped model are framed for
     model.clicks = clicksOf(in.events, m.pressed);
     model.panelInfo.compareStacked = layout.compareStacked;
     ui::ScreenEvents events = ui::drawScreen(layout, model);
@@ -473,12 +483,7 @@ FrameOutput App::frame(const FrameInput& in) {
     // A toast is removed when its time is up; nothing else on screen changes by itself (a
     // reduced view is drawn at full size by the frame that ends the drag).
     m.interacting = events.gesture || events.dragging || orbiting;
-    float hides = m.toastLeft > 0.0f ? m.toastLeft : -1.0f; // the toast, then the frame time, go away by themselves
-    float timeHides = m.interacting ? -1.0f : m.speed.hidesIn(m.clock);
-    if (timeHides >= 0.0f && (hides < 0.0f || timeHides < hides)) {
-        hides = timeHides;
-    }
-    float redrawIn = m.orbits.redrawIn(sweepDrawn ? 0.0f : hides, orbiting, in.deltaTime);
+    float redrawIn = m.orbits.redrawIn(sweepDrawn ? 0.0f : m.textGoesIn(), orbiting, in.deltaTime);
     if (m.options.layoutFile) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }

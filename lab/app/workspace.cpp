@@ -213,7 +213,7 @@ void Workspace::open(const fs::path& file) {
     }
     whenChangesAreSafe("open " + file.filename().string(), [this, loaded = std::move(*loaded)]() {
         adopt(loaded.preset, loaded.file, {});
-        notes_.push_back("Opened " + loaded.file.string());
+        notes_.push_back("Opened " + loaded.file.filename().string());
     });
 }
 

@@ -85,9 +85,6 @@ public:
     void useModel(const std::filesystem::path& file);
     // The camera frames A's model tightly (core/scene/camera.h framedCamera) along its current direction.
     void frameModel();
-    // (Framing fits a view of any shape since fovy_deg spans the narrower side: the aspect is no
-    // longer used. Kept until the app stops setting it.)
-    void setViewportAspect(float) {}
     void drop(const std::vector<std::string>& files);
     void requestQuit();
     // A PNG of the view into the screenshot folder (a download in the browser), named

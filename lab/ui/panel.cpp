@@ -115,9 +115,10 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
             // The row's place is its ID; the file's name (escaped: dropped files land in this list) is
             // drawn as it is, not as a label, where "##" would hide the rest of it.
             std::string id = "###preset" + std::to_string(i);
+            ImVec2 at = ImGui::GetCursorScreenPos(); // where the Selectable puts a label's text
             bool clicked = ImGui::Selectable(id.c_str(), selected);
             std::string name = printable(files[i].stem().string(), true);
-            ImGui::GetWindowDrawList()->AddText(ImGui::GetItemRectMin(), ImGui::GetColorU32(ImGuiCol_Text), name.c_str());
+            ImGui::GetWindowDrawList()->AddText(at, ImGui::GetColorU32(ImGuiCol_Text), name.c_str());
             if (clicked) {
                 requests.push_back({Command::OpenPresetAt, {}, static_cast<int>(i)});
             }
