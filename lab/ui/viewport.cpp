@@ -267,16 +267,38 @@ ImVec2 wrapped(const char* text, float width, float size = 0.0f) {
     return ImGui::GetFont()->CalcTextSizeA(size > 0.0f ? size : ImGui::GetFontSize(), width, width, text);
 }
 
+// `text` cut to fit `width` with "..." at its end (at a character's boundary), or whole.
+std::string fitText(const std::string& text, float width) {
+    if (ImGui::CalcTextSize(text.c_str()).x <= width) {
+        return text;
+    }
+    float room = width - ImGui::CalcTextSize("...").x;
+    std::size_t end = 0;
+    for (std::size_t next = 0; next < text.size(); end = next) {
+        do {
+            ++next; // to the next UTF-8 lead byte
+        } while (next < text.size() && (static_cast<unsigned char>(text[next]) & 0xC0) == 0x80);
+        if (ImGui::CalcTextSize(text.c_str(), text.c_str() + next).x > room) {
+            break;
+        }
+    }
+    return text.substr(0, end) + "...";
+}
+
 // The header: which file and what the model shows (the view mode when it is not the lit image).
-std::string headerText(const OverlayModel& m) {
-    std::string head = m.documentName + (m.dirty ? " *" : "");
+// One line, whatever the window: the model's viewport keeps its size from preset to preset. Where
+// the line is too long the file's name gives way first ("13-cook-torr... *"), then the rest.
+std::string headerText(const OverlayModel& m, float width) {
+    std::string rest;
     if (!m.b) { // in compare mode each half's label says it
-        head += "  |  " + setSummary("", *m.a);
+        rest += "  |  " + setSummary("", *m.a);
     }
     if (m.viewMode != ViewMode::Lit) {
-        head += std::string("  |  view ") + toString(m.viewMode);
+        rest += std::string("  |  view ") + toString(m.viewMode);
     }
-    return head;
+    std::string dirty = m.dirty ? " *" : "";
+    float restWidth = ImGui::CalcTextSize((dirty + rest).c_str()).x;
+    return fitText(m.documentName, width - restWidth) + dirty + fitText(rest, width - ImGui::CalcTextSize("...").x * 1.5f);
 }
 
 // The frame time, and the room it takes at the footer's right while it is shown.
@@ -341,11 +363,10 @@ void strip(const Rect& r, ImDrawList* dl) {
 
 void header(const OverlayModel& m, const Rect& r, ImDrawList* dl) {
     Clip clip(dl, r);
-    std::string head = headerText(m);
-    float pad = inset(), width = std::max(r.w - 2 * pad, 1.0f);
-    ImVec2 size = wrapped(head.c_str(), width);
-    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(r.x + pad, r.y + pad), IM_COL32(255, 255, 255, 215),
-                head.c_str(), nullptr, width);
+    float pad = inset();
+    std::string head = headerText(m, r.w - 2 * pad);
+    ImVec2 size = ImGui::CalcTextSize(head.c_str());
+    dl->AddText(ImVec2(r.x + pad, r.y + pad), IM_COL32(255, 255, 255, 215), head.c_str());
     textWidget("view.header", {r.x + pad, r.y + pad, size.x, size.y}, r);
 }
 
@@ -411,7 +432,7 @@ void probeMarker(const Preset& scene, const glm::vec3& world, const Rect& r, ImD
 TextRoom measureText(const OverlayModel& m, const Rect& view) {
     TextRoom room;
     float line = ImGui::GetFontSize(), pad = inset();
-    room.header = wrapped(headerText(m).c_str(), std::max(view.w - 2 * pad, 1.0f)).y + 2 * pad;
+    room.header = line + 2 * pad; // one line (headerText)
     float toastLines = m.toast ? wrapped(m.toast, std::max(view.w - 2 * pad - frameTimeRoom(m), 1.0f)).y : line;
     room.footer = std::max(line, toastLines) + 2 * pad;
     room.label = m.b ? line + 2 * pad : 0.0f;

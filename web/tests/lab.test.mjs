@@ -13,7 +13,7 @@ import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { PNG } from 'pngjs';
-import { repo, site, startBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare } from './page.mjs';
+import { repo, site, startBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare, sizeModelViewport } from './page.mjs';
 
 const goldens = path.join(repo, 'tests/golden-web');
 
@@ -41,16 +41,6 @@ async function hidePanels(page) {
   await press(page, 'Tab');
 }
 
-// Makes the model's viewport `width` x `height` (the goldens' size): the page grows by the view's
-// text strips (the header above the model, the footer below it).
-async function sizeModelViewport(page, width, height) {
-  const r = await widgets(page);
-  await page.setViewportSize({ width: width + r['view.area'].w - r.view.w, height: height + r['view.area'].h - r.view.h });
-  await frames(page, 3);
-  await settle(page);
-  const view = (await widgets(page)).view;
-  assert.deepEqual([view.w, view.h], [width, height], 'the model\'s viewport has the golden\'s size');
-}
 
 async function downloadPreset(page) {
   const rects = await widgets(page);

@@ -8,7 +8,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { repo, startBrowser, newLabPage, frames, widgets, viewShot, compare } from './page.mjs';
+import { repo, startBrowser, newLabPage, frames, widgets, viewShot, compare, sizeModelViewport } from './page.mjs';
 
 let env;
 
@@ -40,10 +40,10 @@ test('moving light: the orbiting preset moves its highlight over time, and its s
   // The screenshot is the preset's position, whatever the orbit's angle: the native golden.
   const golden = PNG.sync.read(fs.readFileSync(path.join(repo, 'tests/golden/25-moving-light.png')));
   const shotCompare = await (async () => {
-    await page.setViewportSize({ width: 512, height: 512 });
     await page.keyboard.press('Tab');
-    await page.keyboard.press('Tab'); // the view alone: 512x512 as the golden
+    await page.keyboard.press('Tab'); // the view alone, its model's viewport 512x512 as the golden
     await frames(page, 5);
+    await sizeModelViewport(page, 512, 512);
     return compare(await viewShot(page), golden);
   })();
   assert.ok(shotCompare.passes, `F12 should show the preset's light position: ${JSON.stringify(shotCompare)}`);

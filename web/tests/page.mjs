@@ -85,6 +85,17 @@ export async function press(page, key) {
   await settle(page);
 }
 
+// Makes the model's viewport `width` x `height` (a golden's size): the page grows by the view's text
+// strips (the header above the model, the footer below it). Frames, not settle(): a moving light
+// never lets the lab settle.
+export async function sizeModelViewport(page, width, height) {
+  const r = await widgets(page);
+  await page.setViewportSize({ width: width + r['view.area'].w - r.view.w, height: height + r['view.area'].h - r.view.h });
+  await frames(page, 5);
+  const view = (await widgets(page)).view;
+  assert.deepEqual([view.w, view.h], [width, height], 'the model\'s viewport has the golden\'s size');
+}
+
 // The lab's screenshot of its 3D view (F12), which the page hands over as a download.
 export async function viewShot(page) {
   const [download] = await Promise.all([page.waitForEvent('download'), press(page, 'F12')]);
