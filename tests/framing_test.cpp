@@ -13,6 +13,7 @@
 #include "gl_suite.h"
 #include "platform/headless_gl.h"
 #include "render/offscreen.h"
+#include "box_gltf.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>
@@ -37,36 +38,12 @@ namespace fs = std::filesystem;
 constexpr int kSize = 96;
 
 // An axis-aligned box `size` · `proportions` across (by default `size` units long (x), 0.6 · size
-// high and 0.4 · size deep), centred on size · (3, -2, 1), as `name`.gltf with its buffer in
-// `name`.bin (positions and indices, no normals: the lab computes them). Counter-clockwise faces
-// seen from outside.
+// high and 0.4 · size deep), centred on size · (3, -2, 1), as `name`.gltf (box_gltf.h).
 void writeBox(const fs::path& folder, const std::string& name, float size,
               glm::vec3 proportions = {1.0f, 0.6f, 0.4f}) {
     const glm::vec3 center = size * glm::vec3(3.0f, -2.0f, 1.0f);
     const glm::vec3 half = size * proportions * 0.5f;
-    std::array<glm::vec3, 8> corners;
-    for (int i = 0; i < 8; ++i) { // bit 0: +x, bit 1: +y, bit 2: +z
-        corners[static_cast<std::size_t>(i)] =
-            center + half * glm::vec3(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f, i & 4 ? 1.0f : -1.0f);
-    }
-    const std::array<std::uint16_t, 36> indices = {0, 2, 1, 1, 2, 3,  4, 5, 6, 5, 7, 6,  0, 4, 2, 2, 4, 6,
-                                                   1, 3, 5, 3, 7, 5,  0, 1, 4, 1, 5, 4,  2, 6, 3, 3, 6, 7};
-    std::string bin(sizeof corners + sizeof indices, '\0');
-    std::memcpy(bin.data(), corners.data(), sizeof corners);
-    std::memcpy(bin.data() + sizeof corners, indices.data(), sizeof indices);
-    writeText(folder / (name + ".bin"), bin);
-    glm::vec3 lo = center - half, hi = center + half;
-    auto vec = [](glm::vec3 v) {
-        return "[" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + "]";
-    };
-    writeText(folder / (name + ".gltf"),
-              R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
-  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-  "buffers": [{"uri": ")" + name + R"(.bin", "byteLength": )" + std::to_string(bin.size()) + R"(}],
-  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 72}],
-  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3", "min": )" +
-                  vec(lo) + R"(, "max": )" + vec(hi) + R"(},
-                {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}]})");
+    writeBoxGltf(folder, name, center - half, center + half);
 }
 
 // A preset naming `gltf`, turned and moved in proportion to `size` (so that every size is the

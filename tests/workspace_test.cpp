@@ -7,6 +7,7 @@
 #include "core/gltf/model_loader.h"
 #include "core/scene/camera.h"
 #include "core/scene/share_link.h"
+#include "box_gltf.h"
 #include "test_files.h"
 
 #include <gtest/gtest.h>
@@ -274,31 +275,6 @@ TEST(Workspace, ADroppedModelInsideTheFolderBecomesTheModelAndOneOutsideIsRefuse
 // carried to it in the same undo step as the model change; F frames the current model along the
 // current direction; a preset without a camera opens framed.
 
-// An axis-aligned box from `lo` to `hi` as `name`.gltf with its buffer in `name`.bin.
-void writeBox(const fs::path& folder, const std::string& name, glm::vec3 lo, glm::vec3 hi) {
-    std::array<glm::vec3, 8> corners;
-    for (int i = 0; i < 8; ++i) { // bit 0: +x, bit 1: +y, bit 2: +z
-        corners[static_cast<std::size_t>(i)] = {i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z};
-    }
-    const std::array<std::uint16_t, 36> indices = {0, 2, 1, 1, 2, 3,  4, 5, 6, 5, 7, 6,  0, 4, 2, 2, 4, 6,
-                                                   1, 3, 5, 3, 7, 5,  0, 1, 4, 1, 5, 4,  2, 6, 3, 3, 6, 7};
-    std::string bin(sizeof corners + sizeof indices, '\0');
-    std::memcpy(bin.data(), corners.data(), sizeof corners);
-    std::memcpy(bin.data() + sizeof corners, indices.data(), sizeof indices);
-    writeText(folder / (name + ".bin"), bin);
-    auto vec = [](glm::vec3 v) {
-        return "[" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + "]";
-    };
-    writeText(folder / (name + ".gltf"),
-              R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
-  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-  "buffers": [{"uri": ")" + name + R"(.bin", "byteLength": )" + std::to_string(bin.size()) + R"(}],
-  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 72}],
-  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3", "min": )" +
-                  vec(lo) + R"(, "max": )" + vec(hi) + R"(},
-                {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}]})");
-}
-
 // How much of a square view's side `points` span as seen from `c` (projected with glm, as the
 // renderer does), and the centre of their projection (0: centred).
 struct Span {
@@ -334,7 +310,7 @@ TEST(Workspace, ADroppedModelIsFramedAndLitInOneUndoStepWithTheModel) {
     const glm::vec3 lo(-50.0f, -75.0f, 25.0f), hi(100.0f, 75.0f, 175.0f); // a cube 150 across
     const glm::vec3 center = (lo + hi) / 2.0f;
     const float radius = 75.0f * std::sqrt(3.0f); // every corner is farthest from the centre
-    writeBox(f.dir.path(), "large", lo, hi);
+    writeBoxGltf(f.dir.path(), "large", lo, hi);
     f.ws.a().camera.eye = {1.0f, 2.0f, 30.0f}; // looking from somewhere else, far away
     f.ws.a().lights[0].attenuation = {1.0f, 0.5f, 0.25f};
     LightDesc spot;
@@ -393,8 +369,8 @@ TEST(Workspace, ADroppedModelIsFramedAndLitInOneUndoStepWithTheModel) {
 // A model dropped on a scene with a glTF model: the lights go from its bounds to the new one's.
 TEST(Workspace, ADroppedModelCarriesTheLightsFromTheModelBefore) {
     Fixture f;
-    writeBox(f.dir.path(), "small", glm::vec3(9.0f), glm::vec3(11.0f));   // radius √3, centre 10
-    writeBox(f.dir.path(), "large", glm::vec3(-30.0f), glm::vec3(30.0f)); // radius 30 √3, centre 0
+    writeBoxGltf(f.dir.path(), "small", glm::vec3(9.0f), glm::vec3(11.0f));   // radius √3, centre 10
+    writeBoxGltf(f.dir.path(), "large", glm::vec3(-30.0f), glm::vec3(30.0f)); // radius 30 √3, centre 0
     f.ws.drop({(f.dir.path() / "small.gltf").string()});
     f.ws.endFrame(false);
     f.ws.a().lights[0].position = {10.0f, 10.0f, 13.0f}; // 3 above the small box's centre

@@ -1,5 +1,6 @@
 // page.mjs — what every browser test file shares: the browser and the page server, a fresh page
 // with the lab running, and the ways to wait for it and drive it (see lab.test.mjs).
+import { before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -21,6 +22,14 @@ export async function startBrowser() {
   const base = `http://127.0.0.1:${server.address().port}/`;
   const browser = await chromium.launch({ executablePath: process.env.LAB_CHROMIUM || '/usr/bin/chromium', args: chromiumArgs });
   return { server, browser, base, close: async () => { await browser.close(); server.close(); } };
+}
+
+// startBrowser() before a test file's tests and close() after them: `env.browser`, `env.base`.
+export function withBrowser() {
+  const env = {};
+  before(async () => { Object.assign(env, await startBrowser()); });
+  after(async () => { await env.close?.(); });
+  return env;
 }
 
 // A fresh page (its own profile: no saved state) at `url` with the lab running, and what went

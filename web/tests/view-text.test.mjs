@@ -7,20 +7,11 @@
 // The rectangles are the lab's own (lab_widgets): `view` is the model's viewport (`view.a` and
 // `view.b` its halves in compare mode), `view.area` the view with its text strips. Whole means the
 // lab's F12 picture of the model's viewport has no model pixel on its border.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { startBrowser, newLabPage, settle, frames, widgets, press, viewShot } from './page.mjs';
+import { withBrowser, newLabPage, settle, frames, widgets, press, viewShot } from './page.mjs';
 
-let env, browser, base;
-
-before(async () => {
-  env = await startBrowser();
-  ({ browser, base } = env);
-});
-
-after(async () => {
-  await env?.close();
-});
+const env = withBrowser();
 
 const TEXT = ['view.header', 'view.caption', 'view.toast', 'view.frame-time', 'view.label-a', 'view.label-b'];
 const overlap = (a, b) => Math.min(a.x + a.w, b.x + b.w) - Math.max(a.x, b.x) > 0.5 && Math.min(a.y + a.h, b.y + b.h) - Math.max(a.y, b.y) > 0.5;
@@ -72,7 +63,7 @@ for (const [device, options] of screens) {
   test(`on a ${device} (${options.width}x${options.height}) the model is whole and no text covers it, normal, presenter and compare`, async () => {
     const failures = [];
     for (const preset of ['05-full-phong', '13-cook-torrance-beckmann-schlick', '24-gltf-trefoil']) {
-      const { page, context, problems } = await newLabPage(browser, `${base}#preset=${preset}`, options);
+      const { page, context, problems } = await newLabPage(env.browser, `${env.base}#preset=${preset}`, options);
       const rects = await widgets(page);
       assert.ok(rects['view.toast'], `${preset}: the opening message is shown`);
       failures.push(...await viewProblems(page, `${preset} normal`));
