@@ -41,13 +41,13 @@ std::map<int, std::string> viewportShapes() {
     const Screen screens[] = {{1024, 768}, {1280, 800}, {1600, 900}, {1920, 1080}, {1280, 720}, {390, 844}, {768, 1024}};
     for (const Screen& s : screens) {
         for (bool presenter : {false, true}) {
-            float scale = presenter ? 1.75f : 1.0f, font = 13.0f * scale;
+            float scale = presenter ? 1.75f : 1.0f, font = 15.0f * scale; // DejaVu Sans at 15 · scale
             bool panel = !presenter || s.w >= 1600.0f;
             ui::Layout l = ui::computeLayout({s.w, s.h, scale, panel, true});
             for (bool compare : {false, true}) {
                 ui::TextRoom room;
-                room.header = 2.0f * font + 0.8f * font; // two lines where it wraps
-                room.footer = font + 0.8f * font;
+                room.header = font + 0.8f * font; // one line (ui/viewport.cpp headerText)
+                room.footer = 2.0f * font + 0.8f * font; // a message on two lines
                 room.label = compare ? font + 0.8f * font : 0.0f;
                 if (presenter) { // a caption of about 180 characters: a title and two lines
                     room.captionHeight = [font](float width) { return font * (1.35f + 1.3f * std::ceil(180.0f * 0.55f * font / width)) + 0.8f * font; };

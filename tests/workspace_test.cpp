@@ -185,6 +185,22 @@ TEST(Workspace, ALinkRoundTripsTheSceneAndABrokenLinkChangesNothing) {
     EXPECT_EQ(g.ws.a(), opened);
 }
 
+// An inline link's glTF preset without a camera is framed as a file's is: from three-quarters;
+// one with a camera keeps it.
+TEST(Workspace, ALinkedGltfPresetWithoutACameraIsFramed) {
+    TempFolder user;
+    Workspace ws{WorkspaceOptions{{kPresets}, {}, false, user.path()}}; // links resolve models in the bundled presets
+    const std::string model = R"({"format": "lighting-lab-preset", "version": 1, "model": {"gltf": "models/trefoil.glb"})";
+    ws.openLink("p=" + base64UrlEncode(model + "}"));
+    ASSERT_TRUE(ws.takeProblems().empty());
+    const Camera& framed = ws.a().camera;
+    EXPECT_NE(framed.eye, Camera{}.eye);
+    EXPECT_GT(glm::dot(glm::normalize(framed.eye - framed.target), threeQuarterDirection()), 0.9999f);
+    ws.openLink("p=" + base64UrlEncode(model + R"(, "camera": {}})"));
+    ASSERT_TRUE(ws.takeProblems().empty());
+    EXPECT_EQ(ws.a().camera.eye, Camera{}.eye) << "a camera in the link is used as it is";
+}
+
 // A copy of presets/ as the shipped folder, so the test can see it stay byte for byte.
 struct ShippedFixture {
     TempFolder dir;

@@ -2,9 +2,9 @@
 #include "app/app.h"
 
 #include "app/figure_export.h"
+#include "app/frame_speed.h"
 #include "app/orbit_clock.h"
 #include "app/sweep_image.h"
-#include "app/frame_speed.h"
 #include "app/viewport_cache.h"
 #include "core/gltf/model_loader.h"
 #include "core/io/file_io.h"
@@ -17,8 +17,10 @@
 #include "ui/widget_map.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 namespace lab {
 
@@ -65,7 +67,10 @@ struct App::Impl {
     ui::ViewportControls viewportControls;
     enum class Panels { All, PlotsOnly, None } panels = Panels::All; // Tab cycles
     bool showHelp = false, presenter = false, caption = false, lightShapes = true;
-    bool frameTime = true; // the frame time while the model changes (T; off in presenter mode until asked)
+    // The frame time while the model changes, outside and in presenter mode (T toggles the one in use):
+    // the room sees the model, not the lab's timings, unless asked.
+    bool frameTime = true, frameTimePresenting = false;
+    bool& frameTimeShown() { return presenter ? frameTimePresenting : frameTime; }
     float presenterScale = 1.75f;
     std::optional<InputEvent> pressed; // a left press whose release has not come yet
     std::optional<ProbeResult> probe;
@@ -110,7 +115,6 @@ struct App::Impl {
     void setPresenter(bool on) {
         presenter = on;
         caption = on;
-        frameTime = !on; // the room sees the model, not the lab's timings
         if (on && windowWidth < 1600.0f && panels == Panels::All) {
             panels = Panels::PlotsOnly;
         } else if (!on && panels == Panels::PlotsOnly) {
@@ -129,6 +133,9 @@ struct App::Impl {
     std::vector<std::pair<const CachedViewport*, Viewport>> shown; // this frame's renders and where they go
     void screenshot(const ui::Layout& layout, const FrameInput& in);
     void timeLastFrame(const FrameInput& in);
+    std::map<int, float> captionHeights; // the caption's tallest strip at each width, while the view keeps its size
+    std::array<float, 3> captionView{};  // that size and the font's
+    ui::TextRoom steadyCaption(ui::TextRoom room, const ui::Rect& view);
     float textGoesIn() const;
     void writeLayoutFile(const FrameInput& in, bool settled);
 };
@@ -158,7 +165,7 @@ ui::ScreenModel App::Impl::screenModel() {
     m.showHelp = &showHelp;
     m.problem = problem ? &*problem : nullptr;
     m.unsavedQuestion = workspace.question() ? &*workspace.question() : nullptr;
-    m.overlay = {name, doc.dirty(), m.a, m.b, workspace.view.mode, frameTime ? speed.shownMs(clock) : std::nullopt,
+    m.overlay = {name, doc.dirty(), m.a, m.b, workspace.view.mode, frameTimeShown() ? speed.shownMs(clock) : std::nullopt,
                  toastLeft > 0.0f ? toast.c_str() : nullptr, caption,
                  probe && probeOpen ? std::optional<glm::vec3>(probe->positionWorld) : std::nullopt};
     m.lightShapes = lightShapes;
@@ -204,7 +211,7 @@ void App::Impl::carryOut(const Request& r) {
     case Command::TogglePresenter: setPresenter(!presenter); break;
     case Command::ToggleCaption: caption = !caption; break;
     case Command::ToggleLightShapes: lightShapes = !lightShapes; break;
-    case Command::ToggleFrameTime: frameTime = !frameTime; break;
+    case Command::ToggleFrameTime: frameTimeShown() = !frameTimeShown(); break;
     case Command::PresenterLarger:
         if (!presenter) {
             setPresenter(true);
@@ -375,6 +382,7 @@ void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
         return;
     }
     target.bind();
+    clearFramebuffer(kWindowBackground, w, h); // (in compare mode the halves' label strips lie between the models)
     drawViewports(layout, toPixels, static_cast<float>(h) / toPixels, -v.x, -v.y);
     Image image = target.readRgb();
     bindFramebuffer(in.targetFramebuffer);
@@ -400,6 +408,24 @@ void App::Impl::timeLastFrame(const FrameInput& in) {
     if (viewportDrawn && interacting) {
         speed.interactionFrame(clock, in.lastFrameSeconds);
     }
+}
+
+// The caption's strip only grows while the view and the font keep their sizes: stepping through
+// the presets in presenter mode, the model stays where it is, whatever each caption's length.
+ui::TextRoom App::Impl::steadyCaption(ui::TextRoom room, const ui::Rect& view) {
+    std::array<float, 3> now{view.w, view.h, ui::uiScale()};
+    if (now != captionView) {
+        captionHeights.clear();
+        captionView = now;
+    }
+    if (room.captionHeight) {
+        room.captionHeight = [measure = std::move(room.captionHeight), this](float width) {
+            float& tallest = captionHeights[static_cast<int>(width)];
+            tallest = std::max(tallest, measure(width));
+            return tallest;
+        };
+    }
+    return room;
 }
 
 // When text of the view goes away by itself (the toast, then the frame time): a frame is owed
@@ -450,7 +476,7 @@ FrameOutput App::frame(const FrameInput& in) {
         m.started = true;
     }
     ui::ScreenModel model = m.screenModel();
-    ui::placeText(layout, ui::measureText(model.overlay, layout.view)); // the text beside the model, never over it
+    ui::placeText(layout, m.steadyCaption(ui::measureText(model.overlay, layout.view), layout.view)); // beside the model, never over it
     model.clicks = clicksOf(in.events, m.pressed);
     model.panelInfo.compareStacked = layout.compareStacked;
     ui::ScreenEvents events = ui::drawScreen(layout, model);

@@ -422,7 +422,8 @@ void Workspace::saveFiles(const std::vector<Download>& files, const std::string&
 
 void Workspace::openLink(const std::string& fragment) {
     Diagnostics d;
-    auto parsed = parseLink(fragment, bundledFolder(), d);
+    OmittedKeys omitted;
+    auto parsed = parseLink(fragment, bundledFolder(), d, &omitted);
     if (!parsed) {
         problem("Cannot open the link (nothing was changed)", std::move(d));
         return;
@@ -437,12 +438,14 @@ void Workspace::openLink(const std::string& fragment) {
         open(file);
         return;
     }
-    Preset preset = std::get<Preset>(*parsed);
-    if (!meshes_.get(preset.model, bundledFolder(), d)) {
+    LoadedPreset linked{std::get<Preset>(*parsed), {}, omitted};
+    std::shared_ptr<const Mesh> mesh = meshes_.get(linked.preset.model, bundledFolder(), d);
+    if (!mesh) {
         problem("Cannot load the linked preset's model (nothing was changed)", std::move(d));
         return;
     }
-    whenChangesAreSafe("open the link", [this, preset]() { adopt(preset, {}, bundledFolder()); });
+    frameOmitted(linked, *mesh); // a glTF model without a camera in the link is framed as a file's is
+    whenChangesAreSafe("open the link", [this, preset = linked.preset]() { adopt(preset, {}, bundledFolder()); });
 }
 
 const std::string& Workspace::link() {

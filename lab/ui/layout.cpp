@@ -101,7 +101,7 @@ Layout computeLayout(const LayoutInput& in) {
 
 void placeText(Layout& l, const TextRoom& room) {
     const Rect v = l.view;
-    // At most half the view's height each for the header and the footer strips; the rest is the model's.
+    // At most a quarter of the view's height each for the header and the footer strips; the rest is the model's.
     // Whole units, so that the strips and the model's viewport meet on a pixel's edge.
     float header = std::ceil(std::min(room.header, v.h * 0.25f)), footer = std::ceil(std::min(room.footer, v.h * 0.25f));
     l.header = {v.x, v.y, v.w, header};
@@ -134,7 +134,7 @@ void placeText(Layout& l, const TextRoom& room) {
     if (room.label > 0.0f) {
         for (std::size_t i = 0; i < 2; ++i) {
             Rect& half = l.halves[i];
-            float label = std::ceil(std::min(room.label, half.h - 1.0f));
+            float label = std::ceil(std::clamp(room.label, 0.0f, half.h - 1.0f));
             l.labels[i] = {half.x, half.y, half.w, label};
             half = {half.x, half.y + label, half.w, std::max(half.h - label, 1.0f)};
         }

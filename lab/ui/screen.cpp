@@ -133,8 +133,9 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     }
     helpWindow(*m.showHelp);
     if (m.probe) {
-        // The readout opens beside the model (over the plots or the panel), not over it.
-        const Rect& beside = layout.plots.w > 0.0f ? layout.plots : layout.panel.w > 0.0f ? layout.panel : layout.footer;
+        // The readout opens beside the model (over the plots or the panel), not over it; with both
+        // hidden (Tab: the model only) it opens at the view's corner, over the model.
+        const Rect& beside = layout.plots.w > 0.0f ? layout.plots : layout.panel.w > 0.0f ? layout.panel : layout.viewport;
         probeWindow(*m.probe, *m.a, *m.probeOpen, beside.x + 10.0f, beside.y + ImGui::GetFontSize() * 2.0f);
     }
     shaderEditorWindow(*m.shaderEditor, events.requests, m.lightingSource);

@@ -46,7 +46,7 @@ void probeWindow(const ProbeResult& probe, const Preset& preset, bool& open, flo
     // Inside the window whatever its size: at most the display, wide enough for the rows, and
     // pushed back in when it would hang over an edge.
     ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing); // where the layout has room each time it opens
     ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(ImGui::GetFontSize() * 22, display.x), 0), display);
     ImGui::SetNextWindowBgAlpha(0.92f);
     if (ImGui::Begin("Pixel probe", &open, ImGuiWindowFlags_AlwaysAutoResize)) {

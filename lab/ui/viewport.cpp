@@ -391,17 +391,23 @@ void footer(const OverlayModel& m, const Rect& r, ImDrawList* dl) {
 }
 
 void compareLabels(const OverlayModel& m, const Layout& layout, ImDrawList* dl) {
-    const Rect& b = layout.halves[1];
-    ImVec2 end = layout.compareStacked ? ImVec2(b.x + b.w, b.y) : ImVec2(b.x, b.y + b.h);
-    dl->AddLine(ImVec2(b.x, b.y), end, IM_COL32(255, 255, 255, 160), 2.0f);
+    // The line between the halves, at the top (stacked) or the left of B's label and model.
+    const Rect &b = layout.halves[1], &bLabel = layout.labels[1];
+    ImVec2 end = layout.compareStacked ? ImVec2(b.x + b.w, bLabel.y) : ImVec2(b.x, b.y + b.h);
+    dl->AddLine(ImVec2(b.x, bLabel.y), end, IM_COL32(255, 255, 255, 160), 2.0f);
     const char* names[2] = {"label-a", "label-b"};
     const Preset* sets[2] = {m.a, m.b};
     const ImU32 colors[2] = {IM_COL32(255, 255, 255, 230), IM_COL32(230, 90, 220, 255)};
     for (std::size_t i = 0; i < 2; ++i) {
         const Rect& r = layout.labels[i];
         strip(r, dl);
-        std::string text = setSummary(i == 0 ? "A: " : "B: ", *sets[i]);
         float pad = inset();
+        // "A: shading Gouraud  |  BRDF Phong", or where that is too wide "A: Gouraud, Phong".
+        std::string text = setSummary(i == 0 ? "A: " : "B: ", *sets[i]);
+        if (ImGui::CalcTextSize(text.c_str()).x > r.w - 2 * pad) {
+            text = std::string(i == 0 ? "A: " : "B: ") + label(sets[i]->shading) + ", " + label(sets[i]->brdf);
+        }
+        text = fitText(text, r.w - 2 * pad);
         ImVec2 size = ImGui::CalcTextSize(text.c_str());
         Clip clip(dl, r);
         dl->AddText(ImVec2(r.x + pad, r.y + pad), colors[i], text.c_str());

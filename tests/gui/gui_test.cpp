@@ -294,5 +294,34 @@ TEST(Gui, SweepShowsTheGridAndARefusedValue) {
     EXPECT_TRUE(c.passes(Tolerance{})) << "max " << c.maxDifference << ", failing share " << c.failingShare;
 }
 
+// The frame time is what a frame costs while the model changes (app/frame_speed.h): nothing at
+// the start (whose first frames compile and upload), shown during a drag and a few seconds after,
+// gone when idle; T hides it; presenter mode shows none until T.
+TEST(Gui, TheFrameTimeShowsWhileTheModelChangesAndNotWhenIdle) {
+    START_LAB(lab, "--preset", preset("05-full-phong"));
+    EXPECT_FALSE(lab.has("view.frame-time")) << "no frame time before anything changed";
+    Rect view = lab.widget("view");
+    auto orbit = [&] { lab.drag(view.cx() - 60, view.cy(), view.cx() + 60, view.cy() + 20); };
+    orbit();
+    EXPECT_TRUE(lab.has("view.frame-time")) << "a drag shows what its frames cost";
+    auto end = Clock::now() + std::chrono::seconds(10);
+    while (lab.has("view.frame-time") && Clock::now() < end) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50)); // the lab redraws to hide it (3 s)
+    }
+    EXPECT_FALSE(lab.has("view.frame-time")) << "idle, the frame time goes";
+    lab.press("t");
+    orbit();
+    EXPECT_FALSE(lab.has("view.frame-time")) << "T hides it";
+    lab.press("t");
+    lab.press("p");
+    lab.settle();
+    view = lab.widget("view");
+    orbit();
+    EXPECT_FALSE(lab.has("view.frame-time")) << "presenter mode shows none";
+    lab.press("t");
+    orbit();
+    EXPECT_TRUE(lab.has("view.frame-time")) << "... until asked (T)";
+}
+
 } // namespace
 } // namespace lab::test

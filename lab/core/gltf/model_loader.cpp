@@ -81,25 +81,29 @@ std::optional<std::vector<glm::vec3>> drawnPositions(const Mesh& mesh, const Mod
     return drawn;
 }
 
+// Two passes over the mesh, no copy of it: the orbiting lights' centre is found this way on every
+// change of the model's transform (app/orbit_clock.cpp), a slider drag's every frame.
 std::optional<Sphere> drawnBounds(const Mesh& mesh, const Model& model) {
-    std::optional<std::vector<glm::vec3>> drawn = drawnPositions(mesh, model);
-    if (!drawn) {
+    if (mesh.positions.empty()) {
         return std::nullopt;
     }
+    const glm::mat4 m = modelMatrix(model);
+    auto drawn = [&](const glm::vec3& p) { return glm::vec3(m * glm::vec4(p, 1.0f)); };
     glm::vec3 lo(limits::kUnbounded), hi(-limits::kUnbounded);
-    for (const glm::vec3& p : *drawn) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+    for (const glm::vec3& p : mesh.positions) {
+        glm::vec3 q = drawn(p);
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
     }
     Sphere s{(lo + hi) * 0.5f, 0.0f};
     float farthest2 = 0.0f;
-    for (const glm::vec3& p : *drawn) {
-        glm::vec3 d = p - s.center;
+    for (const glm::vec3& p : mesh.positions) {
+        glm::vec3 d = drawn(p) - s.center;
         farthest2 = std::max(farthest2, glm::dot(d, d));
     }
     s.radius = std::sqrt(farthest2);
-    if (!std::isfinite(s.radius)) {
-        return std::nullopt;
+    if (!std::isfinite(s.radius) || !finite(s.center) || !finite(hi - lo)) {
+        return std::nullopt; // coordinates that overflow float once scaled: nothing to frame
     }
     return s;
 }

@@ -86,7 +86,7 @@ std::string presetLink(const Preset& preset, const std::optional<std::string>& b
 
 std::optional<std::variant<LinkedPresetName, Preset>> parseLink(std::string_view fragment,
                                                                 const std::filesystem::path& folder,
-                                                                Diagnostics& diagnostics) {
+                                                                Diagnostics& diagnostics, OmittedKeys* omitted) {
     if (!fragment.empty() && fragment.front() == '#') {
         fragment.remove_prefix(1);
     }
@@ -113,7 +113,7 @@ std::optional<std::variant<LinkedPresetName, Preset>> parseLink(std::string_view
             diagnostics.push_back({file, "p", "not valid base64url"});
             return std::nullopt;
         }
-        std::optional<Preset> preset = parsePreset(*json, file, folder, diagnostics);
+        std::optional<Preset> preset = parsePreset(*json, file, folder, diagnostics, omitted);
         if (!preset) {
             return std::nullopt;
         }

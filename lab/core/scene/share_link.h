@@ -26,10 +26,11 @@ struct LinkedPresetName {
 
 // Parses a fragment (with or without the leading '#'). `folder` is where glTF paths in a "p="
 // preset resolve (the bundled presets). Returns a name to open, a preset, or nothing (with
-// diagnostics) when the link is broken.
+// diagnostics) when the link is broken. `omitted`, when given, receives which of `camera` and
+// `lights` a "p=" preset left out (a glTF model is then framed as a file's is, frameOmitted).
 std::optional<std::variant<LinkedPresetName, Preset>> parseLink(std::string_view fragment,
                                                                 const std::filesystem::path& folder,
-                                                                Diagnostics& diagnostics);
+                                                                Diagnostics& diagnostics, OmittedKeys* omitted = nullptr);
 
 std::string base64UrlEncode(std::string_view bytes);
 std::optional<std::string> base64UrlDecode(std::string_view text);
