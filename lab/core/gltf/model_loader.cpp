@@ -54,7 +54,7 @@ namespace {
 
 constexpr float kMinRadius = 1.0e-3f; // the smallest model lights are placed for
 
-glm::vec3 inCoordinateRange(glm::vec3 p) {
+glm::vec3 clampToCoordinates(glm::vec3 p) {
     return glm::clamp(p, glm::vec3(limits::kCoordinate.min), glm::vec3(limits::kCoordinate.max));
 }
 
@@ -123,7 +123,7 @@ void frameOmitted(LoadedPreset& loaded, const Mesh& mesh) {
     if (omitted.lights) {
         p.lights = Preset{}.lights;
         for (LightDesc& light : p.lights) {
-            light.position = inCoordinateRange(bounds->center + light.position * std::max(bounds->radius, kMinRadius));
+            light.position = clampToCoordinates(bounds->center + light.position * std::max(bounds->radius, kMinRadius));
         }
     }
 }
@@ -134,7 +134,7 @@ void carryLights(std::vector<LightDesc>& lights, const Sphere& from, const Spher
         if (light.type == LightType::Directional) {
             continue;
         }
-        light.position = inCoordinateRange(to.center + (light.position - from.center) * k);
+        light.position = clampToCoordinates(to.center + (light.position - from.center) * k);
         glm::vec3 a = light.attenuation;
         glm::vec3 scaled(a.x, limits::clamp(limits::kAttenuation, a.y / k), limits::clamp(limits::kAttenuation, a.z / (k * k)));
         if (scaled != glm::vec3(0.0f)) { // (never all three 0, which the validator refuses: k far out of range)
