@@ -397,6 +397,26 @@ TEST(Workspace, ADroppedModelCarriesTheLightsFromTheModelBefore) {
     EXPECT_LT(glm::distance(f.ws.a().lights[0].position, glm::vec3(0.0f, 0.0f, 90.0f)), 1e-3f) << "3 · 30 above the centre";
 }
 
+// In compare mode B compares settings on the same model: a dropped model goes to both halves,
+// B's lights carried like A's, and one undo takes both back.
+TEST(Workspace, ADroppedModelInCompareModeGoesToBothHalves) {
+    Fixture f;
+    writeBoxGltf(f.dir.path(), "large", glm::vec3(-30.0f), glm::vec3(30.0f)); // radius 30 √3, centre 0
+    f.ws.run({Command::ToggleCompare});
+    f.ws.b().lights[0].position = {0.0f, 0.0f, 3.0f};
+    f.ws.endFrame(false);
+    Preset beforeB = f.ws.b();
+    f.ws.drop({(f.dir.path() / "large.gltf").string()});
+    f.ws.endFrame(false);
+    ASSERT_TRUE(f.ws.takeProblems().empty());
+    EXPECT_EQ(f.ws.b().model, f.ws.a().model);
+    EXPECT_EQ(f.ws.b().shading, beforeB.shading) << "B keeps its own settings";
+    EXPECT_LT(glm::distance(f.ws.b().lights[0].position, glm::vec3(0.0f, 0.0f, 90.0f * std::sqrt(3.0f))), 1e-2f)
+        << "3 radii in front of the centre, as it was for the unit sphere";
+    f.ws.run({Command::Undo});
+    EXPECT_EQ(f.ws.b(), beforeB);
+}
+
 TEST(Workspace, FFramesTheModelTightlyAlongTheViewDirectionAndIsUndoable) {
     EXPECT_EQ(commandForKey('F', kNoModifier, false), Command::FrameModel);
     Fixture f;

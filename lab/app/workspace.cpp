@@ -304,8 +304,11 @@ void Workspace::useModel(const fs::path& path) {
         return;
     }
     // What the lights were placed for (before the folder may change): the built-ins fit the unit sphere.
-    std::shared_ptr<const Mesh> oldMesh = this->mesh(Side::A);
-    Sphere oldBounds = (oldMesh ? drawnBounds(*oldMesh, doc_.preset.model) : std::nullopt).value_or(Sphere{});
+    auto boundsOf = [this](Side side, const Preset& p) {
+        std::shared_ptr<const Mesh> m = this->mesh(side);
+        return (m ? drawnBounds(*m, p.model) : std::nullopt).value_or(Sphere{});
+    };
+    Sphere oldBounds = boundsOf(Side::A, doc_.preset), oldBoundsB = boundsOf(Side::B, doc_.compare);
     if (doc_.file().empty() && !doc_.dirty()) {
         doc_.setFolder(canonicalFolder(path.parent_path())); // an untitled scene adopts the model's folder
     }
@@ -332,6 +335,10 @@ void Workspace::useModel(const fs::path& path) {
     }
     if (std::optional<Sphere> bounds = mesh ? drawnBounds(*mesh, doc_.preset.model) : std::nullopt) {
         carryLights(doc_.preset.lights, oldBounds, *bounds);
+        if (view.compare) { // B compares settings on the same model: it takes the model, its lights move alike
+            doc_.compare.model = doc_.preset.model;
+            carryLights(doc_.compare.lights, oldBoundsB, *bounds);
+        }
     }
     notes_.push_back(notes.empty() ? "Model " + candidate.gltf : notes.front());
 }
