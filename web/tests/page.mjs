@@ -20,7 +20,10 @@ export async function startBrowser() {
   assert.ok(fs.existsSync(path.join(site, 'index.html')), `no page in ${site}: build it first (tools/dev web)`);
   const server = await serve(site);
   const base = `http://127.0.0.1:${server.address().port}/`;
-  const browser = await chromium.launch({ executablePath: process.env.LAB_CHROMIUM || '/usr/bin/chromium', args: chromiumArgs });
+  // A UTF-8 locale, as a student's browser has: in the C locale (a bare Debian root, CI) Chromium
+  // cannot hand the page a file whose name is not ASCII ("scène (1).json" arrived as nothing).
+  const env = { ...process.env, LANG: 'C.UTF-8', LC_ALL: 'C.UTF-8' };
+  const browser = await chromium.launch({ executablePath: process.env.LAB_CHROMIUM || '/usr/bin/chromium', args: chromiumArgs, env });
   return { server, browser, base, close: async () => { await browser.close(); server.close(); } };
 }
 
