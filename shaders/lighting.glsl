@@ -153,6 +153,12 @@ float geometryTerm(float NoH, float NoV, float NoL, float VoH, Brdf b) {
     return b.geometry ? geometryCookTorrance(NoH, NoV, NoL, VoH) : 1.0f;
 }
 
+// 4 max(N.V, 1e-4): the textbook's 4 (N.L)(N.V) after its N.L has cancelled against the cosine
+// of the incoming light (see below); the floor keeps a normal facing away from V finite.
+float cookTorranceDenominator(float NoV) {
+    return 4.0f * max(NoV, 1e-4f);
+}
+
 // D.F.G / (4 max(N.V, 1e-4)): the microfacet BRDF D F G / (4 (N.L)(N.V)) times N.L.
 // Cook & Torrance 1982.
 float cookTorranceSpecular(vec3 N, vec3 L, vec3 V, Brdf b) {
@@ -164,7 +170,7 @@ float cookTorranceSpecular(vec3 N, vec3 L, vec3 V, Brdf b) {
     float D = distributionTerm(NoH, b);
     float F = fresnelTerm(VoH, b);
     float G = geometryTerm(NoH, NoV, NoL, VoH, b);
-    return D * F * G / (4.0f * max(NoV, 1e-4f));
+    return D * F * G / cookTorranceDenominator(NoV);
 }
 
 // The specular factor S for the chosen BRDF; 0 wherever N.L <= 0.
@@ -195,16 +201,24 @@ vec3 lightVector(Light l, vec3 p) {
     return dot(d, d) > 1e-30f ? normalize(d) : vec3(0.0f);
 }
 
+// d, the distance from p to light l; 0 for a directional light (it has none).
+float lightDistance(Light l, vec3 p) {
+    return l.type == LIGHT_DIRECTIONAL ? 0.0f : length(l.position - p);
+}
+
+// Att(d) of light l at p; 1 for a directional light.
+float distanceAttenuation(Light l, vec3 p) {
+    return l.type == LIGHT_DIRECTIONAL ? 1.0f : attenuation(l.attenuation, lightDistance(l, p));
+}
+
+// The spot factor of light l for the unit vector L towards it; 1 for a light that is not a spot.
+float spotTerm(Light l, vec3 L) {
+    return l.type == LIGHT_SPOT ? spotFactor(L, l.direction, l.cosCutoff, l.exponent) : 1.0f;
+}
+
 // Att_i: distance attenuation times the spot factor; 1 for a directional light.
 float lightAttenuation(Light l, vec3 p, vec3 L) {
-    if (l.type == LIGHT_DIRECTIONAL) {
-        return 1.0f;
-    }
-    float att = attenuation(l.attenuation, length(l.position - p));
-    if (l.type == LIGHT_SPOT) {
-        att *= spotFactor(L, l.direction, l.cosCutoff, l.exponent);
-    }
-    return att;
+    return distanceAttenuation(l, p) * spotTerm(l, L);
 }
 
 // Light l's terms of the sum below, Ia_i*Ka + Att_i (Id_i*Kd max(0, N.L_i) + Is_i*Ks S_i),
@@ -226,7 +240,7 @@ LightTerms lightContribution(Material m, Brdf b, Terms t, Light l, vec3 p, vec3 
 // clamped to [0, 1]. Phong 1975, with the OpenGL 1.x light model.
 vec3 shade(Material m, Brdf b, Terms t, vec3 ambientLight, Light lights[MAX_LIGHTS],
            int lightCount, vec3 p, vec3 N) {
-    vec3 V = dot(p, p) > 1e-30f ? normalize(-p) : vec3(0.0f, 0.0f, 1.0f); // a vertex at the eye: look along -z
+    vec3 V = viewVector(p);
     vec3 color = vec3(0.0f);
     if (t.emissive) {
         color += m.emissive;
@@ -241,4 +255,58 @@ vec3 shade(Material m, Brdf b, Terms t, vec3 ambientLight, Light lights[MAX_LIGH
         color += c.specular;
     }
     return clamp(color, 0.0f, 1.0f);
+}
+
+// V, the unit vector from p towards the eye (at the origin of eye space); a point at the eye looks
+// along -z.
+vec3 viewVector(vec3 p) {
+    return dot(p, p) > 1e-30f ? normalize(-p) : vec3(0.0f, 0.0f, 1.0f);
+}
+
+//----------------------------------------------------------------------------------------
+// The factors, one at a time (the factor views)
+//----------------------------------------------------------------------------------------
+
+// One factor of light l's term at p, computed by the very functions shade() multiplies together:
+// max(0, N.L), max(0, N.V), max(0, R.V), max(0, N.H), D, F, G, the Cook-Torrance denominator,
+// Att(d), the spot factor and d. So with one light and N.L > 0, Cook-Torrance's specular term is
+// D F G / denominator * Ks Is * attenuation * spot, and Phong's is R.V^n * Ks Is * attenuation * spot.
+float equationFactor(int factor, Brdf b, Light l, vec3 p, vec3 N, vec3 V) {
+    vec3 L = lightVector(l, p);
+    vec3 H = halfVector(L, V);
+    float NoH = dot(N, H);
+    float NoV = dot(N, V);
+    float NoL = dot(N, L);
+    float VoH = dot(V, H);
+    if (factor == FACTOR_N_DOT_L) {
+        return max(NoL, 0.0f);
+    }
+    if (factor == FACTOR_N_DOT_V) {
+        return max(NoV, 0.0f);
+    }
+    if (factor == FACTOR_R_DOT_V) {
+        return max(dot(reflectionVector(N, L), V), 0.0f);
+    }
+    if (factor == FACTOR_N_DOT_H) {
+        return max(NoH, 0.0f);
+    }
+    if (factor == FACTOR_D) {
+        return distributionTerm(NoH, b);
+    }
+    if (factor == FACTOR_F) {
+        return fresnelTerm(VoH, b);
+    }
+    if (factor == FACTOR_G) {
+        return geometryTerm(NoH, NoV, NoL, VoH, b);
+    }
+    if (factor == FACTOR_DENOMINATOR) {
+        return cookTorranceDenominator(NoV);
+    }
+    if (factor == FACTOR_ATTENUATION) {
+        return distanceAttenuation(l, p);
+    }
+    if (factor == FACTOR_SPOT) {
+        return spotTerm(l, L);
+    }
+    return lightDistance(l, p);
 }

@@ -14,6 +14,10 @@ const int LIGHT_POINT = 0, LIGHT_DIRECTIONAL = 1, LIGHT_SPOT = 2;
 const int BRDF_PHONG = 0, BRDF_BLINN_PHONG = 1, BRDF_COOK_TORRANCE = 2;
 const int DISTRIBUTION_BECKMANN = 0, DISTRIBUTION_GAUSSIAN = 1, DISTRIBUTION_GGX = 2;
 const int FRESNEL_SCHLICK = 0, FRESNEL_FULL = 1;
+// The factors equationFactor() gives, in view_mode.h's order of the factor views (from NdotL).
+const int FACTOR_N_DOT_L = 0, FACTOR_N_DOT_V = 1, FACTOR_R_DOT_V = 2, FACTOR_N_DOT_H = 3, FACTOR_D = 4,
+          FACTOR_F = 5, FACTOR_G = 6, FACTOR_DENOMINATOR = 7, FACTOR_ATTENUATION = 8, FACTOR_SPOT = 9,
+          FACTOR_DISTANCE = 10;
 
 struct Material {
     vec3 emissive;
@@ -87,12 +91,18 @@ float geometryCookTorrance(float NoH, float NoV, float NoL, float VoH);
 float distributionTerm(float NoH, Brdf b);
 float fresnelTerm(float VoH, Brdf b);
 float geometryTerm(float NoH, float NoV, float NoL, float VoH, Brdf b);
+float cookTorranceDenominator(float NoV);
 float cookTorranceSpecular(vec3 N, vec3 L, vec3 V, Brdf b);
 float specularFactor(vec3 N, vec3 L, vec3 V, float shininess, Brdf b);
 
 // The whole model
 vec3 lightVector(Light l, vec3 p);
+float lightDistance(Light l, vec3 p);
+float distanceAttenuation(Light l, vec3 p);
+float spotTerm(Light l, vec3 L);
 float lightAttenuation(Light l, vec3 p, vec3 L);
 LightTerms lightContribution(Material m, Brdf b, Terms t, Light l, vec3 p, vec3 N, vec3 V);
 vec3 shade(Material m, Brdf b, Terms t, vec3 ambientLight, Light lights[MAX_LIGHTS],
            int lightCount, vec3 p, vec3 N);
+vec3 viewVector(vec3 p);
+float equationFactor(int factor, Brdf b, Light l, vec3 p, vec3 N, vec3 V);

@@ -103,7 +103,7 @@ Change compare(const Image& a, const Image& b) {
 
 // The lighting model's structs as rows (core/lighting/lighting.h's ShaderStruct) and the linked
 // programs agree: every active uniform of a struct is a row, every row is an active uniform, in
-// both programs (per vertex and per pixel). A field added to lighting_api.glsl without its row,
+// every program (per vertex, per pixel, and the Gouraud error's). A field added to lighting_api.glsl without its row,
 // or a row whose field was renamed, fails here.
 TEST(ShaderRows, TheProgramsActiveUniformsAreTheRowsOfTheShadingStructs) {
     HeadlessGl gl;
@@ -112,8 +112,9 @@ TEST(ShaderRows, TheProgramsActiveUniformsAreTheRowsOfTheShadingStructs) {
     const std::vector<std::pair<std::string, const ShaderStruct*>> structs = {
         {"u_material", &kMaterialUniform}, {"u_brdf", &kBrdfUniform}, {"u_terms", &kTermsUniform}};
     const std::set<std::string> others = {"u_modelView", "u_projection", "u_normalMatrix",
-                                          "u_ambientLight", "u_lightCount", "u_showNormals"};
-    for (const char* define : {"LAB_PER_VERTEX 1", "LAB_PER_PIXEL 1"}) {
+                                          "u_ambientLight", "u_lightCount", "u_view", "u_factor",
+                                          "u_factorLight", "u_palette", "u_range", "u_valueBits"};
+    for (const char* define : {"LAB_PER_VERTEX 1", "LAB_PER_PIXEL 1", "LAB_GOURAUD_ERROR 1"}) {
         SCOPED_TRACE(define);
         Diagnostics d;
         std::optional<GLuint> program = buildProgram(builtinStageSources(), {define}, d);
@@ -129,6 +130,10 @@ TEST(ShaderRows, TheProgramsActiveUniformsAreTheRowsOfTheShadingStructs) {
             active.insert(name);
         }
         std::set<std::string> rows(others);
+        if (std::string(define) == "LAB_GOURAUD_ERROR 1") { // it compares the lit colours: no factor
+            rows.erase("u_factor");
+            rows.erase("u_factorLight");
+        }
         for (const auto& [uniform, shape] : structs) {
             for (const ShaderField& f : shape->fields) {
                 rows.insert(uniform + "." + f.name);

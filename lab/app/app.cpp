@@ -341,8 +341,8 @@ void App::Impl::drawViewports(const ui::Layout& layout, float toPixels, float wi
     const ViewSettings& view = workspace.view;
     for (const ShownSide& side : sides(layout, false)) {
         if (side.mesh) {
-            renderer.draw(viewed(side.shown, view.mode), side.mesh, toViewport(side.rect, toPixels, windowHeight, dx, dy),
-                          DrawOptions{view.mode == ViewMode::Normals});
+            drawView(renderer, side.shown, side.mesh, toViewport(side.rect, toPixels, windowHeight, dx, dy),
+                     viewDraw(view));
         }
     }
 }
@@ -358,10 +358,9 @@ bool App::Impl::updateViewports(const ui::Layout& layout, const FrameInput& in, 
     std::vector<ShownSide> live = sides(layout, true);
     for (ShownSide& side : live) {
         Viewport dest = toViewport(side.rect, toPixels, in.windowHeight);
-        ViewportKey key{viewed(side.shown, view.mode), std::move(side.mesh),
-                    std::max(1, static_cast<int>(std::lround(dest.width * scale))),
-                    std::max(1, static_cast<int>(std::lround(dest.height * scale))), view.mode == ViewMode::Normals,
-                    renderer.generation()};
+        ViewportKey key{side.shown, std::move(side.mesh), std::max(1, static_cast<int>(std::lround(dest.width * scale))),
+                        std::max(1, static_cast<int>(std::lround(dest.height * scale))), viewDraw(view),
+                        renderer.generation()};
         shown.emplace_back(&renders[side.index], dest);
         drawn = renders[side.index].update(renderer, key, dest, viewportSamples) || drawn;
     }

@@ -5,7 +5,11 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,7 +46,8 @@ struct StructUniform {
 // Uniform locations of one program, looked up once after linking.
 struct Uniforms {
     GLint modelView = -1, projection = -1, normalMatrix = -1;
-    GLint ambientLight = -1, lightCount = -1, showNormals = -1;
+    GLint ambientLight = -1, lightCount = -1;
+    GLint view = -1, factor = -1, factorLight = -1, palette = -1, range = -1, valueBits = -1;
     StructUniform material, brdf, terms;
     std::vector<StructUniform> lights;
 
@@ -55,7 +60,12 @@ struct Uniforms {
         normalMatrix = at("u_normalMatrix");
         ambientLight = at("u_ambientLight");
         lightCount = at("u_lightCount");
-        showNormals = at("u_showNormals");
+        view = at("u_view");
+        factor = at("u_factor");
+        factorLight = at("u_factorLight");
+        palette = at("u_palette");
+        range = at("u_range");
+        valueBits = at("u_valueBits");
         for (int i = 0; i < glsl::MAX_LIGHTS; ++i) {
             lights.emplace_back(p, kLightUniform, "u_lights[" + std::to_string(i) + "]");
         }
@@ -74,6 +84,16 @@ struct Uniforms {
         for (int i = 0; i < in.lightCount; ++i) {
             lights[static_cast<std::size_t>(i)].upload(&in.lights[i]);
         }
+    }
+
+    // What the view writes (view.glsl); `packedLight` is the factor's light among in.lights.
+    void uploadView(const DrawOptions& o, int packedLight, bool bits) const {
+        glUniform1i(view, viewKind(o.view));
+        glUniform1i(factor, factorIndex(o.view));
+        glUniform1i(factorLight, std::max(0, packedLight));
+        glUniform1i(palette, paletteIndex(o.palette));
+        glUniform2f(range, o.range.lo, o.range.hi);
+        glUniform1i(valueBits, bits ? 1 : 0);
     }
 };
 
@@ -123,7 +143,7 @@ GLsizei uploadFlat(GLuint& vao, GLuint& vbo, const std::vector<FlatVertex>& vert
 struct Renderer::Impl {
     StageSources sources;
     unsigned generation = 0;
-    Program perVertex, perPixel;
+    Program perVertex, perPixel, gouraudError;
 
     bool build(const StageSources& s, Diagnostics& diagnostics) {
         std::optional<GLuint> v = buildProgram(s, {"LAB_PER_VERTEX 1"}, diagnostics);
@@ -135,16 +155,29 @@ struct Renderer::Impl {
             glDeleteProgram(*v);
             return false;
         }
+        std::optional<GLuint> e = buildProgram(s, {"LAB_GOURAUD_ERROR 1"}, diagnostics);
+        if (!e) {
+            glDeleteProgram(*v);
+            glDeleteProgram(*p);
+            return false;
+        }
         perVertex.reset(*v);
         perPixel.reset(*p);
+        gouraudError.reset(*e);
         sources = s;
         ++generation;
         return true;
     }
 
-    const Program& programFor(Shading shading) const {
+    // gouraud-error compares the two evaluation sites on the smooth mesh, whatever the shading.
+    const Program& programFor(Shading shading, ViewMode view = ViewMode::Lit) const {
+        if (view == ViewMode::GouraudError) {
+            return gouraudError;
+        }
         return shading == Shading::Phong ? perPixel : perVertex;
     }
+
+    void drawView(const Preset& preset, GpuMesh& mesh, const Viewport& viewport, const DrawOptions& options, bool bits);
 
     // GPU copies of the meshes being drawn. A copy whose mesh nobody else holds any more (the
     // cache evicted it, the caller dropped it) is released on the next lookup.
@@ -168,6 +201,7 @@ Renderer::~Renderer() {
     impl_->uploads.clear();
     impl_->perVertex.reset(0);
     impl_->perPixel.reset(0);
+    impl_->gouraudError.reset(0);
 }
 
 bool Renderer::init(Diagnostics& diagnostics) { return impl_->build(builtinStageSources(), diagnostics); }
@@ -180,33 +214,88 @@ const StageSources& Renderer::stageSources() const { return impl_->sources; }
 
 unsigned Renderer::generation() const { return impl_->generation; }
 
-void Renderer::draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewport, const DrawOptions& options) {
-    Impl& m = *impl_;
+void Renderer::Impl::drawView(const Preset& shown, GpuMesh& mesh, const Viewport& viewport, const DrawOptions& asked,
+                              bool bits) {
+    DrawOptions options = asked;
+    if (!notApplicable(options.view, shown, options.light).empty()) {
+        options.view = ViewMode::Lit;
+    }
+    const Preset preset = viewed(shown, options.view);
+    int x0 = viewport.x + static_cast<int>(std::lround(std::clamp(options.fromX, 0.0f, 1.0f) * viewport.width));
+    int x1 = viewport.x + static_cast<int>(std::lround(std::clamp(options.toX, 0.0f, 1.0f) * viewport.width));
     glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
-    glScissor(viewport.x, viewport.y, viewport.width, viewport.height);
+    glScissor(x0, viewport.y, std::max(0, x1 - x0), viewport.height);
     glEnable(GL_SCISSOR_TEST);
     glDisable(GL_DITHER);
     glDisable(GL_BLEND);
-    glClearColor(preset.background.r, preset.background.g, preset.background.b, 1.0f);
+    glm::vec3 background = showsValue(options.view) ? glm::vec3(0.0f) : preset.background;
+    if (bits) {
+        glClearColor(1.0f, 1.0f, 1.0f, 1.0f); // all bits set: a NaN, which no model pixel counts as
+    } else {
+        glClearColor(background.r, background.g, background.b, 1.0f);
+    }
     glClearDepthf(1.0f);
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glDisable(GL_SCISSOR_TEST);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE); // no two-sided lighting, as in the classic pipeline; a plane seen from behind stays visible
-    const Program& program = m.programFor(preset.shading);
+    const Program& program = programFor(preset.shading, options.view);
     glUseProgram(program.id);
     Transforms t = computeTransforms(preset, static_cast<float>(viewport.width) / static_cast<float>(viewport.height));
     program.uniforms->upload(t, packShading(preset, t.view));
-    glUniform1i(program.uniforms->showNormals, options.showNormals);
-    if (preset.shading == Shading::Flat) {
+    program.uniforms->uploadView(options, packedLightIndex(preset, options.light), bits);
+    if (preset.shading == Shading::Flat && options.view != ViewMode::GouraudError) {
         mesh.drawFlat();
     } else {
         mesh.drawSmooth();
     }
     glUseProgram(0);
     glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+void Renderer::draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewport, const DrawOptions& options) {
+    impl_->drawView(preset, mesh, viewport, options, false);
+}
+
+std::optional<ValueRange> Renderer::autoValueRange(const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
+                                                   int width, int height, const DrawOptions& options) {
+    if (!showsValue(options.view) || !notApplicable(options.view, preset, options.light).empty() || width < 1 ||
+        height < 1) {
+        return std::nullopt;
+    }
+    float shrink = std::min(1.0f, static_cast<float>(kRangeRenderSize) / static_cast<float>(std::max(width, height)));
+    int w = std::max(1, static_cast<int>(std::lround(width * shrink)));
+    int h = std::max(1, static_cast<int>(std::lround(height * shrink)));
+    GLint bound = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &bound);
+    std::vector<std::uint8_t> bytes(std::size_t(w) * std::size_t(h) * 4);
+    {
+        Framebuffer target(w, h);
+        target.bind();
+        DrawOptions whole = options;
+        whole.fromX = 0.0f;
+        whole.toX = 1.0f;
+        impl_->drawView(preset, impl_->upload(mesh), Viewport{0, 0, w, h}, whole, true);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(bound));
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (std::size_t i = 0; i < bytes.size(); i += 4) {
+        std::uint32_t b = std::uint32_t(bytes[i]) | std::uint32_t(bytes[i + 1]) << 8 | std::uint32_t(bytes[i + 2]) << 16 |
+                          std::uint32_t(bytes[i + 3]) << 24;
+        float v = std::bit_cast<float>(b);
+        if (std::isfinite(v)) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    }
+    if (!(lo <= hi)) {
+        return std::nullopt;
+    }
+    return autoRange(lo, hi);
 }
 
 void Renderer::draw(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const Viewport& viewport,
@@ -221,7 +310,7 @@ void Renderer::drawPoints(const Preset& preset, const std::vector<FlatVertex>& v
     glUseProgram(program.id);
     Transforms t = computeTransforms(preset, static_cast<float>(width) / static_cast<float>(height));
     program.uniforms->upload(t, packShading(preset, t.view));
-    glUniform1i(program.uniforms->showNormals, 0);
+    program.uniforms->uploadView(DrawOptions{}, 0, false);
     GLuint vao = 0, vbo = 0;
     GLsizei count = uploadFlat(vao, vbo, vertices);
     glBindVertexArray(vao);

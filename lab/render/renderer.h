@@ -15,6 +15,7 @@
 #include "render/shader.h"
 
 #include <memory>
+#include <optional>
 
 namespace lab {
 
@@ -43,9 +44,22 @@ struct Viewport {
     int x = 0, y = 0, width = 0, height = 0;
 };
 
+// What a draw shows (core/scene/view_mode.h). The renderer applies the view itself: a term view
+// switches the other terms off, a value view (a factor for `light`, or gouraud-error) is drawn
+// through `palette` over `range` on a black background. A view that does not apply to the preset
+// (notApplicable) draws the lit model. `fromX`..`toX` is the part of the viewport's width that is
+// cleared and drawn (the wipe draws its two sides so).
 struct DrawOptions {
-    bool showNormals = false; // colour = N * 0.5 + 0.5 instead of the lighting
+    ViewMode view = ViewMode::Lit;
+    int light = 0; // an index into preset.lights
+    ValuePalette palette = ValuePalette::Viridis;
+    ValueRange range;
+    float fromX = 0.0f, toX = 1.0f;
+    bool operator==(const DrawOptions&) const = default;
 };
+
+// The side of the automatic range's render: its longer side has at most this many pixels.
+inline constexpr int kRangeRenderSize = 256;
 
 // Owns the GL programs and the GPU copies of meshes (not copyable: impl_ is unique).
 class Renderer {
@@ -70,6 +84,14 @@ public:
     // The same with the renderer's own GPU copy of `mesh`, uploaded on first use.
     void draw(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const Viewport& viewport,
               const DrawOptions& options = {});
+
+    // The automatic range of options.view (view_mode.h autoRange) from the smallest and largest
+    // value on the model's pixels in a render of `width` × `height` scaled down so that its longer
+    // side is at most kRangeRenderSize: one extra draw that writes each value's float bits, read
+    // back (at most 256 KB). None when the view shows no value or no pixel of the model is seen.
+    // Leaves the framebuffer that was bound bound.
+    std::optional<ValueRange> autoValueRange(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, int width,
+                                             int height, const DrawOptions& options);
 
     // Draws `vertices` as single-pixel points with the preset's shading, transforms and
     // lights (no clear). The CPU–GPU parity test places probes with it.

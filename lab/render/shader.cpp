@@ -23,6 +23,7 @@ struct Part {
 constexpr Part kPrelude{"prelude (precision and defines)", 100001};
 constexpr Part kApi{"lighting_api.glsl", 200001};
 constexpr Part kLighting{"lighting.glsl", 300001};
+constexpr Part kView{"view.glsl", 400001};
 
 std::string lineDirective(const Part& part) { return "\n#line " + std::to_string(part.firstLine) + "\n"; }
 
@@ -38,6 +39,8 @@ std::string assemble(std::string_view body, std::string_view lighting, const std
     s += shaderSource("lighting_api.glsl");
     s += lineDirective(kLighting);
     s += lighting;
+    s += lineDirective(kView);
+    s += shaderSource("view.glsl");
     s += "\n#line 1\n";
     s += body;
     return s;
@@ -45,7 +48,7 @@ std::string assemble(std::string_view body, std::string_view lighting, const std
 
 // "file:line" for a line number of the assembled source.
 std::string place(long line, std::string_view bodyName) {
-    for (const Part* part : {&kLighting, &kApi, &kPrelude}) {
+    for (const Part* part : {&kView, &kLighting, &kApi, &kPrelude}) {
         if (line >= part->firstLine) {
             return std::string(part->name) + ":" + std::to_string(line - part->firstLine + 1);
         }

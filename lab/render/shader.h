@@ -2,11 +2,11 @@
 //
 // The GLSL files in shaders/ are embedded in the program at build time (shader_sources.h).
 // A program is assembled as: version line, precision, defines, lighting_api.glsl,
-// lighting.glsl, then the stage's own body, each part after a `#line` so compile errors
-// name the file and line they come from ("lighting.glsl:12: ..."). lighting_api.glsl (the
-// constants, structs and prototypes) is always the embedded one; lighting.glsl and the stage
-// bodies are strings the caller owns, so the GUI's shader editor can compile edited text the
-// same way. Text that is not ASCII is refused before anything is compiled: GLSL ES and WebGL
+// lighting.glsl, view.glsl (the value views' palettes), then the stage's own body, each part
+// after a `#line` so compile errors name the file and line they come from ("lighting.glsl:12:
+// ..."). lighting_api.glsl (the constants, structs and prototypes) and view.glsl are always the
+// embedded ones; lighting.glsl and the stage bodies are strings the caller owns, so the GUI's
+// shader editor can compile edited text the same way. Text that is not ASCII is refused before anything is compiled: GLSL ES and WebGL
 // reject it, and the drivers' messages about it are cryptic.
 #pragma once
 

@@ -21,7 +21,7 @@ namespace {
 
 // A combo over every value of an enumeration (core/scene/preset_choices.h), with one display name each.
 template <typename E, std::size_t N>
-bool enumCombo(const char* label, E& value, const std::array<E, N>& values, const char* const (&names)[N]) {
+bool enumCombo(const char* label, E& value, const std::array<E, N>& values, const char* const* names) {
     int current = 0;
     for (std::size_t i = 0; i < N; ++i) {
         if (values[i] == value) {
@@ -198,10 +198,14 @@ void shadingSection(Preset& p, ViewSettings& view) {
         ImGui::Checkbox((std::string(name) + "##t").c_str(), on);
         mark(std::string("terms.") + name);
     }
-    static const char* const viewNames[] = {toString(ViewMode::Lit),     toString(ViewMode::Emissive),
-                                            toString(ViewMode::Ambient), toString(ViewMode::Diffuse),
-                                            toString(ViewMode::Specular), toString(ViewMode::Normals)};
-    enumCombo("view (V)", view.mode, kViewModes, viewNames);
+    static const std::array<const char*, kViewModes.size()> viewNames = [] {
+        std::array<const char*, kViewModes.size()> names{};
+        for (std::size_t i = 0; i < kViewModes.size(); ++i) {
+            names[i] = toString(kViewModes[i]);
+        }
+        return names;
+    }();
+    enumCombo("view (V)", view.mode, kViewModes, viewNames.data());
     mark("view_mode");
     helpMarker("Shows one contribution on the model without changing the preset.");
     lightColorEdit("global ambient", p.ambientLight);

@@ -9,7 +9,47 @@ namespace lab {
 
 namespace glsl {
 #include "lighting.glsl"
+#include "view.glsl"
 } // namespace glsl
+
+int viewKind(ViewMode mode) {
+    if (mode == ViewMode::Normals) {
+        return glsl::VIEW_NORMALS;
+    }
+    if (mode == ViewMode::GouraudError) {
+        return glsl::VIEW_GOURAUD_ERROR;
+    }
+    return isFactor(mode) ? glsl::VIEW_FACTOR : glsl::VIEW_SHADE;
+}
+
+int factorIndex(ViewMode mode) {
+    static_assert(static_cast<int>(ViewMode::RdotV) - static_cast<int>(ViewMode::NdotL) == glsl::FACTOR_R_DOT_V);
+    static_assert(static_cast<int>(ViewMode::D) - static_cast<int>(ViewMode::NdotL) == glsl::FACTOR_D);
+    static_assert(static_cast<int>(ViewMode::Denominator) - static_cast<int>(ViewMode::NdotL) ==
+                  glsl::FACTOR_DENOMINATOR);
+    static_assert(static_cast<int>(ViewMode::Distance) - static_cast<int>(ViewMode::NdotL) == glsl::FACTOR_DISTANCE);
+    return isFactor(mode) ? static_cast<int>(mode) - static_cast<int>(ViewMode::NdotL) : 0;
+}
+
+int paletteIndex(ValuePalette palette) {
+    static_assert(static_cast<int>(ValuePalette::Viridis) == glsl::PALETTE_VIRIDIS);
+    static_assert(static_cast<int>(ValuePalette::Grey) == glsl::PALETTE_GREY);
+    return static_cast<int>(palette);
+}
+
+glm::vec3 paletteColor(ValuePalette palette, float t) { return glsl::paletteColor(paletteIndex(palette), t); }
+
+int packedLightIndex(const Preset& preset, int light) {
+    if (light < 0 || light >= static_cast<int>(preset.lights.size()) ||
+        !preset.lights[static_cast<std::size_t>(light)].enabled) {
+        return -1;
+    }
+    int packed = 0;
+    for (int i = 0; i < light; ++i) {
+        packed += preset.lights[static_cast<std::size_t>(i)].enabled ? 1 : 0;
+    }
+    return packed < glsl::MAX_LIGHTS ? packed : -1;
+}
 
 glm::mat4 modelMatrix(const Model& model) {
     glm::mat4 m = glm::translate(glm::mat4(1.0f), model.translate);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/scene/preset.h"
+#include "core/scene/view_mode.h"
 
 #include <glm/glm.hpp>
 
@@ -83,6 +84,18 @@ ShadingInputs packShading(const Preset& preset, const glm::mat4& view);
 
 // glsl::shade with the packed inputs: the colour at eye-space point p with unit normal N.
 glm::vec3 shade(const ShadingInputs& in, const glm::vec3& p, const glm::vec3& N);
+
+// The value views' side of the shaders (shaders/view.glsl, compiled here as C++ too): what lit.frag
+// is told to write for `mode` (VIEW_*), the factor (FACTOR_*, for a factor view), the palette's
+// number, and the palette itself, which the legends draw with.
+int viewKind(ViewMode mode);
+int factorIndex(ViewMode mode);
+int paletteIndex(ValuePalette palette);
+glm::vec3 paletteColor(ValuePalette palette, float t);
+
+// The enabled light that preset.lights[light] is in packShading's lights; -1 when it is off or
+// there is none.
+int packedLightIndex(const Preset& preset, int light);
 
 // Rec. 709 luminance.
 inline float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
