@@ -417,6 +417,22 @@ TEST(Workspace, ADroppedModelInCompareModeGoesToBothHalves) {
     EXPECT_EQ(f.ws.b(), beforeB);
 }
 
+// W and N switch the overlays of the shading rate: how the scene is shown, not the scene.
+TEST(Workspace, WAndNToggleTheWireframeAndTheVertexNormalsWithoutEditingThePreset) {
+    EXPECT_EQ(commandForKey('W', kNoModifier, false), Command::ToggleWireframe);
+    EXPECT_EQ(commandForKey('N', kNoModifier, false), Command::ToggleVertexNormals);
+    Fixture f;
+    f.ws.run({Command::ToggleWireframe});
+    f.ws.run({Command::ToggleVertexNormals});
+    f.ws.endFrame(false);
+    EXPECT_TRUE(f.ws.view.wireframe);
+    EXPECT_TRUE(f.ws.view.vertexNormals);
+    EXPECT_FALSE(f.ws.document().dirty());
+    f.ws.run({Command::ToggleWireframe});
+    EXPECT_FALSE(f.ws.view.wireframe);
+    EXPECT_TRUE(f.ws.view.vertexNormals);
+}
+
 TEST(Workspace, FFramesTheModelTightlyAlongTheViewDirectionAndIsUndoable) {
     EXPECT_EQ(commandForKey('F', kNoModifier, false), Command::FrameModel);
     Fixture f;

@@ -4,17 +4,20 @@
 #include "app/figure_export.h"
 #include "app/frame_speed.h"
 #include "app/orbit_clock.h"
+#include "app/pixel_probe.h"
 #include "app/sweep_image.h"
+#include "app/value_readout.h"
 #include "app/viewport_cache.h"
 #include "core/gltf/model_loader.h"
 #include "core/io/file_io.h"
 #include "core/io/safe_text.h"
-#include "core/lighting/probe.h"
 #include "core/scene/light_orbit.h"
 #include "render/renderer.h"
 #include "render/shader.h"
 #include "ui/screen.h"
 #include "ui/widget_map.h"
+
+#include <imgui.h>
 
 #include <algorithm>
 #include <array>
@@ -73,9 +76,7 @@ struct App::Impl {
     bool& frameTimeShown() { return presenter ? frameTimePresenting : frameTime; }
     float presenterScale = 1.75f;
     std::optional<InputEvent> pressed; // a left press whose release has not come yet
-    std::optional<ProbeResult> probe;
-    bool probeOpen = false;
-    unsigned probeScene = 0; // the scene the probe belongs to
+    PixelProbe probe; // the last probe, its window, and plots at the probe (app/pixel_probe.h)
     std::optional<Problem> problem;
     std::string toast;
     float toastLeft = 0.0f;
@@ -85,6 +86,7 @@ struct App::Impl {
     bool viewportDrawn = false; // by the last frame
     bool started = false;   // the workspace opened its first preset (in the first frame, App::frame)
     std::array<CachedViewport, 2> renders; // A's and B's, kept between frames
+    ValueReadout readout;                  // a value view's legend: A's range, the value under the pointer
     ViewportResolution resolution;
     int viewportSamples = 0;     // what the GL offers of AppOptions::viewportSamples
     unsigned long long frames = 0;
@@ -160,14 +162,16 @@ ui::ScreenModel App::Impl::screenModel() {
     m.sweep = &sweep;
     m.lightingSource = shaderSource("lighting.glsl");
     m.viewportControls = &viewportControls;
-    m.probe = probe ? &*probe : nullptr;
-    m.probeOpen = &probeOpen;
+    m.probe = probe.result();
+    m.probeOpen = &probe.open();
+    m.probeLobe = probe.lobe();
     m.showHelp = &showHelp;
     m.problem = problem ? &*problem : nullptr;
     m.unsavedQuestion = workspace.question() ? &*workspace.question() : nullptr;
     m.overlay = {name, doc.dirty(), m.a, m.b, workspace.view.mode, frameTimeShown() ? speed.shownMs(clock) : std::nullopt,
                  toastLeft > 0.0f ? toast.c_str() : nullptr, caption,
-                 probe && probeOpen ? std::optional<glm::vec3>(probe->positionWorld) : std::nullopt};
+                 probe.shown() ? std::optional<glm::vec3>(probe.result()->positionWorld) : std::nullopt, probe.lobe(),
+                 readout.legend(workspace.view, workspace.a(), renders[0].range()), std::nullopt, false};
     m.lightShapes = lightShapes;
     m.motion = anyOrbit(workspace.a()) ? &orbits.motion(0) : nullptr;
     return m;
@@ -270,6 +274,7 @@ void App::Impl::compileShaders(bool builtin) {
     }
 }
 
+// A click probes its pixel; a drag of the probe's marker probes the pixel under the pointer.
 void App::Impl::probeAt(const ui::ViewportEvents& viewport) {
     const ui::Rect& r = *viewport.probed;
     std::shared_ptr<const Mesh> mesh = workspace.mesh(Side::A);
@@ -278,11 +283,10 @@ void App::Impl::probeAt(const ui::ViewportEvents& viewport) {
     }
     glm::vec2 ndc(2.0f * (viewport.probeX - r.x) / r.w - 1.0f, 1.0f - 2.0f * (viewport.probeY - r.y) / r.h);
     Preset scene = orbits.shown(workspace.a(), 0); // the light where it is shown
-    probe = probePixel(viewed(scene, workspace.view.mode), *mesh, ndc, r.w / r.h);
-    probeOpen = probe.has_value(); // a click beside the model closes the probe
-    probeScene = workspace.scenesOpened();
-    if (!probe) {
-        toast = "No surface under the mouse: the probe is closed";
+    std::string missed = probe.probe(viewed(scene, workspace.view.mode), *mesh, ndc, r.w / r.h,
+                                     viewport.probeDragged, workspace.scenesOpened());
+    if (!missed.empty()) {
+        toast = missed;
         toastLeft = kToastSeconds;
     }
 }
@@ -298,9 +302,6 @@ void App::Impl::collectMessages(float deltaTime) {
     std::vector<Problem> problems = workspace.takeProblems();
     if (!problems.empty()) {
         problem = std::move(problems.back());
-    }
-    if (probe && probeScene != workspace.scenesOpened()) {
-        probe.reset(); // it belonged to the scene before
     }
 }
 
@@ -496,6 +497,8 @@ FrameOutput App::frame(const FrameInput& in) {
     bool orbiting = m.orbits.advance({&ws.a(), ws.mesh(Side::A)},
                                      {ws.view.compare ? &ws.b() : nullptr, ws.view.compare ? ws.mesh(Side::B) : nullptr},
                                      ws.scenesOpened(), in.deltaTime, events.gesture || events.dragging);
+    // Plots at the probe follow the point; what the UI drawn this frame did not show yet is owed a frame.
+    bool probeMoved = m.probe.follow(viewed(m.orbits.shown(ws.a(), 0), ws.view.mode), ws.view, ws.scenesOpened());
 
     //--- the renderer draws what the workspace holds ---------------------------------------
     if (std::exchange(m.screenshotRequested, false)) {
@@ -503,12 +506,22 @@ FrameOutput App::frame(const FrameInput& in) {
     }
     float scale = m.resolution.update(events.dragging, in.lastFrameSeconds, m.options.frameBudgetSeconds);
     m.viewportDrawn = m.updateViewports(layout, in, scale);
+    if (!m.shown.empty()) {
+        ImVec2 pointer = ImGui::GetIO().MousePos;
+        m.readout.update(m.renderer, m.renders[0], m.shown[0].second, static_cast<float>(in.framebufferWidth) / in.windowWidth,
+                         in.windowHeight, pointer.x, pointer.y, ws.view);
+    }
+    // The legend showed the range and value as they stood before this frame's render: one more frame.
+    bool legendOwed = m.readout.takeChanged() ||
+                      (model.overlay.legend && model.overlay.legend->range != m.renders[0].range() &&
+                       model.overlay.legend->note.empty());
     bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);
     bindFramebuffer(in.targetFramebuffer);
     // A toast is removed when its time is up; nothing else on screen changes by itself (a
     // reduced view is drawn at full size by the frame that ends the drag).
     m.interacting = events.gesture || events.dragging || orbiting;
-    float redrawIn = m.orbits.redrawIn(sweepDrawn ? 0.0f : m.textGoesIn(), orbiting, in.deltaTime);
+    float redrawIn = m.orbits.redrawIn(sweepDrawn || legendOwed || (probeMoved && !orbiting) ? 0.0f : m.textGoesIn(),
+                                       orbiting, in.deltaTime);
     if (m.options.layoutFile) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }

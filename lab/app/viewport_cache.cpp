@@ -6,38 +6,6 @@
 
 namespace lab {
 
-ViewDraw viewDraw(const ViewSettings& view) {
-    ViewDraw d;
-    d.options.view = view.mode;
-    d.options.light = view.light;
-    d.options.palette = view.palette;
-    d.automatic = showsValue(view.mode) && !view.range;
-    d.options.range = view.range.value_or(ValueRange{});
-    d.wipe = view.wipe && view.mode != ViewMode::Lit;
-    if (d.wipe) {
-        d.options.fromX = std::clamp(view.wipeAt, 0.0f, 1.0f);
-    }
-    return d;
-}
-
-std::optional<ValueRange> drawView(Renderer& renderer, const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
-                                   const Viewport& viewport, const ViewDraw& draw) {
-    DrawOptions options = draw.options;
-    std::optional<ValueRange> range;
-    if (showsValue(options.view) && notApplicable(options.view, preset, options.light).empty()) {
-        range = draw.automatic ? renderer.autoValueRange(preset, mesh, viewport.width, viewport.height, options)
-                               : std::optional<ValueRange>(options.range);
-        options.range = range.value_or(ValueRange{});
-    }
-    if (draw.wipe) {
-        DrawOptions lit;
-        lit.toX = options.fromX;
-        renderer.draw(preset, mesh, viewport, lit);
-    }
-    renderer.draw(preset, mesh, viewport, options);
-    return range;
-}
-
 bool CachedViewport::update(Renderer& renderer, const ViewportKey& key, const Viewport& full, int samples) {
     if (key_ && *key_ == key && target_) {
         return false;

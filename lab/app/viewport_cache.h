@@ -17,21 +17,6 @@
 
 namespace lab {
 
-// How the view settings draw a viewport: the view (options; its range is the fixed one, replaced
-// by the one found when `automatic`), and with the wipe, the lit model left of options.fromX.
-struct ViewDraw {
-    DrawOptions options;
-    bool automatic = false; // a value view with an automatic range (Renderer::autoValueRange)
-    bool wipe = false;
-    bool operator==(const ViewDraw&) const = default;
-};
-ViewDraw viewDraw(const ViewSettings& view);
-
-// Draws a viewport as `draw` says into the bound framebuffer; the value view's range, when it
-// shows one.
-std::optional<ValueRange> drawView(Renderer& renderer, const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
-                                   const Viewport& viewport, const ViewDraw& draw);
-
 // Everything a drawn view depends on; the view is drawn again when any of it changes.
 struct ViewportKey {
     Preset preset;                     // as shown (the renderer applies the view)
@@ -52,6 +37,8 @@ public:
     // Copies the last drawn view into `dest` of framebuffer `target`, scaled to fit.
     void present(unsigned target, const Viewport& dest) const;
     void reset(); // forget it (the next update draws)
+    // What was drawn last (none before the first update, or after reset).
+    const std::optional<ViewportKey>& key() const { return key_; }
     // The range the value view was drawn with (its legend's); none for the other views.
     const std::optional<ValueRange>& range() const { return range_; }
 

@@ -147,7 +147,13 @@ bool Workspace::runEdit(Command command) {
     case Command::ShadingPhong: e.shading = Shading::Phong; return true;
     case Command::NextBrdf: e.brdf = nextOf(kBrdfModels, e.brdf); return true;
     case Command::ToggleNormalMatrix: e.normalMatrix = nextOf(kNormalMatrixModes, e.normalMatrix); return true;
-    case Command::NextViewMode: view.mode = nextOf(kViewModes, view.mode); return true;
+    case Command::NextViewMode: // the views that apply to the edited set (the lit model always does)
+        do {
+            view.mode = nextOf(kViewModes, view.mode);
+        } while (!notApplicable(view.mode, e, view.light).empty());
+        return true;
+    case Command::ToggleWireframe: view.wireframe = !view.wireframe; return true;
+    case Command::ToggleVertexNormals: view.vertexNormals = !view.vertexNormals; return true;
     case Command::ResetCamera: doc_.preset.camera = doc_.saved().camera; return true;
     case Command::FrameModel: frameModel(); return true;
     case Command::ToggleCompare:

@@ -155,6 +155,9 @@ class Checker {
         }
         Tolerances tolerances = tolerancesFor(loaded->preset, options_);
         render(*loaded, stem, tolerances);
+        for (std::size_t i = 0; i < loaded->preset.check.views.size(); ++i) {
+            checkView(*loaded, stem, tolerances, i);
+        }
         if (!loaded->preset.sweep.empty()) {
             sweep(*loaded, stem, tolerances);
         }
@@ -269,13 +272,38 @@ class Checker {
         }
     }
 
-    void render(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances) {
+    // The preset's check.views[i] (drawn with viridis over its automatic range) against
+    // <stem>.<view>.png (<stem>.<view>.light<N>.png for a light other than the first).
+    void checkView(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances, std::size_t i) {
+        const CheckView& v = preset.preset.check.views[i];
+        ViewDraw draw;
+        draw.options.view = *viewFromName(v.view); // checked when the preset was read
+        draw.options.light = v.light - 1;
+        draw.automatic = showsValue(draw.options.view);
+        const std::string name = stem + "." + v.view + (v.light == 1 ? "" : ".light" + std::to_string(v.light));
+        std::string why = notApplicable(draw.options.view, preset.preset, draw.options.light);
+        if (!why.empty()) {
+            auto began = std::chrono::steady_clock::now();
+            CheckCase c = start(CheckCase::Kind::Render, name, preset.file);
+            badInputCase(c, "check.views[" + std::to_string(i) + "]: " + why);
+            finish(c, began);
+            return;
+        }
+        render(preset, name, tolerances, draw);
+    }
+
+    void render(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances,
+                const ViewDraw& view = {}) {
         auto began = std::chrono::steady_clock::now();
         CheckCase c = start(CheckCase::Kind::Render, stem, preset.file);
         c.tolerance = tolerances.imageText;
         Diagnostics diagnostics;
-        std::optional<Image> actual =
-            gpu_.renderer.render(preset, options_.size.width, options_.size.height, diagnostics);
+        std::optional<Rendered> rendered =
+            gpu_.renderer.renderView(preset, options_.size.width, options_.size.height, view, diagnostics);
+        std::optional<Image> actual;
+        if (rendered) {
+            actual = std::move(rendered->image);
+        }
         fs::path goldenFile = options_.golden / (stem + ".png");
         std::optional<Image> golden;
         if (!actual) {

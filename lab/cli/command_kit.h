@@ -38,8 +38,9 @@ bool frameForCells(LoadedPreset& preset, Diagnostics& diagnostics);
 
 // `preset` (framed: frameForCells) swept along `axes` as one labelled grid of `cell`-sized
 // renders (core/scene/sweep.h). Nullopt with a one-line `error`: `renderFailed` tells a render that
-// failed (an internal failure) from a key or value the preset refuses (bad input).
+// failed (an internal failure) from a key or value the preset refuses (bad input). Each cell is
+// drawn as `view` says (the lit model by default).
 std::optional<Image> renderSweepGrid(Gpu& gpu, const LoadedPreset& preset, const std::vector<SweepAxis>& axes,
-                                     Size cell, std::string& error, bool& renderFailed);
+                                     Size cell, std::string& error, bool& renderFailed, const ViewDraw& view = {});
 
 } // namespace lab

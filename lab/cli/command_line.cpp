@@ -2,6 +2,8 @@
 #include "cli/command_line.h"
 
 #include "cli/output.h"
+#include "core/io/safe_text.h"
+#include "core/io/suggest.h"
 #include "core/scene/limits.h"
 
 #include <CLI/CLI.hpp>
@@ -156,6 +158,9 @@ struct RenderArguments {
     std::vector<std::string> presets;
     std::string out, size = "512x512";
     std::vector<std::string> sweeps;
+    std::string view, palette, range;
+    int light = 0; // 0: not given
+    bool legend = false;
 };
 
 CLI::App* addRenderCommand(CLI::App& app, RenderArguments& a) {
@@ -168,7 +173,72 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArguments& a) {
                        "--sweep: down the rows), e.g. --sweep material.shininess=10,20,30,50")
         ->allow_extra_args(false)
         ->take_all();
+    render->add_option("--view", a.view, "What to draw instead of the lit model: " + viewNames());
+    render->add_option("--light", a.light, "The light a factor view shows, from 1 (default 1)")
+        ->check(CLI::Range(1, 1000));
+    render->add_option("--palette", a.palette, "A value view's colours: viridis (default) or grey");
+    render->add_option("--range", a.range,
+                       "LO,HI: the values at a value view's first and last colour (default: the smallest and "
+                       "largest on the model, printed)");
+    render->add_flag("--legend", a.legend, "Add the value view's legend under the image");
     return render;
+}
+
+// "LO,HI" with LO < HI, both finite; nullopt with `error`.
+std::optional<ValueRange> parseRange(const std::string& text, std::string& error) {
+    std::size_t comma = text.find(',');
+    char* end = nullptr;
+    std::string lo = text.substr(0, comma), hi = comma == std::string::npos ? "" : text.substr(comma + 1);
+    float a = std::strtof(lo.c_str(), &end);
+    bool loOk = !lo.empty() && end && *end == '\0';
+    float b = std::strtof(hi.c_str(), &end);
+    bool hiOk = !hi.empty() && end && *end == '\0';
+    if (comma == std::string::npos || !loOk || !hiOk || !std::isfinite(a) || !std::isfinite(b)) {
+        error = "--range: expected LO,HI (two numbers), got " + inQuotes(text, 60);
+        return std::nullopt;
+    }
+    if (!(a < b)) {
+        error = "--range: LO must be less than HI, got " + inQuotes(text, 60);
+        return std::nullopt;
+    }
+    return ValueRange{a, b};
+}
+
+// --view and its options; false with the message printed.
+bool renderViewLine(const RenderArguments& a, CommandLine& line) {
+    RenderView& v = line.view;
+    std::string error;
+    if (!a.view.empty()) {
+        std::optional<ViewMode> mode = viewFromName(a.view);
+        if (!mode) {
+            print(stderr, "lab render: --view: no view " + inQuotes(a.view, 60) + suggestion(a.view, viewNameList()) +
+                              "; the views are " + viewNames() + "\n");
+            return false;
+        }
+        v.mode = *mode;
+    }
+    if (!a.palette.empty() && a.palette != "viridis" && a.palette != "grey") {
+        print(stderr, "lab render: --palette: expected viridis or grey, got " + inQuotes(a.palette, 60) + "\n");
+        return false;
+    }
+    v.palette = a.palette == "grey" ? ValuePalette::Grey : ValuePalette::Viridis;
+    if (!a.range.empty() && !(v.range = parseRange(a.range, error))) {
+        print(stderr, "lab render: " + error + "\n");
+        return false;
+    }
+    v.light = a.light > 0 ? a.light - 1 : 0;
+    v.legend = a.legend;
+    const std::string notFor = ", not to --view " + std::string(viewName(v.mode)) + "\n";
+    if (a.light > 0 && !isFactor(v.mode)) {
+        print(stderr, "lab render: --light applies to a factor view (--view n-dot-l, d, spot, ...)" + notFor);
+        return false;
+    }
+    if ((!a.palette.empty() || !a.range.empty() || a.legend) && !showsValue(v.mode)) {
+        print(stderr, "lab render: --palette, --range and --legend apply to a value view (--view n-dot-l, d, "
+                      "gouraud-error, ...)" + notFor);
+        return false;
+    }
+    return true;
 }
 
 // False (with the message printed) for a --sweep that does not parse.
@@ -186,7 +256,7 @@ bool renderLine(const RenderArguments& a, CommandLine& line) {
         }
         line.sweeps.push_back(std::move(*axis));
     }
-    return true;
+    return renderViewLine(a, line);
 }
 
 // `lab plot`'s arguments as typed.

@@ -32,6 +32,7 @@ struct CommandLine {
     std::optional<std::filesystem::path> albedoOut; // plot --albedo
     FigureOutputs figure;                           // plot --figure, --svg, --png, --csv
     std::vector<SweepAxis> sweeps;                  // render --sweep (core/scene/sweep.h), columns then rows
+    RenderView view;                                // render --view, --light, --palette, --range, --legend
     CheckOptions check;
 };
 

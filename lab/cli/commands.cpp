@@ -6,7 +6,9 @@
 #include "core/gltf/model_loader.h"
 #include "core/io/file_io.h"
 #include "core/io/safe_text.h"
+#include "core/io/number_format.h"
 #include "core/plots/energy.h"
+#include "core/plots/legend.h"
 #include "core/plots/plot_data.h"
 #include "core/plots/sweep_grid.h"
 #include "core/scene/limits.h"
@@ -79,17 +81,18 @@ bool Gpu::start() {
 }
 
 std::optional<Image> renderSweepGrid(Gpu& gpu, const LoadedPreset& base, const std::vector<SweepAxis>& axes, Size cell,
-                                     std::string& error, bool& renderFailed) {
+                                     std::string& error, bool& renderFailed, const ViewDraw& view) {
     renderFailed = false;
     auto renderCell = [&](const LoadedPreset& one, int width, int height, std::string& why) -> std::optional<Image> {
         Diagnostics problems;
         std::vector<std::string> notes;
-        std::optional<Image> image = gpu.renderer.render(one, width, height, problems, &notes);
-        if (!image) {
+        std::optional<Rendered> r = gpu.renderer.renderView(one, width, height, view, problems, &notes);
+        if (!r) {
             renderFailed = true;
             why = problems.empty() ? "render failed" : problems.front().str();
+            return std::nullopt;
         }
-        return image;
+        return std::move(r->image);
     };
     return renderSweep(base, axes, cell.width, cell.height, renderCell, error);
 }
@@ -117,7 +120,42 @@ std::optional<Size> parseSize(const std::string& text, std::string& error) {
 // lab render
 //----------------------------------------------------------------------------------------
 
-int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size size) {
+namespace {
+
+ViewDraw viewDrawOf(const RenderView& v) {
+    ViewDraw d;
+    d.options.view = v.mode;
+    d.options.light = v.light;
+    d.options.palette = v.palette;
+    d.options.range = v.range.value_or(ValueRange{});
+    d.automatic = showsValue(v.mode) && !v.range;
+    return d;
+}
+
+// False, with the message, when `view` cannot show `preset` ("d is a Cook-Torrance factor; ...").
+bool viewApplies(const RenderView& view, const LoadedPreset& preset, const std::string& where) {
+    std::string why = notApplicable(view.mode, preset.preset, view.light);
+    if (!why.empty()) {
+        print(stderr, "lab render: %s: --view %s: %s\n", where.c_str(), viewName(view.mode), why.c_str());
+    }
+    return why.empty();
+}
+
+// The render as it is written: with the legend band when asked, and the automatic range said.
+Image finished(Rendered rendered, const RenderView& view, const fs::path& target) {
+    if (rendered.range && !view.range) {
+        print(stdout, "%s: %s: automatic range %s,%s\n", target.string().c_str(), legendTitle(view.mode, view.light).c_str(),
+              shortestFloat(rendered.range->lo).c_str(), shortestFloat(rendered.range->hi).c_str());
+    }
+    if (view.legend && rendered.range) {
+        return withLegend(rendered.image, {legendTitle(view.mode, view.light), *rendered.range, view.palette});
+    }
+    return std::move(rendered.image);
+}
+
+} // namespace
+
+int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size size, const RenderView& view) {
     bool anyBad = false;
     auto loaded = loadAll(presets, &anyBad);
     bool toFolder = presets.size() > 1;
@@ -152,16 +190,22 @@ int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size si
         if (!preset) {
             continue;
         }
+        if (!viewApplies(view, *preset, preset->file.string())) {
+            anyBad = true;
+            continue;
+        }
         Diagnostics diagnostics;
         std::vector<std::string> notes;
-        std::optional<Image> image = gpu.renderer.render(*preset, size.width, size.height, diagnostics, &notes);
+        std::optional<Rendered> rendered =
+            gpu.renderer.renderView(*preset, size.width, size.height, viewDrawOf(view), diagnostics, &notes);
         printNotes(preset->file, notes);
-        if (!image) {
+        if (!rendered) {
             printDiagnostics(diagnostics);
             anyBad = true;
             continue;
         }
         fs::path target = toFolder ? out / (preset->file.stem().string() + ".png") : out;
+        std::optional<Image> image = finished(std::move(*rendered), view, target);
         std::string error;
         // Renewable: renamed into place without an fsync (about 10 ms a run here, sometimes 50,
         // while the file system commits its journal); a render is made again by running it again.
@@ -175,7 +219,45 @@ int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size si
     return anyBad ? kExitBadInput : kExitOk;
 }
 
-int runSweep(const std::vector<fs::path>& presets, const std::vector<SweepAxis>& sweeps, const fs::path& out, Size size) {
+namespace {
+
+// How a sweep's cells are drawn: a value view with one range for all (the fixed one, or the union of
+// the cells' automatic ranges, printed). Nullopt, with the message, when the view does not apply to
+// a cell.
+std::optional<ViewDraw> sweepViewDraw(Gpu& gpu, const LoadedPreset& base, const std::vector<SweepAxis>& sweeps,
+                                      Size size, const RenderView& view, const fs::path& out) {
+    ViewDraw draw = viewDrawOf(view);
+    if (!showsValue(view.mode)) {
+        return draw;
+    }
+    std::string error;
+    std::optional<SweepCells> cells = sweepCells(base, sweeps, error); // checked by the caller already
+    std::optional<ValueRange> all;
+    for (const LoadedPreset& cell : cells ? cells->presets : std::vector<LoadedPreset>{}) {
+        if (!viewApplies(view, cell, base.file.string() + " (cell " + cell.preset.name + ")")) {
+            return std::nullopt;
+        }
+        Diagnostics ignored; // a model that does not load is reported when the cell is rendered
+        std::optional<ValueRange> r = draw.automatic ? gpu.renderer.autoRange(cell, size.width, size.height, draw, ignored)
+                                                     : std::nullopt;
+        if (r) {
+            all = all ? ValueRange{std::min(all->lo, r->lo), std::max(all->hi, r->hi)} : *r;
+        }
+    }
+    if (draw.automatic) {
+        draw.options.range = all.value_or(ValueRange{});
+        draw.automatic = false;
+        print(stdout, "%s: %s: automatic range %s,%s (all cells)\n", out.string().c_str(),
+              legendTitle(view.mode, view.light).c_str(), shortestFloat(draw.options.range.lo).c_str(),
+              shortestFloat(draw.options.range.hi).c_str());
+    }
+    return draw;
+}
+
+} // namespace
+
+int runSweep(const std::vector<fs::path>& presets, const std::vector<SweepAxis>& sweeps, const fs::path& out, Size size,
+             const RenderView& view) {
     if (presets.size() != 1) {
         // `--sweep a=1 b=2` gives b=2 to the presets: say what it looks like.
         std::string hint;
@@ -209,11 +291,18 @@ int runSweep(const std::vector<fs::path>& presets, const std::vector<SweepAxis>&
     if (!gpu.start()) {
         return kExitFailure;
     }
+    std::optional<ViewDraw> draw = sweepViewDraw(gpu, *preset, sweeps, size, view, out);
+    if (!draw) {
+        return kExitBadInput;
+    }
     bool renderFailed = false;
-    std::optional<Image> grid = renderSweepGrid(gpu, *preset, sweeps, size, error, renderFailed);
+    std::optional<Image> grid = renderSweepGrid(gpu, *preset, sweeps, size, error, renderFailed, *draw);
     if (!grid) {
         print(stderr, "lab render: " + std::string(renderFailed ? "" : "--sweep ") + error + "\n");
         return renderFailed ? kExitFailure : kExitBadInput;
+    }
+    if (view.legend && showsValue(view.mode)) {
+        grid = withLegend(*grid, {legendTitle(view.mode, view.light), draw->options.range, view.palette});
     }
     // Renewable, as a single render: made again by running the command again.
     if (!writePng(*grid, out, error, WriteSafety::Renewable)) {

@@ -8,6 +8,7 @@
 #include "core/io/image.h"
 #include "core/plots/figures.h"
 #include "core/scene/sweep.h"
+#include "core/scene/view_mode.h"
 
 #include <filesystem>
 #include <optional>
@@ -26,12 +27,27 @@ struct Size {
 // "WxH" → Size; nullopt (with `error`) unless both are integers in [1, kMaxRenderSide].
 std::optional<Size> parseSize(const std::string& text, std::string& error);
 
-int runRender(const std::vector<std::filesystem::path>& presets, const std::filesystem::path& out, Size size);
+// `lab render --view NAME [--light N] [--palette viridis|grey] [--range LO,HI] [--legend]`: a view
+// of the model instead of the lit render (core/scene/view_mode.h). A value view without --range
+// finds its automatic range and prints it; --legend adds the legend band under the image
+// (core/plots/legend.h). A view that does not apply to a preset is bad input.
+struct RenderView {
+    ViewMode mode = ViewMode::Lit;
+    int light = 0; // an index into preset.lights (--light counts from 1)
+    ValuePalette palette = ValuePalette::Viridis;
+    std::optional<ValueRange> range;
+    bool legend = false;
+};
+
+int runRender(const std::vector<std::filesystem::path>& presets, const std::filesystem::path& out, Size size,
+              const RenderView& view = {});
 
 // `lab render PRESET --sweep KEY=V1,... [--sweep KEY2=...] --out FILE.png`: one preset as a
 // labelled grid (core/scene/sweep.h), each cell `size` and rendered as `lab render` renders a preset.
+// With a value view, the cells share one range: the fixed one, or the union of their automatic
+// ranges (printed), so that they compare.
 int runSweep(const std::vector<std::filesystem::path>& presets, const std::vector<SweepAxis>& sweeps,
-             const std::filesystem::path& out, Size size);
+             const std::filesystem::path& out, Size size, const RenderView& view = {});
 
 // `lab plot --figure KIND --svg/--png/--csv`: one figure (core/plots/figures.h) and where it goes; the
 // incident angle is runPlot's.

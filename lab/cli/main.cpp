@@ -71,8 +71,8 @@ int main(int argc, char** argv) {
     const lab::CommandLine& line = std::get<lab::CommandLine>(parsed);
     switch (line.command) {
     case lab::CommandLine::Command::Render:
-        return line.sweeps.empty() ? lab::runRender(line.presets, line.out, line.size)
-                                   : lab::runSweep(line.presets, line.sweeps, line.out, line.size);
+        return line.sweeps.empty() ? lab::runRender(line.presets, line.out, line.size, line.view)
+                                   : lab::runSweep(line.presets, line.sweeps, line.out, line.size, line.view);
     case lab::CommandLine::Command::Plot:
         return lab::runPlot(line.presets.front(), line.out, line.incidentDeg, line.albedoOut, line.figure);
     case lab::CommandLine::Command::Check: return lab::runCheck(line.presets, line.check);

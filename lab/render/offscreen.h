@@ -18,9 +18,23 @@ namespace lab {
 
 inline constexpr int kMaxRenderSide = 8192;
 
+// A render and, for a value view, the range its palette spans.
+struct Rendered {
+    Image image;
+    std::optional<ValueRange> range;
+};
+
 class OffscreenRenderer {
 public:
     bool init(Diagnostics& diagnostics);
+
+    // The same as render(), drawn as `view` says (render/renderer.h drawView): a factor view, the
+    // wipe, a fixed or automatic range. The caller checks that the view applies (notApplicable).
+    std::optional<Rendered> renderView(const LoadedPreset& preset, int width, int height, const ViewDraw& view,
+                                       Diagnostics& diagnostics, std::vector<std::string>* notes = nullptr);
+    // The automatic range `view` would find in such a render (nullopt: no value, or no model pixel).
+    std::optional<ValueRange> autoRange(const LoadedPreset& preset, int width, int height, const ViewDraw& view,
+                                        Diagnostics& diagnostics);
 
     // Renders at width × height. Problems with the preset's model are reported with the
     // preset's file name; `notes` gets what the model loader skipped. A glTF model whose file
@@ -29,6 +43,9 @@ public:
                                 std::vector<std::string>* notes = nullptr);
 
 private:
+    std::shared_ptr<const Mesh> mesh(LoadedPreset& framed, const LoadedPreset& preset, Diagnostics& diagnostics,
+                                     std::vector<std::string>* notes);
+
     Renderer renderer_;
     MeshCache meshes_{1};
 };

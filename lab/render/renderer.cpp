@@ -2,6 +2,7 @@
 #include "render/renderer.h"
 
 #include "core/io/image.h"
+#include "render/overlay.h"
 
 #include <algorithm>
 #include <array>
@@ -204,7 +205,10 @@ Renderer::~Renderer() {
     impl_->gouraudError.reset(0);
 }
 
-bool Renderer::init(Diagnostics& diagnostics) { return impl_->build(builtinStageSources(), diagnostics); }
+bool Renderer::init(Diagnostics& diagnostics) {
+    overlay_ = OverlayProgram::build(diagnostics);
+    return overlay_ && impl_->build(builtinStageSources(), diagnostics);
+}
 
 bool Renderer::setStageSources(const StageSources& sources, Diagnostics& diagnostics) {
     return impl_->build(sources, diagnostics);
@@ -259,6 +263,39 @@ void Renderer::draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewpor
     impl_->drawView(preset, mesh, viewport, options, false);
 }
 
+namespace {
+
+float floatOfBytes(const std::uint8_t* b) {
+    return std::bit_cast<float>(std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
+                                std::uint32_t(b[3]) << 24);
+}
+
+} // namespace
+
+std::optional<float> Renderer::valueAt(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, int width,
+                                       int height, int x, int y, const DrawOptions& options) {
+    if (!showsValue(options.view) || !notApplicable(options.view, preset, options.light).empty() || x < 0 || y < 0 ||
+        x >= width || y >= height) {
+        return std::nullopt;
+    }
+    GLint bound = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &bound);
+    std::uint8_t bytes[4] = {255, 255, 255, 255};
+    {
+        Framebuffer target(1, 1);
+        target.bind();
+        DrawOptions whole = options;
+        whole.fromX = 0.0f;
+        whole.toX = 1.0f;
+        impl_->drawView(preset, impl_->upload(mesh), Viewport{-x, -y, width, height}, whole, true); // (x, y) at (0, 0)
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, bytes);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(bound));
+    float v = floatOfBytes(bytes);
+    return std::isfinite(v) ? std::optional<float>(v) : std::nullopt;
+}
+
 std::optional<ValueRange> Renderer::autoValueRange(const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
                                                    int width, int height, const DrawOptions& options) {
     if (!showsValue(options.view) || !notApplicable(options.view, preset, options.light).empty() || width < 1 ||
@@ -284,9 +321,7 @@ std::optional<ValueRange> Renderer::autoValueRange(const Preset& preset, const s
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(bound));
     float lo = std::numeric_limits<float>::infinity(), hi = -lo;
     for (std::size_t i = 0; i < bytes.size(); i += 4) {
-        std::uint32_t b = std::uint32_t(bytes[i]) | std::uint32_t(bytes[i + 1]) << 8 | std::uint32_t(bytes[i + 2]) << 16 |
-                          std::uint32_t(bytes[i + 3]) << 24;
-        float v = std::bit_cast<float>(b);
+        float v = floatOfBytes(&bytes[i]);
         if (std::isfinite(v)) {
             lo = std::min(lo, v);
             hi = std::max(hi, v);
@@ -303,14 +338,23 @@ void Renderer::draw(const Preset& preset, const std::shared_ptr<const Mesh>& mes
     draw(preset, impl_->upload(mesh), viewport, options);
 }
 
-void Renderer::drawPoints(const Preset& preset, const std::vector<FlatVertex>& vertices, int width, int height) {
+void Renderer::drawOverlay(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const Viewport& viewport,
+                           const OverlayOptions& options) {
+    if (overlay_) { // none before init()
+        overlay_->draw(preset, impl_->upload(mesh), viewport, options);
+    }
+}
+
+void Renderer::drawPoints(const Preset& shown, const std::vector<FlatVertex>& vertices, int width, int height,
+                          const DrawOptions& options, bool valueBits) {
     glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
-    const Program& program = impl_->programFor(preset.shading);
+    const Preset preset = viewed(shown, options.view);
+    const Program& program = impl_->programFor(preset.shading, options.view);
     glUseProgram(program.id);
     Transforms t = computeTransforms(preset, static_cast<float>(width) / static_cast<float>(height));
     program.uniforms->upload(t, packShading(preset, t.view));
-    program.uniforms->uploadView(DrawOptions{}, 0, false);
+    program.uniforms->uploadView(options, packedLightIndex(preset, options.light), valueBits);
     GLuint vao = 0, vbo = 0;
     GLsizei count = uploadFlat(vao, vbo, vertices);
     glBindVertexArray(vao);
@@ -319,6 +363,42 @@ void Renderer::drawPoints(const Preset& preset, const std::vector<FlatVertex>& v
     glDeleteVertexArrays(1, &vao);
     glDeleteBuffers(1, &vbo);
     glUseProgram(0);
+}
+
+ViewDraw viewDraw(const ViewSettings& view) {
+    ViewDraw d;
+    d.options.view = view.mode;
+    d.options.light = view.light;
+    d.options.palette = view.palette;
+    d.automatic = showsValue(view.mode) && !view.range;
+    d.options.range = view.range.value_or(ValueRange{});
+    d.wipe = view.wipe && view.mode != ViewMode::Lit;
+    if (d.wipe) {
+        d.options.fromX = std::clamp(view.wipeAt, 0.0f, 1.0f);
+    }
+    d.wireframe = view.wireframe;
+    d.vertexNormals = view.vertexNormals;
+    return d;
+}
+
+std::optional<ValueRange> drawView(Renderer& renderer, const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
+                                   const Viewport& viewport, const ViewDraw& draw) {
+    DrawOptions options = draw.options;
+    std::optional<ValueRange> range;
+    bool valueView = showsValue(options.view) && notApplicable(options.view, preset, options.light).empty();
+    if (valueView) {
+        range = draw.automatic ? renderer.autoValueRange(preset, mesh, viewport.width, viewport.height, options)
+                               : std::optional<ValueRange>(options.range);
+        options.range = range.value_or(ValueRange{});
+    }
+    if (draw.wipe) {
+        DrawOptions lit;
+        lit.toX = options.fromX;
+        renderer.draw(preset, mesh, viewport, lit);
+    }
+    renderer.draw(preset, mesh, viewport, options);
+    drawViewOverlays(renderer, preset, mesh, viewport, draw, valueView);
+    return range;
 }
 
 void bindFramebuffer(unsigned id) { glBindFramebuffer(GL_FRAMEBUFFER, id); }

@@ -19,6 +19,9 @@
 
 namespace lab {
 
+class OverlayLines;   // render/overlay.h
+class OverlayProgram; // render/overlay.h
+
 // A mesh on the GPU: the indexed buffers for smooth shading, and the de-indexed copy for flat
 // shading, built the first time flat shading draws it. Shares the CPU mesh (the flat copy needs it).
 class GpuMesh {
@@ -31,12 +34,15 @@ public:
     const std::shared_ptr<const Mesh>& cpu() const { return mesh_; }
     void drawSmooth() const;
     void drawFlat();
+    // The wireframe's and the normals' lines, made on first use (defined in overlay.cpp).
+    OverlayLines& overlay();
 
 private:
     std::shared_ptr<const Mesh> mesh_;
     GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
     GLuint flatVao_ = 0, flatVbo_ = 0;
     GLsizei flatCount_ = 0;
+    std::unique_ptr<OverlayLines> overlay_; // after mesh_: it refers to the mesh
 };
 
 // A rectangle of the bound framebuffer, in GL's convention (origin at the bottom left).
@@ -58,8 +64,30 @@ struct DrawOptions {
     bool operator==(const DrawOptions&) const = default;
 };
 
+// The shading-rate views over the model (render/overlay.h): the triangles' edges, each vertex's
+// normal as a short line. `background` is what the wireframe's colour contrasts with;
+// `fromX`..`toX` the part of the viewport's width drawn over, as in DrawOptions.
+struct OverlayOptions {
+    bool wireframe = false, vertexNormals = false;
+    glm::vec3 background{0.0f};
+    float fromX = 0.0f, toX = 1.0f;
+    bool operator==(const OverlayOptions&) const = default;
+};
+
 // The side of the automatic range's render: its longer side has at most this many pixels.
 inline constexpr int kRangeRenderSize = 256;
+
+// How a viewport is drawn: the view (options; its range is the fixed one, replaced by the one
+// found when `automatic`), and with the wipe, the lit model left of options.fromX. The GUI, the
+// page and `lab render` all draw through drawView() below.
+struct ViewDraw {
+    DrawOptions options;
+    bool automatic = false; // a value view with an automatic range (Renderer::autoValueRange)
+    bool wipe = false;
+    bool wireframe = false, vertexNormals = false; // over the model, both sides of a wipe (drawOverlay)
+    bool operator==(const ViewDraw&) const = default;
+};
+ViewDraw viewDraw(const ViewSettings& view);
 
 // Owns the GL programs and the GPU copies of meshes (not copyable: impl_ is unique).
 class Renderer {
@@ -93,14 +121,34 @@ public:
     std::optional<ValueRange> autoValueRange(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, int width,
                                              int height, const DrawOptions& options);
 
+    // Draws the overlays `options` asks for (render/overlay.h) over what draw() left in the bound
+    // framebuffer, its depth kept (so lines on the far side stay hidden); nothing when both are off.
+    void drawOverlay(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const Viewport& viewport,
+                     const OverlayOptions& options);
+
+    // The value `options.view` has at pixel (x, y) (GL's convention: from the bottom left) of a
+    // width × height view: that one pixel drawn as the value's float bits and read back, so it is
+    // what the view shows there. None off the model, or for a view that shows no value.
+    std::optional<float> valueAt(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, int width, int height,
+                                 int x, int y, const DrawOptions& options);
+
     // Draws `vertices` as single-pixel points with the preset's shading, transforms and
-    // lights (no clear). The CPU–GPU parity test places probes with it.
-    void drawPoints(const Preset& preset, const std::vector<FlatVertex>& vertices, int width, int height);
+    // lights (no clear), as `options` shows them; with `valueBits`, a value view writes each
+    // value's float as the four bytes of its pixel (little-endian R, G, B, A). The CPU–GPU parity
+    // tests place probes with it.
+    void drawPoints(const Preset& preset, const std::vector<FlatVertex>& vertices, int width, int height,
+                    const DrawOptions& options = {}, bool valueBits = false);
 
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
+    std::unique_ptr<OverlayProgram> overlay_; // built by init()
 };
+
+// Draws a viewport as `draw` says into the bound framebuffer; the value view's range, when it
+// shows one.
+std::optional<ValueRange> drawView(Renderer& renderer, const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
+                                   const Viewport& viewport, const ViewDraw& draw);
 
 // Binds framebuffer `id` (0: the window's own), e.g. after offscreen work.
 void bindFramebuffer(unsigned id);

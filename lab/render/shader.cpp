@@ -28,13 +28,18 @@ constexpr Part kView{"view.glsl", 400001};
 std::string lineDirective(const Part& part) { return "\n#line " + std::to_string(part.firstLine) + "\n"; }
 
 // The version line stays first (GLSL requires it); everything after it is numbered by its part.
-std::string assemble(std::string_view body, std::string_view lighting, const std::vector<std::string>& defines) {
+std::string prelude(const std::vector<std::string>& defines) {
     std::string s = "#version 300 es";
     s += lineDirective(kPrelude);
     s += "precision highp float;\nprecision highp int;\n";
     for (const std::string& d : defines) {
         s += "#define " + d + "\n";
     }
+    return s;
+}
+
+std::string assemble(std::string_view body, std::string_view lighting, const std::vector<std::string>& defines) {
+    std::string s = prelude(defines);
     s += lineDirective(kApi);
     s += shaderSource("lighting_api.glsl");
     s += lineDirective(kLighting);
@@ -218,15 +223,16 @@ bool checkAscii(const StageSources& sources, Diagnostics& diagnostics, int maxLi
     return diagnostics.size() == before;
 }
 
-std::optional<GLuint> buildProgram(const StageSources& sources, const std::vector<std::string>& defines,
-                                   Diagnostics& diagnostics) {
-    if (!checkAscii(sources, diagnostics)) {
-        return std::nullopt;
-    }
+namespace {
+
+// Compiles the two assembled stages (their bodies named `vertexName`, `fragmentName` in the
+// log) and links them.
+std::optional<GLuint> compileAndLink(const std::string& vertex, const std::string& fragment, std::string_view vertexName,
+                                     std::string_view fragmentName, Diagnostics& diagnostics) {
     // Both stages include lighting.glsl: an error there is in both logs, and reported once.
     Diagnostics log;
-    GLuint vs = compile(GL_VERTEX_SHADER, assemble(sources.vertex, sources.lighting, defines), "lit.vert", log);
-    GLuint fs = compile(GL_FRAGMENT_SHADER, assemble(sources.fragment, sources.lighting, defines), "lit.frag", log);
+    GLuint vs = compile(GL_VERTEX_SHADER, vertex, vertexName, log);
+    GLuint fs = compile(GL_FRAGMENT_SHADER, fragment, fragmentName, log);
     for (Diagnostic& x : log) {
         auto same = [&](const Diagnostic& y) { return y.file == x.file && y.message == x.message; };
         if (std::find_if(diagnostics.begin(), diagnostics.end(), same) == diagnostics.end()) {
@@ -256,6 +262,24 @@ std::optional<GLuint> buildProgram(const StageSources& sources, const std::vecto
         return std::nullopt;
     }
     return program;
+}
+
+} // namespace
+
+std::optional<GLuint> buildProgram(const StageSources& sources, const std::vector<std::string>& defines,
+                                   Diagnostics& diagnostics) {
+    if (!checkAscii(sources, diagnostics)) {
+        return std::nullopt;
+    }
+    return compileAndLink(assemble(sources.vertex, sources.lighting, defines),
+                          assemble(sources.fragment, sources.lighting, defines), "lit.vert", "lit.frag", diagnostics);
+}
+
+std::optional<GLuint> buildPlainProgram(std::string_view vertexFile, std::string_view fragmentFile,
+                                        Diagnostics& diagnostics) {
+    auto bare = [](std::string_view body) { return prelude({}) + "\n#line 1\n" + std::string(body); };
+    return compileAndLink(bare(shaderSource(vertexFile)), bare(shaderSource(fragmentFile)), vertexFile, fragmentFile,
+                          diagnostics);
 }
 
 } // namespace lab

@@ -7,7 +7,8 @@
 // ..."). lighting_api.glsl (the constants, structs and prototypes) and view.glsl are always the
 // embedded ones; lighting.glsl and the stage bodies are strings the caller owns, so the GUI's
 // shader editor can compile edited text the same way. Text that is not ASCII is refused before anything is compiled: GLSL ES and WebGL
-// reject it, and the drivers' messages about it are cryptic.
+// reject it, and the drivers' messages about it are cryptic. Programs that are not lit (the
+// overlay's lines) get the version line and the precision only (buildPlainProgram).
 #pragma once
 
 #include "core/io/diagnostics.h"
@@ -45,5 +46,11 @@ void readableLog(std::string_view log, std::string_view bodyName, Diagnostics& o
 // and a message both stages repeat (an error in lighting.glsl) given once.
 std::optional<GLuint> buildProgram(const StageSources& sources, const std::vector<std::string>& defines,
                                    Diagnostics& diagnostics);
+
+// A program of two embedded files of shaders/ that need no lighting (the overlay's lines:
+// overlay.vert, overlay.frag): each body after the version line and the precision only, compiled
+// and linked as buildProgram does, the log naming those files.
+std::optional<GLuint> buildPlainProgram(std::string_view vertexFile, std::string_view fragmentFile,
+                                        Diagnostics& diagnostics);
 
 } // namespace lab

@@ -32,7 +32,7 @@ enum class Command {
     // The scene and its files (the workspace carries these out)
     PreviousPreset, NextPreset, OpenPresetAt, OpenPath, Save, SaveAs, Revert, Undo, Redo,
     DownloadPreset, LoadModel, ShadingFlat, ShadingGouraud, ShadingPhong, NextBrdf,
-    ToggleNormalMatrix, NextViewMode, ToggleCompare, ResetCamera, FrameModel,
+    ToggleNormalMatrix, NextViewMode, ToggleWireframe, ToggleVertexNormals, ToggleCompare, ResetCamera, FrameModel,
     // The window and its tools (the app carries these out)
     ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
     ToggleLightShapes,

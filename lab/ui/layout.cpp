@@ -106,7 +106,10 @@ void placeText(Layout& l, const TextRoom& room) {
     float header = std::ceil(std::min(room.header, v.h * 0.25f)), footer = std::ceil(std::min(room.footer, v.h * 0.25f));
     l.header = {v.x, v.y, v.w, header};
     l.footer = {v.x, v.y + v.h - footer, v.w, footer};
-    Rect model{v.x, v.y + header, v.w, std::max(v.h - header - footer, 1.0f)};
+    // The legend above the footer, where the model leaves room for it (at most a quarter again).
+    float legend = std::ceil(std::min(room.legend, std::max(v.h * 0.25f, 0.0f)));
+    l.legend = legend > 0.0f ? Rect{v.x, v.y + v.h - footer - legend, v.w, legend} : Rect{};
+    Rect model{v.x, v.y + header, v.w, std::max(v.h - header - footer - legend, 1.0f)};
     l.caption = l.captionBand = {};
     if (room.captionHeight) {
         // Across the top, under the header...

@@ -45,6 +45,7 @@ struct Layout {
     // header or a column at the view's left, whichever leaves the model more room), the footer
     // strip at the bottom (toasts, the frame time) and, in compare mode, each half's label.
     Rect header, caption, footer;
+    Rect legend;                // a value view's legend (ui/view_legend.h), above the footer; empty without
     Rect captionBand;           // the caption's strip (across the view) or column (down to the footer)
     std::array<Rect, 2> labels;
     bool plotsBelow = false;
@@ -71,6 +72,7 @@ Layout computeLayout(const LayoutInput& input);
 struct TextRoom {
     float header = 0;   // the header strip's height
     float footer = 0;   // the footer strip's height
+    float legend = 0;   // a value view's legend strip, above the footer (0: none)
     float label = 0;    // each compare half's label strip (0 outside compare mode)
     // The caption's height when it is `width` wide (wrapped), and the widths it may take: at most
     // `captionWidth` across the top, `sideWidth` as a column. No function: no caption.

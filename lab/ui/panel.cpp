@@ -6,6 +6,7 @@
 #include "core/scene/camera.h"
 #include "core/scene/limits.h"
 #include "core/scene/preset_choices.h"
+#include "ui/equation_panel.h"
 #include "ui/widgets.h"
 
 #include <glm/glm.hpp>
@@ -208,6 +209,15 @@ void shadingSection(Preset& p, ViewSettings& view) {
     enumCombo("view (V)", view.mode, kViewModes, viewNames.data());
     mark("view_mode");
     helpMarker("Shows one contribution on the model without changing the preset.");
+    ImGui::Separator();
+    ImGui::TextDisabled("the equation on the model");
+    equationSection(p, view);
+    // The shading rate: where the lighting is evaluated (vertices) and along what (normals).
+    ImGui::Checkbox("wireframe (W)", &view.wireframe);
+    mark("view.wireframe");
+    sameLineIfFitsRadio("vertex normals (N)");
+    ImGui::Checkbox("vertex normals (N)", &view.vertexNormals);
+    mark("view.vertex_normals");
     lightColorEdit("global ambient", p.ambientLight);
     mark("ambient_light");
     colorEdit("background", p.background);

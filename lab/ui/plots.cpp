@@ -19,17 +19,19 @@ struct ViewEntry {
     PlotView view;
     const char* name;
     const char* mark;
-    void (*draw)(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe);
+    void (*draw)(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe, const ProbeLobe* point);
 };
 const ViewEntry kViews[] = {
     {PlotView::Plane, "Plane", "plot.view.plane", planeView},
-    {PlotView::Lobe3d, "3D lobe", "plot.view.lobe3d", [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*) { lobe3dPanel(a, b, s); }},
-    {PlotView::Energy, "Energy", "plot.view.energy", [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*) { energyPanel(a, b, s); }},
+    {PlotView::Lobe3d, "3D lobe", "plot.view.lobe3d",
+     [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*, const ProbeLobe* point) { lobe3dPanel(a, b, s, point); }},
+    {PlotView::Energy, "Energy", "plot.view.energy",
+     [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*, const ProbeLobe*) { energyPanel(a, b, s); }},
 };
 
 } // namespace
 
-void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
+void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe, const ProbeLobe* point) {
     // The selector's row as low as the text allows (a row less for the views below it): thinner
     // tabs, the views' own widgets at the usual padding.
     const ImVec2 padding = ImGui::GetStyle().FramePadding;
@@ -52,7 +54,7 @@ void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* 
                 s.view = v.view;
             }
             s.shownView = static_cast<int>(v.view);
-            v.draw(a, b, s, probe);
+            v.draw(a, b, s, probe, point);
             ImGui::EndTabItem();
             ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, thin);
         }

@@ -9,6 +9,10 @@
 //   * linear or logarithmic radial scale, polar or Cartesian, with the ring values, angle ticks
 //     and decade marks written on the plot; the scale can be locked;
 //   * the attenuation curve Att(d) of a light, with a marker at its distance to the model.
+// With plots at the probe (`point` given: core/plots/probe_lobe.h) the lobe plot, the 3D lobe and
+// Att(d) show the probed point instead: its θi, the light that arrives there, its real V (how far
+// out of the plane of incidence, in words) and its light's distance; L, V and their sliders are
+// then the point's, not draggable, and the preset's plot settings stay as they are.
 // The numbers come from core/plots/plot_data.h (the same code as `lab plot`), where each plot goes and what
 // its rings are from core/plots/plot_layout.h; this file measures text and draws.
 //
@@ -20,6 +24,7 @@
 #pragma once
 
 #include "core/lighting/probe.h"
+#include "core/plots/probe_lobe.h"
 #include "core/plots/plot_data.h"
 #include "ui/plot_cache.h"
 #include "ui/plots_3d.h"
@@ -49,7 +54,9 @@ struct PlotSettings {
 // Draws the view selector and the chosen view into the current ImGui window's remaining content
 // region: "Plane" (the plots below), "3D lobe" (ui/plots_3d.h) or "Energy" (ui/plots_energy.h).
 // Dragging L edits a.plotIncidentDeg (part of the preset, so it is undoable and saved). `b` is the
-// compare set, overlaid when given. The probe's vectors are drawn only when `probe` is given.
-void plotsPanel(Preset& a, const Preset* b, PlotSettings& settings, const ProbeResult* probe);
+// compare set, overlaid when given. The probe's vectors are drawn only when `probe` is given;
+// `point`, the probed point's lobe, turns plots at the probe on.
+void plotsPanel(Preset& a, const Preset* b, PlotSettings& settings, const ProbeResult* probe,
+                const ProbeLobe* point = nullptr);
 
 } // namespace lab::ui

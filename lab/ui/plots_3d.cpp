@@ -225,6 +225,7 @@ struct View {
     std::shared_ptr<const HemisphereGrid> gridA, gridB;
     LobeMaximum peak;
     LobeVectors vectors;
+    glm::vec3 viewer{0.0f, 1.0f, 0.0f}; // V: the plane plot's, or a probed point's (out of the plane too)
     float outer = 1.0f, largest = 0.0f;
     Readout readout;
 };
@@ -267,7 +268,7 @@ void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& 
         dl->AddPolyline(line.data(), static_cast<int>(line.size()), ink(Ink::Compare), 0, p.thin);
     }
     // The vectors: N, L, R, and V (the plane plot's reading direction) with its H.
-    const glm::vec3 V = outgoingDirection(std::fabs(s.viewerDeg), s.viewerDeg >= 0.0f ? 0.0f : 180.0f);
+    const glm::vec3& V = v.viewer;
     ScreenPlot vectors;
     const PlotStyle& style = vectors.style;
     arrow3d(vectors, cam, v.vectors.N, 1.08f, Ink::Axis, "N", style.stroke());
@@ -398,15 +399,28 @@ void options(PlotSettings& s, const Pens& p) {
     s.scale = scale == 0 ? RadialScale::Linear : RadialScale::Log;
 }
 
-View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p) {
+// At a probed point (plots at the probe): which light, θi, and V's place when it leaves the plane.
+void pointTokens(Readout& r, const ProbeLobe& at) {
+    r.add(format("at the probe, Light %d: %si %.1f%s", at.light + 1, "\xce\xb8", double(at.incidentDeg), kDeg), Ink::Light);
+    if (at.outOfPlaneDeg >= 0.5f) {
+        r.add(format("V is %.0f%s out of the plane of incidence", double(at.outOfPlaneDeg), kDeg), Ink::Viewer);
+    }
+    r.lineBreak();
+}
+
+View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, const ProbeLobe* point) {
     View v;
     v.a = &a;
     Lobe3dState& st = s.lobe3d;
-    v.inA = lobeInputs(a, a.plotIncidentDeg);
+    v.inA = point ? probeLobeInputs(a, *point) : lobeInputs(a, a.plotIncidentDeg);
     v.gridA = st.grids.get(v.inA, [&] { return sampleHemisphere(v.inA); });
     if (b) {
-        v.inB = lobeInputs(*b, a.plotIncidentDeg);
+        v.inB = point ? probeLobeInputs(*b, *point) : lobeInputs(*b, a.plotIncidentDeg);
         v.gridB = st.grids.get(v.inB, [&] { return sampleHemisphere(v.inB); });
+    }
+    v.viewer = point ? point->viewer : outgoingDirection(std::fabs(s.viewerDeg), s.viewerDeg >= 0.0f ? 0.0f : 180.0f);
+    if (point) {
+        pointTokens(v.readout, *point);
     }
     v.vectors = lobeVectors(v.inA.incidentDeg);
     v.largest = v.gridA->largest(st.component);
@@ -461,10 +475,10 @@ Lobe3dKey keyFor(const View& v, const PlotSettings& s, const ImVec4& lobeBox, co
 
 } // namespace
 
-void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& s) {
+void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& s, const ProbeLobe* point) {
     const Pens p = pens();
     options(s, p);
-    const View v = viewData(a, b, s, p);
+    const View v = viewData(a, b, s, p, point);
 
     const ImVec2 room = ImGui::GetContentRegionAvail();
     const ImVec2 origin = ImGui::GetCursorScreenPos();

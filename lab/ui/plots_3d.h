@@ -20,6 +20,7 @@
 
 #include "core/plots/lobe3d.h"
 #include "core/plots/plot_data.h"
+#include "core/plots/probe_lobe.h"
 #include "core/scene/preset.h"
 #include "ui/plot_cache.h"
 
@@ -66,7 +67,8 @@ struct Lobe3dState {
     std::size_t computed() const { return grids.made() + meshes.made() + peaks.made(); }
 };
 
-// Draws the 3D lobe view into the current window's remaining content region.
-void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& settings);
+// Draws the 3D lobe view into the current window's remaining content region; at the probed point
+// `point` when given (plots at the probe, ui/plots.h: its θi, arriving light and real V).
+void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& settings, const ProbeLobe* point = nullptr);
 
 } // namespace lab::ui

@@ -7,6 +7,7 @@
 // nothing reaches past the region and the window never scrolls.
 #include "ui/plots_plane.h"
 #include "ui/plot_kit.h"
+#include "ui/plots_probe.h"
 
 #include "ui/widgets.h"
 
@@ -41,6 +42,8 @@ using namespace plotkit; // the drawing kit (ui/plot_kit.h)
 // samples from the cache, found by their inputs.
 struct Lobes {
     float incident = 0;
+    float viewer = 0;                 // where V is drawn: the V slider's, or the probed point's
+    const ProbeLobe* point = nullptr; // plots at the probe
     LobeInputs inA, inB;
     PlotCache::Samples a, b; // b null without a compare set
     float largest = 0;       // the largest total now
@@ -57,6 +60,7 @@ struct Overlay {
 
 struct Attenuation {
     const LightDesc* light = nullptr; // none without lights
+    bool atPoint = false;             // the probed point's light and distance (no chooser then)
     float distance = 0, att = 1, maxD = 5;
     Readout readout;
 };
@@ -94,24 +98,32 @@ void albedoTokens(Readout& r, const std::optional<Albedo>& a, const std::optiona
     }
 }
 
-Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p) {
+Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, const ProbeLobe* point) {
     Lobes l;
-    l.incident = a.plotIncidentDeg;
-    l.inA = lobeInputs(a, l.incident);
+    l.point = point;
+    // At a probed point: its θi, the light that arrives there and its V; the preset's own angle
+    // and the V slider stay as they are for when the mode ends.
+    l.incident = point ? plottedIncidentDeg(*point) : a.plotIncidentDeg;
+    l.viewer = point ? glm::clamp(point->viewerDeg, -90.0f, 90.0f) : s.viewerDeg;
+    l.inA = point ? probeLobeInputs(a, *point) : lobeInputs(a, l.incident);
     l.a = s.cache.samples(l.inA);
     if (b) {
-        l.inB = lobeInputs(*b, l.incident);
+        l.inB = point ? probeLobeInputs(*b, *point) : lobeInputs(*b, l.incident);
         l.b = s.cache.samples(l.inB);
     }
     l.largest = b ? largestTotal({l.a.get(), l.b.get()}) : largestTotal({l.a.get()});
     l.outer = scaleMaximum(outerRing(l.largest), s.lockScale, s.lobeScale);
-    const PlotSample& v = sampleAt(*l.a, s.viewerDeg);
-    l.readout.add(format("at V %+.0f%s:", double(s.viewerDeg), kDeg), Ink::Viewer);
-    l.readout.add(format("diffuse %.3f", double(v.diffuse)), Ink::Diffuse, true);
-    l.readout.add(format("specular %.3f", double(v.specular)), Ink::Specular, true);
-    l.readout.add(format("total %.3f", double(v.total)), Ink::Total, true);
-    if (b) {
-        l.readout.add(format("total B %.3f", double(sampleAt(*l.b, s.viewerDeg).total)), Ink::Compare, true);
+    if (point) {
+        probeLobeTokens(l.readout, *point, l.inA, b ? &l.inB : nullptr);
+    } else {
+        const PlotSample& v = sampleAt(*l.a, s.viewerDeg);
+        l.readout.add(format("at V %+.0f%s:", double(s.viewerDeg), kDeg), Ink::Viewer);
+        l.readout.add(format("diffuse %.3f", double(v.diffuse)), Ink::Diffuse, true);
+        l.readout.add(format("specular %.3f", double(v.specular)), Ink::Specular, true);
+        l.readout.add(format("total %.3f", double(v.total)), Ink::Total, true);
+        if (b) {
+            l.readout.add(format("total B %.3f", double(sampleAt(*l.b, s.viewerDeg).total)), Ink::Compare, true);
+        }
     }
     l.readout.lineBreak();
     scaleTokens(l.readout, l.outer, l.largest, s.lockScale, b ? "max total of A and B" : "max total");
@@ -135,10 +147,20 @@ Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
     return o;
 }
 
-Attenuation attenuationData(const Preset& a, PlotSettings& s, const Pens& p) {
+Attenuation attenuationData(const Preset& a, PlotSettings& s, const Pens& p, const ProbeLobe* point) {
     Attenuation t;
     if (a.lights.empty()) {
         t.readout.add("No lights.", Ink::Text);
+        t.readout.measure(p);
+        return t;
+    }
+    if (point && point->light < static_cast<int>(a.lights.size())) { // the point's light, at its distance from the point
+        t.atPoint = true;
+        t.light = &a.lights[static_cast<std::size_t>(point->light)];
+        t.distance = point->distance;
+        t.att = point->attenuation;
+        t.maxD = std::max(5.0f, std::ceil(point->distance * 2.0f)); // as attenuationSpan's
+        probeAttenuationTokens(t.readout, *point, t.light->type == LightType::Directional);
         t.readout.measure(p);
         return t;
     }
@@ -208,7 +230,7 @@ void cartesianLobes(const Canvas& c, const Lobes& lobes, PlotSettings& s) {
         }
     }
     plot.canvas.line({at(lobes.incident, 0), at(lobes.incident, 1)}, style.thin(), Ink::Mirror); // the mirror angle
-    plot.canvas.line({at(s.viewerDeg, 0), at(s.viewerDeg, 1)}, style.thin(), Ink::Viewer);
+    plot.canvas.line({at(lobes.viewer, 0), at(lobes.viewer, 1)}, style.thin(), Ink::Viewer);
     lobeCurves(plot, lobes, s, placementOf(b));
     plot.paint(c.dl);
 }
@@ -253,23 +275,26 @@ void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s,
     const Polar f = polarFrame(c.origin(), c.width, c.height, style, false);
     polarGrid(plot.canvas, f, lobes.outer, s.scale, false);
     lobeCurves(plot, lobes, s, placementOf(f));
-    glm::vec2 L = dirFromDeg(lobes.incident, -1.0f), R = dirFromDeg(lobes.incident, 1.0f), V = dirFromDeg(s.viewerDeg, 1.0f);
+    glm::vec2 L = dirFromDeg(lobes.incident, -1.0f), R = dirFromDeg(lobes.incident, 1.0f), V = dirFromDeg(lobes.viewer, 1.0f);
     auto arrow = [&](glm::vec2 dir, float length, Ink ink, const char* label, float width) {
         plot.canvas.arrow(f.at({0, 0}), f.at(dir * length), ink, width, label);
     };
     arrow({0, 1}, 0.8f, Ink::Axis, "N", style.stroke());
     arrow(L, 0.92f, Ink::Light, "L", style.bold());
     arrow(R, 0.8f, Ink::Mirror, "R", style.stroke());
-    arrow(V, 0.88f, Ink::Viewer, "V", style.stroke());
+    // A probed point's V out of the plane of incidence is drawn as its projection: shorter.
+    arrow(V, 0.88f * (lobes.point ? std::cos(glm::radians(lobes.point->outOfPlaneDeg)) : 1.0f), Ink::Viewer, "V", style.stroke());
     if (a.brdf != BrdfModel::Phong) {
         glm::vec3 H = glsl::halfVector(glm::vec3(L, 0.0f), glm::vec3(V, 0.0f)); // the model's own H
         arrow(glm::vec2(H), 0.65f, Ink::Half, "H", style.stroke());
     }
-    if (probe && !probe->lights.empty()) {
+    if (probe && !probe->lights.empty() && !lobes.point) { // at the point, L and V are the probe's
         probeArrows(plot, f, *probe, a.brdf);
     }
     plot.paint(c.dl);
-    dragArrows(f, L, V, a, s);
+    if (!lobes.point) {
+        dragArrows(f, L, V, a, s);
+    }
 }
 
 // Lobe plot rows: readout strip, canvas, the incident-angle and V sliders.
@@ -304,6 +329,10 @@ void lobePlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, co
     const limits::Range& incident = limits::kPlotIncidentDeg;
     float labels = ImGui::CalcTextSize("incident").x + ImGui::CalcTextSize("V").x + 2.0f * p.inner + p.gapX;
     float field = std::max((box.w - labels) * 0.5f, p.font);
+    if (lobes.point) {
+        probeSliders(*lobes.point, field);
+        return;
+    }
     std::string unit = "%.0f" + std::string(kDeg);
     ImGui::SetNextItemWidth(field);
     ImGui::SliderFloat("incident", &a.plotIncidentDeg, incident.sliderMin, incident.sliderMax, unit.c_str());
@@ -385,11 +414,12 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
 // Attenuation
 //----------------------------------------------------------------------------------------
 
-bool lightChooser(const Preset& a) { return a.lights.size() > 1; }
+// At a probed point the probe's window chooses the light.
+bool lightChooser(const Preset& a, const Attenuation& t) { return a.lights.size() > 1 && !t.atPoint; }
 
 PlotNeeds attenuationNeeds(const Attenuation& t, const Preset& a, const Pens& p, float width) {
     PlotNeeds n;
-    n.fixed = t.readout.height(p, width) + p.gap + (lightChooser(a) ? p.frame + p.gap : 0.0f);
+    n.fixed = t.readout.height(p, width) + p.gap + (lightChooser(a, t) ? p.frame + p.gap : 0.0f);
     n.minWidth = 12.0f * p.font;
     if (t.light) {
         n.minCanvas = 5.0f * p.line;
@@ -427,7 +457,7 @@ void attenuationCanvas(const Canvas& c, const Attenuation& t, PlotCache& cache) 
 
 void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Attenuation& t,
                      const Preset& a, PlotSettings& s) {
-    const Block block = placeBlock(box, origin, p, t.readout, "plot.attenuation.readout", cramped, lightChooser(a),
+    const Block block = placeBlock(box, origin, p, t.readout, "plot.attenuation.readout", cramped, lightChooser(a, t),
                                    attenuationNeeds(t, a, p, box.w).minCanvas, [&](float w) { return t.light ? w * 0.42f : 0.0f; });
     if (t.light) {
         const Canvas canvas = beginCanvas("attenuation", "plot.attenuation", block.canvasW, block.canvasH);
@@ -435,7 +465,7 @@ void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cram
             attenuationCanvas(canvas, t, s.cache);
         }
     }
-    if (lightChooser(a) && block.controlsFit) {
+    if (lightChooser(a, t) && block.controlsFit) {
         ImGui::SetCursorScreenPos(block.controls);
         ImGui::SetNextItemWidth(std::max(box.w - ImGui::CalcTextSize("light").x - p.inner, p.font));
         int shown = s.attenuationLight + 1;
@@ -502,12 +532,12 @@ void options(PlotSettings& s) {
 
 } // namespace
 
-void planeView(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe) {
+void planeView(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe, const ProbeLobe* point) {
     options(s);
     const Pens p = pens();
-    const Lobes lobes = lobeData(a, b, s, p);
+    const Lobes lobes = lobeData(a, b, s, p, point);
     const Overlay overlay = overlayData(a, s, p);
-    const Attenuation attenuation = attenuationData(a, s, p);
+    const Attenuation attenuation = attenuationData(a, s, p, point);
 
     const ImVec2 room = ImGui::GetContentRegionAvail();
     const ImVec2 origin = ImGui::GetCursorScreenPos();

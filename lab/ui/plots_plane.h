@@ -16,7 +16,8 @@
 
 namespace lab::ui {
 
-// Draws the Plane view into the current window's remaining content region.
-void planeView(Preset& a, const Preset* b, PlotSettings& settings, const ProbeResult* probe);
+// Draws the Plane view into the current window's remaining content region; at the probed point
+// `point` when given (plots at the probe, ui/plots.h).
+void planeView(Preset& a, const Preset* b, PlotSettings& settings, const ProbeResult* probe, const ProbeLobe* point);
 
 } // namespace lab::ui

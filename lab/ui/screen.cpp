@@ -103,7 +103,7 @@ void panels(const Layout& layout, ScreenModel& m, ScreenEvents& events) {
     }
     if (layout.plots.w > 0.0f) {
         beginFixed("Reflected intensity###plots", layout.plots, extra);
-        plotsPanel(*m.a, m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr);
+        plotsPanel(*m.a, m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr, m.probeLobe);
         ImGui::End();
         widgets().set("plots", layout.plots);
     }
@@ -136,13 +136,18 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
         // The readout opens beside the model (over the plots or the panel), not over it; with both
         // hidden (Tab: the model only) it opens at the view's corner, over the model.
         const Rect& beside = layout.plots.w > 0.0f ? layout.plots : layout.panel.w > 0.0f ? layout.panel : layout.viewport;
-        probeWindow(*m.probe, *m.a, *m.probeOpen, beside.x + 10.0f, beside.y + ImGui::GetFontSize() * 2.0f);
+        probeWindow(*m.probe, *m.a, *m.view, *m.probeOpen, beside.x + 10.0f, beside.y + ImGui::GetFontSize() * 2.0f);
     }
     shaderEditorWindow(*m.shaderEditor, events.requests, m.lightingSource);
     sweepWindow(*m.sweep, *m.a, events.requests);
     dialogs(m, events);
     const Rect& active = m.b ? layout.halves[0] : layout.viewport;
-    events.viewport = viewportControls(*m.a, active, layout.viewport, *m.viewportControls, m.clicks, m.motion);
+    const bool wipe = m.view->wipe && m.view->mode != ViewMode::Lit;
+    events.viewport = viewportControls(*m.a, active, layout.viewport, *m.viewportControls, m.clicks, m.motion,
+                                       m.overlay.probePoint ? &*m.overlay.probePoint : nullptr,
+                                       wipe ? &m.view->wipeAt : nullptr);
+    m.overlay.wipeAt = wipe ? std::optional<float>(m.view->wipeAt) : std::nullopt;
+    m.overlay.wipeDragged = m.viewportControls->drag == ViewportControls::Drag::Wipe;
     lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewportControls->light, m.lightShapes);
     viewOverlay(m.overlay, layout);
     events.gesture = ImGui::IsAnyItemActive() || events.viewport.gesture;

@@ -8,6 +8,7 @@
 
 #include "core/io/diagnostics.h"
 #include "core/lighting/probe.h"
+#include "core/plots/probe_lobe.h"
 #include "ui/actions.h"
 #include "ui/layout.h"
 #include "ui/panel.h"
@@ -38,6 +39,7 @@ struct ScreenModel {
     ViewportControls* viewportControls = nullptr;
     const ProbeResult* probe = nullptr; // the last probe, shown while probeOpen
     bool* probeOpen = nullptr;
+    const ProbeLobe* probeLobe = nullptr; // plots at the probe: the probed point's lobe (app/pixel_probe.h), else nullptr
     bool* showHelp = nullptr;
     bool lightShapes = true; // spot cones and directional rays in the view
     const LightMotion* motion = nullptr; // while A's lights orbit: where the view shows them (core/scene/light_orbit.h)

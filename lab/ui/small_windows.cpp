@@ -37,9 +37,39 @@ namespace {
 void vec(const char* name, const glm::vec3& v) { ImGui::Text("%-3s (%+.3f, %+.3f, %+.3f)", name, v.x, v.y, v.z); }
 void rgb(const char* name, const glm::vec3& v) { ImGui::Text("%-18s %.4f  %.4f  %.4f", name, v.x, v.y, v.z); }
 
+// "plots at this point": the plots take this point's geometry and light (core/plots/probe_lobe.h),
+// for one light, the factor views' (view.light); the preset is not changed.
+void plotsHere(const Preset& preset, ViewSettings& view) {
+    ImGui::Checkbox("plots at this point", &view.plotsAtProbe);
+    mark("probe.plots-here");
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("The plots use this point: its angle of incidence (from N and L), the light that\n"
+                          "arrives here (colour x Att x spot) and its V, and a small lobe is drawn on the\n"
+                          "model. Drag the marker to move the point. The preset's plot settings stay.");
+    }
+    if (!view.plotsAtProbe) {
+        return;
+    }
+    const int lights = static_cast<int>(preset.lights.size());
+    view.light = std::clamp(view.light, 0, std::max(lights - 1, 0));
+    if (lights > 1) {
+        int shown = view.light + 1;
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+        if (ImGui::SliderInt("light##probe", &shown, 1, lights, "Light %d")) {
+            view.light = shown - 1;
+        }
+        mark("probe.light");
+    }
+    if (lights == 0) {
+        ImGui::TextDisabled("No lights: the plots show the preset's angle.");
+    } else if (packedLightIndex(preset, view.light) < 0) {
+        ImGui::TextDisabled("Light %d is off: the plots show the preset's angle.", view.light + 1);
+    }
+}
+
 } // namespace
 
-void probeWindow(const ProbeResult& probe, const Preset& preset, bool& open, float x, float y) {
+void probeWindow(const ProbeResult& probe, const Preset& preset, ViewSettings& view, bool& open, float x, float y) {
     if (!open) {
         return;
     }
@@ -62,6 +92,7 @@ void probeWindow(const ProbeResult& probe, const Preset& preset, bool& open, flo
         ImGui::TextDisabled("Eye space. Shading: %s%s", std::string(toString(preset.shading)).c_str(),
                             preset.shading == Shading::Gouraud ? " (the pixel interpolates vertex colours; this is the per-pixel value)" : "");
         ImGui::PopTextWrapPos();
+        plotsHere(preset, view);
         vec("p", probe.positionEye);
         vec("N", probe.N);
         vec("V", probe.V);

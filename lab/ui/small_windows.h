@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/lighting/probe.h"
+#include "core/scene/view_mode.h"
 #include "ui/actions.h"
 
 #include <string>
@@ -15,7 +16,8 @@ namespace lab::ui {
 // The shortcuts, from the command table (ui/actions.h helpRows()).
 void helpWindow(bool& open);
 
-// Opens at `position` (screen units) the first time.
-void probeWindow(const ProbeResult& probe, const Preset& preset, bool& open, float x, float y);
+// Opens at `position` (screen units) the first time. Its "plots at this point" box switches
+// view.plotsAtProbe, and with more than one light chooses view.light, the light they use.
+void probeWindow(const ProbeResult& probe, const Preset& preset, ViewSettings& view, bool& open, float x, float y);
 
 } // namespace lab::ui

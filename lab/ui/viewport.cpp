@@ -6,6 +6,8 @@
 #include "core/scene/camera.h"
 #include "core/scene/limits.h"
 #include "core/scene/preset_choices.h"
+#include "ui/point_lobe.h"
+#include "ui/view_legend.h"
 #include "ui/widgets.h"
 
 #include <imgui.h>
@@ -68,14 +70,33 @@ void dragLight(Preset& scene, int index, ImVec2 delta, const Rect& r, const Ligh
     l.position = glm::clamp(l.position + step, glm::vec3(limits::kCoordinate.min), glm::vec3(limits::kCoordinate.max));
 }
 
-void startGesture(const Preset& scene, const Rect& active, ViewportControls& s) {
+// On the probe's marker: within its cross's arms (ui::probeMarker), and a finger's margin on a touch screen.
+bool onProbeMarker(const Preset& scene, const Rect& r, const glm::vec3* probePoint, ImVec2 mouse) {
+    if (!probePoint) {
+        return false;
+    }
+    const std::optional<ImVec2> at = project(scene, *probePoint, r);
+    if (!at || !r.contains(at->x, at->y)) {
+        return false;
+    }
+    float pick = 16.0f * ImGui::GetFontSize() / 13.0f + ImGui::GetStyle().TouchExtraPadding.x;
+    return std::hypot(at->x - mouse.x, at->y - mouse.y) < pick;
+}
+
+void startGesture(const Preset& scene, const Rect& active, ViewportControls& s, const glm::vec3* probePoint,
+                  const float* wipeAt) {
     ImGuiIO& io = ImGui::GetIO();
     s.pressX = io.MousePos.x;
     s.pressY = io.MousePos.y;
     s.pressMoved = false;
     s.button = ImGui::IsMouseClicked(0) ? 0 : ImGui::IsMouseClicked(1) ? 1 : 2;
     s.drag = s.button == 0 ? ViewportControls::Drag::Orbit : ViewportControls::Drag::Pan; // touch: two fingers are the middle button
-    if (s.drag == ViewportControls::Drag::Orbit) {
+    if (s.drag == ViewportControls::Drag::Orbit && onProbeMarker(scene, active, probePoint, io.MousePos)) {
+        s.drag = ViewportControls::Drag::Probe; // the marker is drawn over the lights' markers: it is picked first
+    } else if (s.drag == ViewportControls::Drag::Orbit && wipeAt &&
+               std::abs(io.MousePos.x - (active.x + *wipeAt * active.w)) <= wipeGrabDistance()) {
+        s.drag = ViewportControls::Drag::Wipe;
+    } else if (s.drag == ViewportControls::Drag::Orbit) {
         s.light = lightUnderMouse(scene, active, io.MousePos);
         if (s.light >= 0) {
             s.drag = ViewportControls::Drag::Light;
@@ -86,7 +107,8 @@ void startGesture(const Preset& scene, const Rect& active, ViewportControls& s) 
 } // namespace
 
 ViewportEvents viewportControls(Preset& scene, const Rect& active, const Rect& whole, ViewportControls& s,
-                        const std::vector<std::pair<float, float>>& clicks, const LightMotion* motion) {
+                        const std::vector<std::pair<float, float>>& clicks, const LightMotion* motion,
+                        const glm::vec3* probePoint, float* wipeAt) {
     ImGuiIO& io = ImGui::GetIO();
     ViewportEvents events;
     for (const auto& [x, y] : clicks) {
@@ -101,7 +123,7 @@ ViewportEvents viewportControls(Preset& scene, const Rect& active, const Rect& w
         zoomCamera(scene.camera, std::pow(0.9f, io.MouseWheel));
     }
     if (hovered && s.drag == ViewportControls::Drag::None && (ImGui::IsMouseClicked(0) || ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2))) {
-        startGesture(motion ? orbitedScene(scene, *motion) : scene, active, s); // picked where shown
+        startGesture(motion ? orbitedScene(scene, *motion) : scene, active, s, probePoint, wipeAt); // picked where shown
     }
     if (s.drag == ViewportControls::Drag::None) {
         return events;
@@ -114,6 +136,15 @@ ViewportEvents viewportControls(Preset& scene, const Rect& active, const Rect& w
         } else if (s.drag == ViewportControls::Drag::Pan) {
             float side = std::min(active.w, active.h); // panCamera's unit: the view's narrower side
             panCamera(scene.camera, delta.x / side, -delta.y / side);
+        } else if (s.drag == ViewportControls::Drag::Wipe) {
+            if (wipeAt) {
+                *wipeAt = std::clamp((io.MousePos.x - active.x) / std::max(active.w, 1.0f), 0.0f, 1.0f);
+            }
+        } else if (s.drag == ViewportControls::Drag::Probe) {
+            events.probed = active; // the pixel under the pointer, probed again (app/pixel_probe.h)
+            events.probeX = io.MousePos.x;
+            events.probeY = io.MousePos.y;
+            events.probeDragged = true;
         } else if (s.light < static_cast<int>(scene.lights.size())) {
             dragLight(scene, s.light, delta, active, motion);
         }
@@ -442,6 +473,7 @@ TextRoom measureText(const OverlayModel& m, const Rect& view) {
     float toastLines = m.toast ? wrapped(m.toast, std::max(view.w - 2 * pad - frameTimeRoom(m), 1.0f)).y : line;
     room.footer = std::max(line, toastLines) + 2 * pad;
     room.label = m.b ? line + 2 * pad : 0.0f;
+    room.legend = m.legend ? legendStripHeight() : 0.0f;
     if (m.caption) {
         const Preset* p = m.a;
         room.captionHeight = [p](float width) { return captionSize(*p, width).y; };
@@ -453,8 +485,17 @@ TextRoom measureText(const OverlayModel& m, const Rect& view) {
 
 void viewOverlay(const OverlayModel& m, const Layout& layout) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    for (const Rect* r : {&layout.header, &layout.captionBand, &layout.footer}) {
+    for (const Rect* r : {&layout.header, &layout.captionBand, &layout.legend, &layout.footer}) {
         strip(*r, dl);
+    }
+    if (m.legend) {
+        legendStrip(*m.legend, layout.legend, dl);
+    }
+    if (m.wipeAt) {
+        wipeDivider(*m.wipeAt, m.b ? layout.halves[0] : layout.viewport, m.wipeDragged, dl);
+        if (m.b) {
+            wipeDivider(*m.wipeAt, layout.halves[1], m.wipeDragged, dl);
+        }
     }
     header(m, layout.header, dl);
     if (m.caption && layout.caption.w > 0.0f) {
@@ -462,7 +503,11 @@ void viewOverlay(const OverlayModel& m, const Layout& layout) {
     }
     footer(m, layout.footer, dl);
     if (m.probePoint) {
-        probeMarker(*m.a, *m.probePoint, m.b ? layout.halves[0] : layout.viewport, dl);
+        const Rect& active = m.b ? layout.halves[0] : layout.viewport;
+        if (m.probeLobe) {
+            pointLobe(*m.a, *m.probeLobe, active, dl); // under the marker, which stays the thing to grab
+        }
+        probeMarker(*m.a, *m.probePoint, active, dl);
     }
     if (m.b) {
         compareLabels(m, layout, dl);

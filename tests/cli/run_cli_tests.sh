@@ -372,5 +372,59 @@ expect check-html-same-as-junit 2 '^lab check: --html .*x\.xml: --junit writes t
     "$lab" check "$cphong" --golden "$g" --junit "$tmp/x.xml" --html "$tmp/x.xml"
 check check-same-file-nothing-written test ! -e "$tmp/x.xml"
 
+# --- views (issue 26): lab render --view, its options, a preset's check.views -----------------
+ct=$src/presets/13-cook-torrance-beckmann-schlick.json
+expect view-unknown 2 '^lab render: --view: no view "dd" \(did you mean "d"\?\); the views are lit, ' -- \
+    "$lab" render "$ct" --out "$tmp/v.png" --view dd
+expect view-not-for-phong 2 '05-full-phong\.json: --view d: d is a Cook-Torrance factor; this preset.s BRDF is phong' -- \
+    "$lab" render "$phong" --out "$tmp/v.png" --view d
+check view-not-for-phong-nothing-written test ! -e "$tmp/v.png"
+expect view-range-order 2 '^lab render: --range: LO must be less than HI, got "1,0"' -- \
+    "$lab" render "$ct" --out "$tmp/v.png" --view d --range 1,0
+expect view-range-syntax 2 '^lab render: --range: expected LO,HI \(two numbers\), got "1"' -- \
+    "$lab" render "$ct" --out "$tmp/v.png" --view d --range 1
+expect view-range-nan 2 '--range: expected LO,HI' -- "$lab" render "$ct" --out "$tmp/v.png" --view d --range nan,1
+expect view-palette 2 '^lab render: --palette: expected viridis or grey, got "jet"' -- \
+    "$lab" render "$ct" --out "$tmp/v.png" --view d --palette jet
+expect view-light-zero 2 '--light' -- "$lab" render "$ct" --out "$tmp/v.png" --view d --light 0
+expect view-light-missing 2 '--view d: there is no light 3 \(the preset has 1 light\)' -- \
+    "$lab" render "$ct" --out "$tmp/v.png" --view d --light 3
+expect view-light-on-lit 2 '^lab render: --light applies to a factor view .*not to --view lit' -- \
+    "$lab" render "$ct" --out "$tmp/v.png" --light 1
+expect view-range-on-normals 2 '^lab render: --palette, --range and --legend apply to a value view .*not to --view normals' -- \
+    "$lab" render "$ct" --out "$tmp/v.png" --view normals --range 0,1
+check view-refused-nothing-written test ! -e "$tmp/v.png"
+expect view-distance-directional 2 '--view distance: light 1 is directional: it has no distance' -- \
+    "$lab" render "$src/presets/22-sunlight.json" --out "$tmp/v.png" --view distance
+# The automatic range is printed, and giving it back as --range draws the same picture.
+out=$("$lab" render "$ct" --out "$tmp/d.png" --size 96x96 --view d --palette grey 2>&1)
+check view-auto-range-printed grep -Eq 'd\.png: D: microfacet distribution, light 1: automatic range [0-9.e+-]+,[0-9.e+-]+$' <<<"$out"
+range=$(sed -nE 's/.*automatic range ([^ ]+)$/\1/p' <<<"$out")
+expect view-fixed-range 0 'd2\.png' -- "$lab" render "$ct" --out "$tmp/d2.png" --size 96x96 --view d --palette grey --range "$range"
+check view-fixed-range-same-picture cmp -s "$tmp/d.png" "$tmp/d2.png"
+expect view-legend 0 'dl\.png' -- "$lab" render "$ct" --out "$tmp/dl.png" --size 256x256 --view d --legend
+check view-legend-adds-a-band test "$(png_size "$tmp/dl.png")" = "256 304"
+expect view-sweep 0 'all cells' -- "$lab" render "$ct" --out "$tmp/ds.png" --size 64x64 --view d \
+    --sweep cook_torrance.roughness=0.2,0.4
+expect view-sweep-not-for-a-cell 2 'cell .*--view d: d is a Cook-Torrance factor' -- \
+    "$lab" render "$ct" --out "$tmp/ds2.png" --size 64x64 --view d --sweep brdf=cook-torrance,phong
+# check.views: read, refused with their JSON path, compared with <name>.<view>.png.
+mkdir -p "$tmp/views"
+sed 's/"format": "lighting-lab-preset"/"check": {"views": ["dd"]}, "format": "lighting-lab-preset"/' "$phong" >"$tmp/views/bad.json"
+expect check-views-unknown 2 'bad\.json: check\.views\[0\]: no view "dd" \(did you mean "d"\?\)' -- \
+    "$lab" render "$tmp/views/bad.json" --out "$tmp/v.png"
+sed 's/"format": "lighting-lab-preset"/"check": {"views": ["n-dot-l", {"view": "d"}]}, "format": "lighting-lab-preset"/' "$phong" >"$tmp/views/p.json"
+expect check-views-not-for-phong 2 'p\.json: check\.views\[1\]: d is a Cook-Torrance factor' -- \
+    "$lab" check "$tmp/views/p.json" --golden "$tmp/views/g" --report "$tmp/views/r" --update --size 64x64
+check check-views-the-others-still-written test -s "$tmp/views/g/p.n-dot-l.png"
+# 13 lists d, f and g: each is written, then compared.
+expect check-views-update 0 '' -- "$lab" check "$ct" --golden "$tmp/views/g" --report "$tmp/views/r" --update --size 64x64
+check check-views-golden-written test -s "$tmp/views/g/13-cook-torrance-beckmann-schlick.d.png" -a \
+    -s "$tmp/views/g/13-cook-torrance-beckmann-schlick.g.png"
+expect check-views-pass 0 '4 passed, 0 failed' -- "$lab" check "$ct" --golden "$tmp/views/g" --report "$tmp/views/r" --size 64x64
+cp "$tmp/views/g/13-cook-torrance-beckmann-schlick.png" "$tmp/views/g/13-cook-torrance-beckmann-schlick.d.png"
+expect check-views-fail 1 'FAIL +13-cook-torrance-beckmann-schlick\.d ' -- \
+    "$lab" check "$ct" --golden "$tmp/views/g" --report "$tmp/views/r" --size 64x64
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -233,5 +233,52 @@ TEST(GuiClassroom, TheProbeMarkerAppearsAndGoesWithTheProbe) {
     EXPECT_FALSE(lab.has("view.probe-marker"));
 }
 
+// Plots at the probe: the plots take the probed point's θi, a drag that starts on the probe's
+// marker moves the point (not the camera) and the plots follow, and the preset — its plot settings
+// included — stays exactly as it was.
+TEST(GuiClassroom, PlotsAtTheProbeFollowTheDraggedMarkerAndLeaveThePreset) {
+    TempFolder dir;
+    const fs::path file = dir.path() / "mine.json";
+    fs::copy_file(preset("05-full-phong"), file);
+    START_LAB(lab, "--preset", file.string());
+    const Rect view = lab.widget("view");
+    const Image model = lab.viewShot();
+    const Image incidentOff = lab.capture(lab.widget("plot.incident")); // the preset's θi
+    lab.click(view.cx(), view.cy());
+    ASSERT_TRUE(lab.has("probe.plots-here")) << "the probe's window offers plots at the point";
+    // The probe's window opens over the plots: moved aside by its title bar, over the panel.
+    const Rect window = lab.widget("probe"), panel = lab.widget("panel");
+    lab.drag(window.x + 60, window.y + 8, panel.x + 60, panel.y + panel.h / 3);
+    const Rect box = lab.widget("probe.plots-here");
+    lab.click(box.x + box.h / 2, box.cy());
+    // The slider and the lobe are found again each time: the readout above them grows and shrinks.
+    auto incident = [&] { return lab.capture(lab.widget("plot.incident")); };
+    auto lobe = [&] { return lab.capture(lab.widget("plot.lobe")); };
+    const Image incidentAtCentre = incident(), lobeAtCentre = lobe();
+    EXPECT_GT(changedShare(incidentOff, incidentAtCentre), 0.01) << "θi is the point's, not the preset's";
+
+    // The marker dragged up and to the right over the sphere: the probe goes with it.
+    const Rect marker = lab.widget("view.probe-marker");
+    lab.drag(marker.cx(), marker.cy(), marker.cx() + 90, marker.cy() - 70);
+    const Rect moved = lab.widget("view.probe-marker");
+    EXPECT_NEAR(moved.cx(), marker.cx() + 90, 8);
+    EXPECT_NEAR(moved.cy(), marker.cy() - 70, 8);
+    EXPECT_GT(changedShare(incidentAtCentre, incident()), 0.01) << "the plots' θi follows the point";
+    EXPECT_GT(changedShare(lobeAtCentre, lobe()), 0.01) << "the lobe follows the point";
+    EXPECT_EQ(compareImages(lab.viewShot(), model, Tolerance{}).maxDifference, 0) << "the drag must not orbit the camera";
+
+    // Off again: the preset's own angle, which nothing changed; saved, the preset is as it was.
+    lab.click(box.x + box.h / 2, box.cy());
+    EXPECT_LT(changedShare(incidentOff, incident()), 0.0005);
+    lab.moveTo(view.cx(), view.y + 10);
+    lab.press("s", "Control_L");
+    lab.settle();
+    Diagnostics d;
+    std::optional<LoadedPreset> saved = loadPreset(file, d), original = loadPreset(preset("05-full-phong"), d);
+    ASSERT_TRUE(saved && original) << toString(d);
+    EXPECT_EQ(saved->preset.plotIncidentDeg, original->preset.plotIncidentDeg);
+    EXPECT_TRUE(saved->preset == original->preset) << "plots at the probe changed the preset";
+}
+
 } // namespace
 } // namespace lab::test

@@ -357,6 +357,32 @@ test('touch: a tap on a tab or a checkbox works, a tap on the model opens the pr
   await context.close();
 });
 
+// Plots at the probe on a phone: the probe's window turns it on, and one finger that starts on the
+// probe's marker moves the probe over the model (the plots follow it), where elsewhere it would orbit.
+test('touch: one finger on the probe\'s marker moves the probe, not the camera, with plots at the probe', async () => {
+  const { page, context, problems } = await openLab('#preset=05-full-phong', { width: 390, height: 844, scale: 3, touch: true });
+  const touch = await fingers(page);
+  const start = await viewShot(page);
+  await touch.tap(...centre((await widgets(page)).view));
+  let rects = await widgets(page);
+  assert.ok(rects['probe.plots-here'], 'the probe\'s window offers plots at the point');
+  const box = rects['probe.plots-here'];
+  await touch.tap(box.x + box.h / 2, box.y + box.h / 2);
+  // The probe's window covers part of the model on a phone; the marker is found where it is drawn.
+  rects = await widgets(page);
+  const [mx, my] = centre(rects['view.probe-marker']);
+  const view = rects.view;
+  const to = [mx + view.w * 0.12, my + view.h * 0.1];
+  await touch.drag([[[mx, my], to]]);
+  rects = await widgets(page);
+  const [x, y] = centre(rects['view.probe-marker']);
+  assert.ok(Math.hypot(x - to[0], y - to[1]) < 8, `the marker followed the finger: (${x}, ${y}), not ${to}`);
+  const after = compare(await viewShot(page), start);
+  assert.ok(after.passes && after.max === 0, `the model did not turn: ${JSON.stringify(after)}`);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
 test('touch: one finger orbits, two fingers pinch to zoom and pan, and a drag there and back is the golden again', async () => {
   // A tablet in landscape, panels hidden, so the view is the desktop golden's 1024x640.
   const { page, context } = await openLab('', { width: 1024, height: 640, touch: true });

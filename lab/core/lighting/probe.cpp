@@ -110,11 +110,17 @@ std::optional<ProbeResult> probePixel(const Preset& preset, const Mesh& mesh, gl
     if (!hit) {
         return std::nullopt;
     }
+    return probeSurface(preset, hit->position, hit->normal);
+}
 
+ProbeResult probeSurface(const Preset& preset, const glm::vec3& positionModel, const glm::vec3& normalModel) {
+    Transforms t = computeTransforms(preset, 1.0f); // the eye-space terms do not depend on the view's shape
     ProbeResult r;
-    r.positionWorld = glm::vec3(t.model * glm::vec4(hit->position, 1.0f));
-    r.positionEye = glm::vec3(t.modelView * glm::vec4(hit->position, 1.0f));
-    r.N = glm::normalize(t.normalMatrix * hit->normal);
+    r.positionModel = positionModel;
+    r.normalModel = normalModel;
+    r.positionWorld = glm::vec3(t.model * glm::vec4(positionModel, 1.0f));
+    r.positionEye = glm::vec3(t.modelView * glm::vec4(positionModel, 1.0f));
+    r.N = glm::normalize(t.normalMatrix * normalModel);
     r.V = glm::normalize(-r.positionEye);
     ShadingInputs in = packShading(preset, t.view);
     r.emissive = preset.terms.emissive ? in.material.emissive : glm::vec3(0.0f);

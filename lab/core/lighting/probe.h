@@ -27,6 +27,7 @@ struct ProbeLight {
 };
 
 struct ProbeResult {
+    glm::vec3 positionModel, normalModel; // the point on the mesh and its shading normal (model space, not normalized)
     glm::vec3 positionWorld; // the shading point, where the GUI marks it
     glm::vec3 positionEye;
     glm::vec3 N, V;
@@ -37,5 +38,10 @@ struct ProbeResult {
 
 // `ndc` is the pixel centre in normalized device coordinates ([-1, 1], y up).
 std::optional<ProbeResult> probePixel(const Preset& preset, const Mesh& mesh, glm::vec2 ndc, float aspect);
+
+// The same evaluation at a point already found (ProbeResult::positionModel, normalModel): how the
+// GUI follows a probed point while the camera or a light moves, without casting a ray again (the
+// point stays where it is on the mesh even where something now hides it).
+ProbeResult probeSurface(const Preset& preset, const glm::vec3& positionModel, const glm::vec3& normalModel);
 
 } // namespace lab

@@ -41,7 +41,7 @@ struct Evaluator {
     glsl::Light light;
 
     explicit Evaluator(const LobeInputs& inputs)
-        : in(inputs), v(lobeVectors(inputs.incidentDeg)), light(unitLightFrom(v.L)) {}
+        : in(inputs), v(lobeVectors(inputs.incidentDeg)), light(lobeLightFrom(inputs, v.L)) {}
 
     glsl::LightTerms at(const glm::vec3& V) const {
         return glsl::lightContribution(in.material, in.brdf, in.terms, light, glm::vec3(0.0f), v.N, V);

@@ -2,7 +2,7 @@
 // behind the plots window's 3D lobe and its intensity map (ui/plots_3d.cpp).
 //
 // The same light and lighting function as the plane-of-incidence plots (core/plots/plot_data.h): N = (0, 1, 0),
-// a unit white directional light from L = (-sin θi, cos θi, 0), each sample the Rec. 709 luminance
+// a directional light from L = (-sin θi, cos θi, 0) (unit white, or LobeInputs' colours), each sample the Rec. 709 luminance
 // of glsl::lightContribution's diffuse and specular parts for V(θo, φ) =
 // (sin θo cos φ, cos θo, sin θo sin φ). φ = 0 is the plot's right half (θo > 0, the side of R),
 // φ = 180° its left half: those two meridians are reflectedIntensity()'s samples, bit for bit

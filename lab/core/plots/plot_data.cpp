@@ -32,7 +32,8 @@ LobeInputs lobeInputs(const Preset& preset, float incidentDeg) {
 }
 
 bool operator==(const LobeInputs& x, const LobeInputs& y) {
-    return static_cast<const Surface&>(x) == static_cast<const Surface&>(y) && x.incidentDeg == y.incidentDeg;
+    return static_cast<const Surface&>(x) == static_cast<const Surface&>(y) && x.incidentDeg == y.incidentDeg &&
+           x.lightDiffuse == y.lightDiffuse && x.lightSpecular == y.lightSpecular;
 }
 
 glsl::Light unitLightFrom(const glm::vec3& L) {
@@ -42,6 +43,13 @@ glsl::Light unitLightFrom(const glm::vec3& L) {
     light.diffuse = glm::vec3(1.0f);
     light.specular = glm::vec3(1.0f);
     light.attenuation = glm::vec3(1.0f, 0.0f, 0.0f);
+    return light;
+}
+
+glsl::Light lobeLightFrom(const LobeInputs& inputs, const glm::vec3& L) {
+    glsl::Light light = unitLightFrom(L);
+    light.diffuse = inputs.lightDiffuse;
+    light.specular = inputs.lightSpecular;
     return light;
 }
 
@@ -55,15 +63,15 @@ LobeVectors lobeVectors(float incidentDeg) {
 }
 
 std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs) {
-    // The material, BRDF and term switches as the shaders get them, and a unit white directional
-    // light from L: lightContribution() then gives each sample's diffuse and specular parts, 0
-    // where the preset switches the term off, exactly as the renderer sums them.
+    // The material, BRDF and term switches as the shaders get them, and a directional light from
+    // L (unit white, or the inputs' colours): lightContribution() then gives each sample's diffuse
+    // and specular parts, 0 where the preset switches the term off, exactly as the renderer sums them.
     const glsl::Material& material = inputs.material;
     const glsl::Brdf& brdf = inputs.brdf;
     const glsl::Terms& terms = inputs.terms;
     const LobeVectors v = lobeVectors(inputs.incidentDeg);
     const glm::vec3& N = v.N;
-    const glsl::Light light = unitLightFrom(v.L);
+    const glsl::Light light = lobeLightFrom(inputs, v.L);
     const glm::vec3 p(0.0f);
     std::vector<PlotSample> samples;
     samples.reserve(181);

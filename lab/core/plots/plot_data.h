@@ -2,7 +2,8 @@
 //
 // A unit white directional light in the plane of incidence: N = (0, 1, 0),
 // L = (-sin θi, cos θi, 0), V = (sin θo, cos θo, 0), θo from -90° to 90° in 1° steps. Each
-// sample is the Rec. 709 luminance of Kd·max(0, N·L), of Ks·S and of their sum, from the same
+// sample is the Rec. 709 luminance of Kd·max(0, N·L), of Ks·S and of their sum (times the light's
+// colours where LobeInputs gives it some: a probed point's light, core/plots/probe_lobe.h), from the same
 // lighting function the shaders run for one light (glsl::lightContribution): a term the preset
 // switches off (Preset::terms.diffuse, .specular) reads 0, as on the model. Emissive and ambient
 // light do not depend on L or V and are not part of the plot.
@@ -27,10 +28,14 @@ struct PlotSample {
 };
 
 // Everything the samples depend on: the material, BRDF and term switches as the shaders get them
-// (packed from the preset), and the incident angle. Equal inputs give equal samples, so the plots
-// may keep samples from frame to frame keyed on them (ui/plot_cache.h).
+// (packed from the preset), the incident angle and the light that arrives. Equal inputs give equal
+// samples, so the plots may keep samples from frame to frame keyed on them (ui/plot_cache.h).
 struct LobeInputs : Surface {
     float incidentDeg = 0.0f;
+    // The light's diffuse and specular colours as they arrive: unit white for the plots and `lab
+    // plot`; at a probed point its colours × Att × spot factor (core/plots/probe_lobe.h), so that
+    // the lobe reads what the model reflects there.
+    glm::vec3 lightDiffuse{1.0f}, lightSpecular{1.0f};
 };
 LobeInputs lobeInputs(const Preset& preset, float incidentDeg);
 // Every field equal (floats compared exactly, so a NaN never equals and is never reused).
@@ -39,6 +44,9 @@ bool operator==(const LobeInputs& x, const LobeInputs& y);
 // The plots' light: unit white, directional, arriving from `L` (unit, towards the light), no
 // attenuation. The lobe plots and the albedo (core/plots/energy.h) shade with exactly this light.
 glsl::Light unitLightFrom(const glm::vec3& L);
+// The lobes' light: unitLightFrom(L) with the inputs' colours (white unless they say otherwise).
+// The albedo (core/plots/energy.h) stays with the unit light: it is a ratio of reflected to incident.
+glsl::Light lobeLightFrom(const LobeInputs& inputs, const glm::vec3& L);
 
 // The plots' geometry for an incident angle θi (degrees, negative on the other side): N = (0, 1, 0),
 // L = (−sin θi, cos θi, 0) towards the light, R = 2(N·L)N − L. The plane plots, the 3D lobe

@@ -131,6 +131,8 @@ inline constexpr IntRange kSubdivisionsRound{3, 1024};  // sphere, torus
 // max_failing (a share of its pixels) or max_mean (levels); a plot fails where a value differs
 // from its golden by more than plot_tolerance.
 inline constexpr IntRange kPixelTolerance{0, 255};
+// check.views[].light: a light of the preset, counted from 1.
+inline constexpr IntRange kLightNumber{1, kMaxLights};
 inline constexpr Range kMaxFailing{0.0f, 1.0f, false, 0.0f, 0.01f, "in [0, 1]"};
 inline constexpr Range kMaxMean{0.0f, 255.0f, false, 0.0f, 2.0f, "in [0, 255]"};
 inline constexpr Range kPlotTolerance{0.0f, 1.0e6f, false, 0.0f, 1.0e-3f, "in [0, 1000000]"};

@@ -196,6 +196,13 @@ Json presetJson(const Preset& p) {
                 check[key] = number(*value);
             }
         }
+        if (!p.check.views.empty()) {
+            Json views = Json::array();
+            for (const CheckView& v : p.check.views) {
+                views.push_back(v.light == 1 ? Json(v.view) : Json{{"view", v.view}, {"light", v.light}});
+            }
+            check["views"] = views;
+        }
         j["check"] = check;
     }
     if (!p.sweep.empty()) {

@@ -109,12 +109,23 @@ struct TermSwitches {
 // How `lab check` compares this preset (its optional `check` block, limits.h's ranges): each
 // tolerance given replaces the command line's for this preset's render, sweep cells and plot.
 // Saved only when given. It changes no picture.
+// A view `lab check` renders too (core/scene/view_mode.h), against <name>.<view>.png (and
+// <name>.<view>.light<N>.png for a light other than the first): written "d", or
+// {"view": "spot", "light": 2}. The name is checked when read; whether the view applies to the
+// preset (its BRDF, its lights) where it is checked, as for `sweep`.
+struct CheckView {
+    std::string view;
+    int light = 1; // from 1
+    bool operator==(const CheckView&) const = default;
+};
+
 struct CheckSettings {
     std::optional<int> pixelTolerance;  // pixel_tolerance
     std::optional<float> maxFailing;    // max_failing (a share: 0.001 is 0.1%)
     std::optional<float> maxMean;       // max_mean (levels)
     std::optional<float> plotTolerance; // plot_tolerance (absolute, for the lobe CSV)
-    bool empty() const { return !pixelTolerance && !maxFailing && !maxMean && !plotTolerance; }
+    std::vector<CheckView> views;       // views
+    bool empty() const { return !pixelTolerance && !maxFailing && !maxMean && !plotTolerance && views.empty(); }
     bool operator==(const CheckSettings&) const = default;
 };
 

@@ -18,6 +18,7 @@
 #include "core/scene/limits.h"
 #include "core/scene/preset_names.h"
 #include "core/scene/sweep.h"
+#include "core/scene/view_mode.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -129,7 +130,8 @@ constexpr std::string_view kLightKeys[] = {"type",     "position",    "direction
 constexpr std::string_view kOrbitKeys[] = {"on", "axis", "degrees_per_second"};
 constexpr std::string_view kTermsKeys[] = {"emissive", "ambient", "diffuse", "specular"};
 constexpr std::string_view kPlotKeys[] = {"incident_deg"};
-constexpr std::string_view kCheckKeys[] = {"pixel_tolerance", "max_failing", "max_mean", "plot_tolerance"};
+constexpr std::string_view kCheckKeys[] = {"pixel_tolerance", "max_failing", "max_mean", "plot_tolerance", "views"};
+constexpr std::string_view kCheckViewKeys[] = {"view", "light"};
 
 // model.gltf: a .gltf or .glb file in or below the preset's folder.
 void readGltfPath(Reader& r, Model& model, const std::optional<fs::path>& folder) {
@@ -280,6 +282,43 @@ void readTerms(Reader& r, TermSwitches& terms) {
     }
 }
 
+// `check.views`: view names ("d"), or {"view": "spot", "light": 2}; each name a view of
+// view_mode.h (whether it applies is asked where it is checked).
+void readCheckViews(Reader& r, std::vector<CheckView>& views) {
+    const Json* json = r.find("views");
+    if (!json) {
+        return;
+    }
+    if (!json->is_array() || json->size() > kViewModes.size() * limits::kMaxLights) {
+        r.error("views", "expected an array of view names such as \"d\" or objects {\"view\": \"spot\", \"light\": 2}, got " +
+                             Reader::describe(*json));
+        return;
+    }
+    for (std::size_t i = 0; i < json->size(); ++i) {
+        const Json& item = (*json)[i];
+        std::string where = r.elementPath("views", i);
+        CheckView v;
+        if (item.is_object()) {
+            Reader o = r.child(item, where);
+            o.readString("view", v.view);
+            o.readInt("light", v.light, limits::kLightNumber);
+            o.finish(kCheckViewKeys);
+            where += ".view";
+        } else if (item.is_string()) {
+            v.view = item.get<std::string>();
+        } else {
+            r.errorAt(where, "expected a view name or an object {\"view\": ..., \"light\": N}, got " + Reader::describe(item));
+            continue;
+        }
+        if (!viewFromName(v.view)) {
+            r.errorAt(where, "no view " + inQuotes(v.view, 60) + suggestion(v.view, viewNameList()) + "; the views are " +
+                                 viewNames());
+        } else {
+            views.push_back(std::move(v));
+        }
+    }
+}
+
 // `check`: lab check's tolerances for this preset, each optional.
 void readCheck(Reader& r, CheckSettings& check) {
     if (r.has("pixel_tolerance")) {
@@ -302,6 +341,7 @@ void readCheck(Reader& r, CheckSettings& check) {
             }
         }
     }
+    readCheckViews(r, check.views);
 }
 
 // `sweep`: one or two `lab render --sweep` arguments, each checked for its syntax here. Whether the

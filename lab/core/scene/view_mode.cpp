@@ -60,6 +60,14 @@ std::string viewNames() {
     return s;
 }
 
+std::vector<std::string_view> viewNameList() {
+    std::vector<std::string_view> names;
+    for (const ViewRow& r : kRows) {
+        names.push_back(r.name);
+    }
+    return names;
+}
+
 bool showsValue(ViewMode mode) { return mode >= ViewMode::NdotL; }
 bool isFactor(ViewMode mode) { return mode >= ViewMode::NdotL && mode <= ViewMode::Distance; }
 

@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace lab {
 
@@ -65,8 +66,9 @@ const char* toString(ViewMode mode);
 // "lit", "n-dot-l", "gouraud-error", ...: the command line's and the check block's names.
 const char* viewName(ViewMode mode);
 std::optional<ViewMode> viewFromName(std::string_view name);
-// Every name, comma separated, for messages.
+// Every name, comma separated, for messages; and as a list (for suggest.h).
 std::string viewNames();
+std::vector<std::string_view> viewNameList();
 
 // A factor view or gouraud-error: a number per pixel, drawn through a palette.
 bool showsValue(ViewMode mode);
