@@ -323,5 +323,70 @@ TEST(Gui, TheFrameTimeShowsWhileTheModelChangesAndNotWhenIdle) {
     EXPECT_TRUE(lab.has("view.frame-time")) << "... until asked (T)";
 }
 
+// Scrolls the control panel (the wheel over it) until `widget` is inside the window.
+Rect scrolledTo(Lab& lab, const std::string& widget) {
+    Rect area = lab.widget("view.area"), w = lab.widget(widget);
+    for (int i = 0; i < 40 && w.y + w.h > area.y + area.h - 4; ++i) {
+        lab.moveTo(w.x + 4, area.y + area.h / 2);
+        unsigned long long before = lab.frame();
+        lab.x().button(5, true);
+        lab.x().button(5, false);
+        lab.settle(before);
+        w = lab.widget(widget);
+    }
+    return w;
+}
+
+// The columns [x0, x1) of an image.
+Image columns(const Image& image, int x0, int x1) {
+    Image out{x1 - x0, image.height, {}};
+    for (int y = 0; y < image.height; ++y) {
+        auto row = image.rgb.begin() + (std::ptrdiff_t(y) * image.width + x0) * 3;
+        out.rgb.insert(out.rgb.end(), row, row + std::ptrdiff_t(x1 - x0) * 3);
+    }
+    return out;
+}
+
+// The equation's D button shows D across the model (issue 26): the picture changes, the legend
+// strip appears under the model, not over it, with the value under the pointer; the wipe brings
+// the lit model back left of its divider, and a drag on the divider moves it.
+TEST(Gui, AFactorButtonShowsItOnTheModelWithItsLegendAndTheWipeSplitsIt) {
+    START_LAB(lab, "--preset", preset("13-cook-torrance-beckmann-schlick"));
+    Image lit = lab.viewShot();
+    EXPECT_FALSE(lab.has("view.legend")) << "the lit model has no legend";
+    Rect d = scrolledTo(lab, "equation.d");
+    lab.click(d.cx(), d.cy());
+    Rect view = lab.widget("view");
+    lab.moveTo(view.cx(), view.cy()); // on the model: its value is read under the pointer
+    Image dView = lab.viewShot();
+    ASSERT_FALSE(dView.rgb.empty());
+    auto corner = [](const Image& image) { return int(image.rgb[0]) + image.rgb[1] + image.rgb[2]; };
+    EXPECT_GT(corner(lit), 20) << "the preset's background";
+    EXPECT_EQ(corner(dView), 0) << "a value view is drawn on black";
+    ASSERT_TRUE(lab.has("view.legend"));
+    Rect legend = lab.widget("view.legend");
+    EXPECT_GE(legend.y, view.y + view.h) << "the legend is under the model, not over it";
+    EXPECT_TRUE(lab.has("view.legend-bar"));
+    Rect wipe = scrolledTo(lab, "equation.wipe");
+    lab.click(wipe.x + 8, wipe.cy());
+    ASSERT_TRUE(lab.has("view.wipe"));
+    view = lab.widget("view");
+    Rect handle = lab.widget("view.wipe");
+    EXPECT_NEAR(handle.cx(), view.cx(), 3) << "the divider starts in the middle";
+    Image wiped = lab.viewShot();
+    ASSERT_EQ(wiped.width, dView.width);
+    int half = wiped.width / 2;
+    EXPECT_EQ(corner(wiped), corner(lit)) << "the lit model (and its background) left of the divider";
+    EXPECT_GT(changedShare(columns(wiped, 0, half - 4), columns(dView, 0, half - 4)), 0.2) << "not D left of it";
+    EXPECT_LT(changedShare(columns(wiped, half + 4, wiped.width), columns(dView, half + 4, dView.width)), 0.01)
+        << "D right of it";
+    lab.drag(handle.cx(), handle.cy(), view.x + view.w / 4, handle.cy());
+    EXPECT_NEAR(lab.widget("view.wipe").cx(), view.x + view.w / 4, 4) << "the drag moved the divider";
+    Image moved = lab.viewShot();
+    int quarter = moved.width / 4;
+    EXPECT_LT(changedShare(columns(moved, quarter + 4, moved.width), columns(dView, quarter + 4, dView.width)), 0.01)
+        << "D right of the moved divider: the camera did not turn";
+}
+
 } // namespace
 } // namespace lab::test
