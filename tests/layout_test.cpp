@@ -231,5 +231,22 @@ TEST(LayoutText, ATinyViewStillHasAModelViewport) {
     }
 }
 
+// A value view's legend strip (issue 26) is carved from the model's room, above the footer.
+TEST(LayoutText, TheLegendStripTakesRoomFromTheModelNotFromTheText) {
+    Layout l = computeLayout({1280.0f, 800.0f, 1.0f, true, true});
+    TextRoom room;
+    room.header = 30.0f;
+    room.footer = 28.0f;
+    room.legend = 48.0f;
+    placeText(l, room);
+    EXPECT_FLOAT_EQ(l.legend.h, 48.0f);
+    EXPECT_FLOAT_EQ(l.legend.y + l.legend.h, l.footer.y) << "right above the footer";
+    EXPECT_FLOAT_EQ(l.viewport.y + l.viewport.h, l.legend.y) << "the model ends where the legend starts";
+    room.legend = 0.0f;
+    placeText(l, room);
+    EXPECT_FLOAT_EQ(l.legend.h, 0.0f);
+    EXPECT_FLOAT_EQ(l.viewport.y + l.viewport.h, l.footer.y);
+}
+
 } // namespace
 } // namespace lab::ui
