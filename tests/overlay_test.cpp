@@ -87,6 +87,8 @@ Preset cubePreset(Shading shading) {
     p.model.subdivisions = {1, 1};
     p.camera.eye = {3.2f, 2.6f, 4.0f};
     p.shading = shading;
+    p.material.diffuse = {0.2f, 0.35f, 0.7f}; // blue, no highlight: no pixel of the model is grey like a line
+    p.material.specular = glm::vec3(0.0f);
     return p;
 }
 
@@ -229,6 +231,39 @@ TEST_F(Overlay, DrawViewFollowsTheViewSettings) {
     settings.vertexNormals = true;
     EXPECT_EQ(viaView(settings), render(preset, mesh, {true, true, preset.background}).rgb);
     EXPECT_NE(viewDraw(settings), viewDraw(ViewSettings{})) << "a cached view is drawn again when they change";
+}
+
+// On a wipe the lit side keeps the preset's background and a value view's side is black: on a
+// light background each side's wireframe takes the colour that shows on its own background.
+TEST_F(Overlay, OnAWipeEachSideOfTheWireframeContrastsWithItsBackground) {
+    Preset preset = cubePreset(Shading::Phong);
+    preset.background = glm::vec3(1.0f);
+    auto mesh = std::make_shared<const Mesh>(makeBuiltin(preset.model.builtin, preset.model.subdivisions));
+    ViewSettings settings;
+    settings.mode = ViewMode::NdotL;
+    settings.wipe = true;
+    settings.wireframe = true;
+    Framebuffer target(kWidth, kHeight);
+    target.bind();
+    drawView(*renderer_, preset, mesh, Viewport{0, 0, kWidth, kHeight}, viewDraw(settings));
+    const Image image = target.readRgb();
+    std::vector<Segment> front, back;
+    splitEdges(preset, *mesh, front, back);
+    int left = 0, right = 0, wrong = 0;
+    for (const Segment& s : front) {
+        for (float t = 0.1f; t < 0.91f; t += 0.05f) {
+            glm::vec2 at = s.a + t * (s.b - s.a);
+            if (std::abs(at.x - 0.5f * kWidth) < 3.0f) {
+                continue;
+            }
+            bool lit = at.x < 0.5f * kWidth;
+            (lit ? left : right) += colorNear(image, at, lit ? kWireDark : kWireLight);
+            wrong += colorNear(image, at, lit ? kWireLight : kWireDark);
+        }
+    }
+    EXPECT_GE(left, 40);
+    EXPECT_GE(right, 40);
+    EXPECT_EQ(wrong, 0);
 }
 
 TEST_F(Overlay, NormalsStickOutOfTheSilhouetteBySixPercentOfTheDiagonal) {
