@@ -134,6 +134,7 @@ struct App::Impl {
     bool updateViewports(const ui::Layout& layout, const FrameInput& in, float scale);
     std::vector<std::pair<const CachedViewport*, Viewport>> shown; // this frame's renders and where they go
     void screenshot(const ui::Layout& layout, const FrameInput& in);
+    bool updateReadout(const FrameInput& in, const std::optional<ui::LegendModel>& shownLegend);
     void timeLastFrame(const FrameInput& in);
     std::map<int, float> captionHeights; // the caption's tallest strip at each width, while the view keeps its size
     std::array<float, 3> captionView{};  // that size and the font's
@@ -371,6 +372,18 @@ bool App::Impl::updateViewports(const ui::Layout& layout, const FrameInput& in, 
     return drawn;
 }
 
+// After the renders: the value under the pointer (app/value_readout.h). True when the legend this
+// frame showed (`shownLegend`, made before the render) is owed a frame: the range or value changed.
+bool App::Impl::updateReadout(const FrameInput& in, const std::optional<ui::LegendModel>& shownLegend) {
+    if (!shown.empty()) {
+        ImVec2 pointer = ImGui::GetIO().MousePos;
+        readout.update(renderer, renders[0], shown[0].second, static_cast<float>(in.framebufferWidth) / in.windowWidth,
+                       in.windowHeight, pointer.x, pointer.y, workspace.view);
+    }
+    bool rangeChanged = shownLegend && shownLegend->note.empty() && shownLegend->range != renders[0].range();
+    return readout.takeChanged() || rangeChanged;
+}
+
 // The model's viewport alone, at the window's pixel density, to a PNG (a download in the browser).
 void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
     const ui::Rect& v = layout.viewport;
@@ -506,15 +519,7 @@ FrameOutput App::frame(const FrameInput& in) {
     }
     float scale = m.resolution.update(events.dragging, in.lastFrameSeconds, m.options.frameBudgetSeconds);
     m.viewportDrawn = m.updateViewports(layout, in, scale);
-    if (!m.shown.empty()) {
-        ImVec2 pointer = ImGui::GetIO().MousePos;
-        m.readout.update(m.renderer, m.renders[0], m.shown[0].second, static_cast<float>(in.framebufferWidth) / in.windowWidth,
-                         in.windowHeight, pointer.x, pointer.y, ws.view);
-    }
-    // The legend showed the range and value as they stood before this frame's render: one more frame.
-    bool legendOwed = m.readout.takeChanged() ||
-                      (model.overlay.legend && model.overlay.legend->range != m.renders[0].range() &&
-                       model.overlay.legend->note.empty());
+    bool legendOwed = m.updateReadout(in, model.overlay.legend);
     bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);
     bindFramebuffer(in.targetFramebuffer);
     // A toast is removed when its time is up; nothing else on screen changes by itself (a

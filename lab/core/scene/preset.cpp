@@ -127,6 +127,28 @@ bool hasNonFinite(const Json& j) {
     return false;
 }
 
+// `check`: each tolerance given, and the views (a name, or {"view", "light"} for a light but the first).
+Json checkJson(const CheckSettings& c) {
+    Json check = Json::object();
+    if (c.pixelTolerance) {
+        check["pixel_tolerance"] = *c.pixelTolerance;
+    }
+    for (auto [key, value] : {std::pair{"max_failing", c.maxFailing}, std::pair{"max_mean", c.maxMean},
+                              std::pair{"plot_tolerance", c.plotTolerance}}) {
+        if (value) {
+            check[key] = number(*value);
+        }
+    }
+    if (!c.views.empty()) {
+        Json views = Json::array();
+        for (const CheckView& v : c.views) {
+            views.push_back(v.light == 1 ? Json(v.view) : Json{{"view", v.view}, {"light", v.light}});
+        }
+        check["views"] = views;
+    }
+    return check;
+}
+
 Json presetJson(const Preset& p) {
     Json j;
     j["format"] = kPresetFormat;
@@ -186,24 +208,7 @@ Json presetJson(const Preset& p) {
     j["plot"] = {{"incident_deg", number(p.plotIncidentDeg)}};
     // `check` and `sweep` only when given: presets without them are written as before they existed.
     if (!p.check.empty()) {
-        Json check = Json::object();
-        if (p.check.pixelTolerance) {
-            check["pixel_tolerance"] = *p.check.pixelTolerance;
-        }
-        for (auto [key, value] : {std::pair{"max_failing", p.check.maxFailing}, std::pair{"max_mean", p.check.maxMean},
-                                  std::pair{"plot_tolerance", p.check.plotTolerance}}) {
-            if (value) {
-                check[key] = number(*value);
-            }
-        }
-        if (!p.check.views.empty()) {
-            Json views = Json::array();
-            for (const CheckView& v : p.check.views) {
-                views.push_back(v.light == 1 ? Json(v.view) : Json{{"view", v.view}, {"light", v.light}});
-            }
-            check["views"] = views;
-        }
-        j["check"] = check;
+        j["check"] = checkJson(p.check);
     }
     if (!p.sweep.empty()) {
         j["sweep"] = p.sweep;
