@@ -81,6 +81,7 @@ OverlayLines::~OverlayLines() {
     glDeleteBuffers(1, &edgeEbo_);
     glDeleteVertexArrays(1, &normalVao_);
     glDeleteBuffers(1, &normalVbo_);
+    glDeleteBuffers(1, &tipVbo_);
 }
 
 void OverlayLines::drawEdges() {
@@ -100,9 +101,12 @@ void OverlayLines::drawEdges() {
     glBindVertexArray(0);
 }
 
-// One instance a line, its two vertices told apart by gl_VertexID (overlay.vert), so the
-// mesh's own buffer serves unless only every k-th vertex is drawn: a compact copy of those
-// then (a stride of k vertices would do without one, but WebGL2 allows strides up to 255 bytes).
+// One instance a line, its two vertices told apart by a_tip (overlay.vert), so the mesh's own
+// buffer serves unless only every k-th vertex is drawn: a compact copy of those then (a stride
+// of k vertices would do without one, but WebGL2 allows strides up to 255 bytes). a_tip comes
+// from a buffer that advances per vertex, not from gl_VertexID: the first WebGL 2.0 spec (and
+// browsers that kept to it) refuses an instanced draw in which every attribute advances per
+// instance.
 void OverlayLines::drawNormals() {
     if (!normalVao_) {
         std::size_t step = normalLineStep(mesh_.positions.size());
@@ -123,6 +127,12 @@ void OverlayLines::drawNormals() {
         glGenVertexArrays(1, &normalVao_);
         glBindVertexArray(normalVao_);
         bindPositionNormal(source, 1);
+        const float tips[] = {0.0f, 1.0f};
+        glGenBuffers(1, &tipVbo_);
+        glBindBuffer(GL_ARRAY_BUFFER, tipVbo_);
+        glBufferData(GL_ARRAY_BUFFER, sizeof tips, tips, GL_STATIC_DRAW);
+        glEnableVertexAttribArray(2);
+        glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
         normalCount_ = static_cast<GLsizei>((mesh_.positions.size() + step - 1) / step);
     }
     glBindVertexArray(normalVao_);

@@ -80,6 +80,7 @@ private:
     GLuint edgeVao_ = 0, edgeEbo_ = 0;
     GLsizei edgeCount_ = 0; // indices, two an edge
     GLuint normalVao_ = 0, normalVbo_ = 0; // normalVbo_: every k-th vertex, only when k > 1
+    GLuint tipVbo_ = 0; // {0, 1}: a line's base and tip
     GLsizei normalCount_ = 0; // lines
 };
 
