@@ -50,6 +50,17 @@ vec3 halfVector(vec3 L, vec3 V) {
     return normalize(L + V);
 }
 
+// H and the dot products N.H, N.V, N.L, V.H (not clamped).
+Dots dotsOf(vec3 N, vec3 L, vec3 V) {
+    Dots d;
+    d.H = halfVector(L, V);
+    d.NoH = dot(N, d.H);
+    d.NoV = dot(N, V);
+    d.NoL = dot(N, L);
+    d.VoH = dot(V, d.H);
+    return d;
+}
+
 // max(0, R.V)^n. Phong 1975.
 float phongSpecular(vec3 N, vec3 L, vec3 V, float shininess) {
     return pow(max(dot(reflectionVector(N, L), V), 0.0f), shininess);
@@ -162,15 +173,11 @@ float cookTorranceDenominator(float NoV) {
 // D.F.G / (4 max(N.V, 1e-4)): the microfacet BRDF D F G / (4 (N.L)(N.V)) times N.L.
 // Cook & Torrance 1982.
 float cookTorranceSpecular(vec3 N, vec3 L, vec3 V, Brdf b) {
-    vec3 H = halfVector(L, V);
-    float NoH = dot(N, H);
-    float NoV = dot(N, V);
-    float NoL = dot(N, L);
-    float VoH = dot(V, H);
-    float D = distributionTerm(NoH, b);
-    float F = fresnelTerm(VoH, b);
-    float G = geometryTerm(NoH, NoV, NoL, VoH, b);
-    return D * F * G / cookTorranceDenominator(NoV);
+    Dots d = dotsOf(N, L, V);
+    float D = distributionTerm(d.NoH, b);
+    float F = fresnelTerm(d.VoH, b);
+    float G = geometryTerm(d.NoH, d.NoV, d.NoL, d.VoH, b);
+    return D * F * G / cookTorranceDenominator(d.NoV);
 }
 
 // The specular factor S for the chosen BRDF; 0 wherever N.L <= 0.
@@ -273,34 +280,30 @@ vec3 viewVector(vec3 p) {
 // D F G / denominator * Ks Is * attenuation * spot, and Phong's is R.V^n * Ks Is * attenuation * spot.
 float equationFactor(int factor, Brdf b, Light l, vec3 p, vec3 N, vec3 V) {
     vec3 L = lightVector(l, p);
-    vec3 H = halfVector(L, V);
-    float NoH = dot(N, H);
-    float NoV = dot(N, V);
-    float NoL = dot(N, L);
-    float VoH = dot(V, H);
+    Dots d = dotsOf(N, L, V);
     if (factor == FACTOR_N_DOT_L) {
-        return max(NoL, 0.0f);
+        return max(d.NoL, 0.0f);
     }
     if (factor == FACTOR_N_DOT_V) {
-        return max(NoV, 0.0f);
+        return max(d.NoV, 0.0f);
     }
     if (factor == FACTOR_R_DOT_V) {
         return max(dot(reflectionVector(N, L), V), 0.0f);
     }
     if (factor == FACTOR_N_DOT_H) {
-        return max(NoH, 0.0f);
+        return max(d.NoH, 0.0f);
     }
     if (factor == FACTOR_D) {
-        return distributionTerm(NoH, b);
+        return distributionTerm(d.NoH, b);
     }
     if (factor == FACTOR_F) {
-        return fresnelTerm(VoH, b);
+        return fresnelTerm(d.VoH, b);
     }
     if (factor == FACTOR_G) {
-        return geometryTerm(NoH, NoV, NoL, VoH, b);
+        return geometryTerm(d.NoH, d.NoV, d.NoL, d.VoH, b);
     }
     if (factor == FACTOR_DENOMINATOR) {
-        return cookTorranceDenominator(NoV);
+        return cookTorranceDenominator(d.NoV);
     }
     if (factor == FACTOR_ATTENUATION) {
         return distanceAttenuation(l, p);

@@ -58,6 +58,15 @@ struct Light {
     float exponent;
 };
 
+// The half vector and the dot products of N, L, V and H that the lobes read.
+struct Dots {
+    vec3 H;
+    float NoH;
+    float NoV;
+    float NoL;
+    float VoH;
+};
+
 // One light's share of the colour at a point, term by term, with what the terms come from.
 // A term whose switch (Terms) is off is 0.
 struct LightTerms {
@@ -77,6 +86,7 @@ float spotFactor(vec3 L, vec3 S, float cosCutoff, float exponent);
 // Specular lobes
 vec3 reflectionVector(vec3 N, vec3 L);
 vec3 halfVector(vec3 L, vec3 V);
+Dots dotsOf(vec3 N, vec3 L, vec3 V);
 float phongSpecular(vec3 N, vec3 L, vec3 V, float shininess);
 float blinnPhongSpecular(vec3 N, vec3 L, vec3 V, float shininess);
 
