@@ -170,13 +170,7 @@ void OverlayProgram::draw(const Preset& preset, GpuMesh& mesh, const Viewport& v
         return;
     }
     OverlayLines& lines = mesh.overlay();
-    int x0 = viewport.x + static_cast<int>(std::lround(std::clamp(options.fromX, 0.0f, 1.0f) * viewport.width));
-    int x1 = viewport.x + static_cast<int>(std::lround(std::clamp(options.toX, 0.0f, 1.0f) * viewport.width));
-    glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
-    glScissor(x0, viewport.y, std::max(0, x1 - x0), viewport.height);
-    glEnable(GL_SCISSOR_TEST);
-    glDisable(GL_DITHER);
-    glDisable(GL_BLEND);
+    viewportPart(viewport, options.fromX, options.toX);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE); // the lines test against the model, not against each other

@@ -225,13 +225,7 @@ void Renderer::Impl::drawView(const Preset& shown, GpuMesh& mesh, const Viewport
         options.view = ViewMode::Lit;
     }
     const Preset preset = viewed(shown, options.view);
-    int x0 = viewport.x + static_cast<int>(std::lround(std::clamp(options.fromX, 0.0f, 1.0f) * viewport.width));
-    int x1 = viewport.x + static_cast<int>(std::lround(std::clamp(options.toX, 0.0f, 1.0f) * viewport.width));
-    glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
-    glScissor(x0, viewport.y, std::max(0, x1 - x0), viewport.height);
-    glEnable(GL_SCISSOR_TEST);
-    glDisable(GL_DITHER);
-    glDisable(GL_BLEND);
+    viewportPart(viewport, options.fromX, options.toX);
     glm::vec3 background = showsValue(options.view) ? glm::vec3(0.0f) : preset.background;
     if (bits) {
         glClearColor(1.0f, 1.0f, 1.0f, 1.0f); // all bits set: a NaN, which no model pixel counts as
@@ -399,6 +393,16 @@ std::optional<ValueRange> drawView(Renderer& renderer, const Preset& preset, con
     renderer.draw(preset, mesh, viewport, options);
     drawViewOverlays(renderer, preset, mesh, viewport, draw, valueView);
     return range;
+}
+
+void viewportPart(const Viewport& viewport, float fromX, float toX) {
+    int x0 = viewport.x + static_cast<int>(std::lround(std::clamp(fromX, 0.0f, 1.0f) * viewport.width));
+    int x1 = viewport.x + static_cast<int>(std::lround(std::clamp(toX, 0.0f, 1.0f) * viewport.width));
+    glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
+    glScissor(x0, viewport.y, std::max(0, x1 - x0), viewport.height);
+    glEnable(GL_SCISSOR_TEST);
+    glDisable(GL_DITHER);
+    glDisable(GL_BLEND);
 }
 
 void bindFramebuffer(unsigned id) { glBindFramebuffer(GL_FRAMEBUFFER, id); }

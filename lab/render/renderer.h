@@ -150,6 +150,10 @@ private:
 std::optional<ValueRange> drawView(Renderer& renderer, const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
                                    const Viewport& viewport, const ViewDraw& draw);
 
+// glViewport(viewport) with the scissor on its width's part fromX..toX (shares of the width, as
+// DrawOptions has them), no dithering, no blending: how the model and its overlays are drawn.
+void viewportPart(const Viewport& viewport, float fromX, float toX);
+
 // Binds framebuffer `id` (0: the window's own), e.g. after offscreen work.
 void bindFramebuffer(unsigned id);
 
