@@ -226,6 +226,7 @@ struct View {
     LobeMaximum peak;
     LobeVectors vectors;
     glm::vec3 viewer{0.0f, 1.0f, 0.0f}; // V: the plane plot's, or a probed point's (out of the plane too)
+    bool atPoint = false;               // plots at the probe: V is marked on the map as well
     float outer = 1.0f, largest = 0.0f;
     Readout readout;
 };
@@ -331,6 +332,9 @@ void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& k
     if (v.vectors.L.y > 0.0f) {
         spot(v.vectors.L, Ink::Light, "L", false); // where the light is, seen from above
     }
+    if (v.atPoint && v.viewer.y > 0.0f) {
+        spot(v.viewer, Ink::Viewer, "V", false); // the probed point's V, wherever it lies
+    }
     if (v.peak.value > 0.0f && v.largest > kNothingLit) {
         spot(v.peak.V, Ink::Text, nullptr, true);
     }
@@ -419,6 +423,7 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
         v.gridB = st.grids.get(v.inB, [&] { return sampleHemisphere(v.inB); });
     }
     v.viewer = point ? point->viewer : outgoingDirection(std::fabs(s.viewerDeg), s.viewerDeg >= 0.0f ? 0.0f : 180.0f);
+    v.atPoint = point != nullptr;
     if (point) {
         pointTokens(v.readout, *point);
     }

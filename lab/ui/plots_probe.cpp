@@ -8,6 +8,7 @@
 
 #include <glm/common.hpp>
 
+#include <cmath>
 #include <string>
 
 namespace lab::ui {
@@ -35,12 +36,17 @@ void probeLobeTokens(Readout& r, const ProbeLobe& at, const LobeInputs& inA, con
         r.add(format("%si %.0f%s, behind the surface: no light arrives", kTheta, double(at.incidentDeg), kDeg), Ink::Light);
     } else {
         r.add(format("%si %.1f%s", kTheta, double(at.incidentDeg), kDeg), Ink::Light);
-        r.add(format("arriving: colour %s Att %.3f %s spot %.3f", "\xc3\x97", double(at.attenuation), "\xc3\x97", double(at.spot)),
-              Ink::Light);
+        if (at.spot <= 0.0f) {
+            r.add("outside the spot's cone: no light arrives", Ink::Light); // rather than "terms switched off?"
+        } else {
+            r.add(format("arriving: colour %s Att %.3f %s spot %.3f", "\xc3\x97", double(at.attenuation), "\xc3\x97",
+                         double(at.spot)), Ink::Light);
+        }
     }
     r.lineBreak();
     const std::string words = outOfPlane(at);
-    r.add(format("at V %so %+.0f%s%s", kTheta, double(at.viewerDeg), kDeg, words.empty() ? ":" : ","), Ink::Viewer);
+    // (+ 0.0: a rounded −0.4° reads +0°, not −0°)
+    r.add(format("at V %so %+.0f%s%s", kTheta, std::round(double(at.viewerDeg)) + 0.0, kDeg, words.empty() ? ":" : ","), Ink::Viewer);
     if (!words.empty()) {
         r.add(words + ":", Ink::Viewer);
     }
@@ -70,7 +76,7 @@ void probeAttenuationTokens(Readout& r, const ProbeLobe& at, bool directional) {
 
 void probeSliders(const ProbeLobe& at, float field) {
     // The point's angles, shown where the preset's are, and not to be moved: the mode never edits the preset.
-    float incident = at.incidentDeg, viewer = at.viewerDeg;
+    float incident = at.incidentDeg, viewer = std::round(at.viewerDeg) + 0.0f; // never "-0°"
     const std::string unit = "%.0f" + std::string(kDeg);
     ImGui::BeginDisabled();
     ImGui::SetNextItemWidth(field);
