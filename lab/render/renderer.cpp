@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -259,9 +259,13 @@ void Renderer::draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewpor
 
 namespace {
 
+// The float whose bits are these four bytes, least significant first (memcpy: Emscripten 3.1.6's
+// library has no std::bit_cast).
 float floatOfBytes(const std::uint8_t* b) {
-    return std::bit_cast<float>(std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
-                                std::uint32_t(b[3]) << 24);
+    std::uint32_t bits = std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
+    float v = 0.0f;
+    std::memcpy(&v, &bits, sizeof v);
+    return v;
 }
 
 } // namespace
