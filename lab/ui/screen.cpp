@@ -5,6 +5,7 @@
 #include "ui/widgets.h"
 
 #include <imgui.h>
+#include <imgui_internal.h> // the window's MoveId: a press on its background
 
 #include <algorithm>
 #include <cctype>
@@ -30,7 +31,10 @@ void beginFixed(const char* title, const Rect& r, ImGuiWindowFlags extra = 0) {
 // scrolls only by wheel and scrollbar); a drag that starts on a widget is the widget's.
 void dragToScroll() {
     ImGuiIO& io = ImGui::GetIO();
-    if (ImGui::IsWindowHovered() && !ImGui::IsAnyItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    // A press on the window's own background makes its move handle the active item (ImGui 1.86 does
+    // so even for a window that cannot move): that is the background being dragged, not a widget.
+    bool background = !ImGui::IsAnyItemActive() || ImGui::GetActiveID() == ImGui::GetCurrentWindow()->MoveId;
+    if (ImGui::IsWindowHovered() && background && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
         ImGui::SetScrollY(ImGui::GetScrollY() - io.MouseDelta.y);
     }
 }
