@@ -22,8 +22,10 @@ void words(const char* text) {
 
 // A factor's button: shows its view (or the lit model again, when it is shown), highlighted while
 // shown, greyed where it does not apply (its tooltip says why).
-void factor(const char* label, ViewMode mode, const Preset& preset, ViewSettings& view) {
-    sameLineIfFits(label);
+void factor(const char* label, ViewMode mode, const Preset& preset, ViewSettings& view, bool onTheLine = true) {
+    if (onTheLine) {
+        sameLineIfFits(label);
+    }
     const bool shown = view.mode == mode;
     const std::string why = notApplicable(mode, preset, view.light);
     if (shown) {
@@ -127,7 +129,7 @@ void equationSection(const Preset& p, ViewSettings& view) {
     words("Att = 1 / (c0 + c1");
     factor("d", ViewMode::Distance, p, view);
     words("+ c2 d^2)");
-    factor("lit", ViewMode::Lit, p, view);
+    factor("lit", ViewMode::Lit, p, view, false); // the views beside the factors start a line of their own
     factor("normals", ViewMode::Normals, p, view);
     factor("Gouraud error", ViewMode::GouraudError, p, view);
     if (showsValue(view.mode)) {
