@@ -276,10 +276,10 @@ class Checker {
     // <stem>.<view>.png (<stem>.<view>.light<N>.png for a light other than the first).
     void checkView(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances, std::size_t i) {
         const CheckView& v = preset.preset.check.views[i];
-        ViewDraw draw;
-        draw.options.view = *viewFromName(v.view); // checked when the preset was read
-        draw.options.light = v.light - 1;
-        draw.automatic = showsValue(draw.options.view);
+        ViewSettings settings; // viridis over the automatic range
+        settings.mode = *viewFromName(v.view); // checked when the preset was read
+        settings.light = v.light - 1;
+        const ViewDraw draw = viewDraw(settings);
         const std::string name = stem + "." + v.view + (v.light == 1 ? "" : ".light" + std::to_string(v.light));
         std::string why = notApplicable(draw.options.view, preset.preset, draw.options.light);
         if (!why.empty()) {

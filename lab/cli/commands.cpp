@@ -122,14 +122,14 @@ std::optional<Size> parseSize(const std::string& text, std::string& error) {
 
 namespace {
 
+// The command line's view as the GUI's view settings would draw it (render/renderer.h viewDraw).
 ViewDraw viewDrawOf(const RenderView& v) {
-    ViewDraw d;
-    d.options.view = v.mode;
-    d.options.light = v.light;
-    d.options.palette = v.palette;
-    d.options.range = v.range.value_or(ValueRange{});
-    d.automatic = showsValue(v.mode) && !v.range;
-    return d;
+    ViewSettings settings;
+    settings.mode = v.mode;
+    settings.light = v.light;
+    settings.palette = v.palette;
+    settings.range = v.range;
+    return viewDraw(settings);
 }
 
 // False, with the message, when `view` cannot show `preset` ("d is a Cook-Torrance factor; ...").
