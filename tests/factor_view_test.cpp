@@ -105,14 +105,7 @@ float cpuFactor(const Preset& preset, ViewMode view, int light, const EyeProbe& 
                                 glsl::viewVector(e.p));
 }
 
-struct Variant {
-    const char* name;
-    BrdfModel brdf;
-    Distribution d;
-    FresnelMode f;
-    bool geometry;
-    Shading shading;
-};
+using test::Variant;
 
 class FactorViews : public GlSuite<testing::TestWithParam<Variant>> {};
 
@@ -121,7 +114,7 @@ class FactorViews : public GlSuite<testing::TestWithParam<Variant>> {};
 TEST_P(FactorViews, GreyIsTheCpuFactorWithinOneLevel) {
     ASSERT_NE(renderer_, nullptr);
     const Variant& v = GetParam();
-    Preset preset = factorPreset(v.brdf, v.d, v.f, v.geometry);
+    Preset preset = factorPreset(v.brdf, v.distribution, v.fresnel, v.geometry);
     preset.shading = v.shading;
     const test::Probes probes = makeFactorProbes(preset);
     const std::vector<EyeProbe> eye = eyeProbes(preset, probes);
@@ -166,7 +159,7 @@ TEST_P(FactorViews, GreyIsTheCpuFactorWithinOneLevel) {
 TEST_P(FactorViews, TheFactorsComposeToTheSpecularTerm) {
     ASSERT_NE(renderer_, nullptr);
     const Variant& v = GetParam();
-    Preset preset = factorPreset(v.brdf, v.d, v.f, v.geometry, true);
+    Preset preset = factorPreset(v.brdf, v.distribution, v.fresnel, v.geometry, true);
     preset.shading = Shading::Phong; // per pixel: each probe's own point and normal
     const test::Probes probes = makeFactorProbes(preset);
     const std::vector<EyeProbe> eye = eyeProbes(preset, probes);
@@ -209,23 +202,8 @@ TEST_P(FactorViews, TheFactorsComposeToTheSpecularTerm) {
     EXPECT_GT(lit, 50) << "the probes must see the lobe, not compare zeros";
 }
 
-std::vector<Variant> variants() {
-    std::vector<Variant> v;
-    for (Shading s : {Shading::Gouraud, Shading::Phong}) {
-        v.push_back({"phong", BrdfModel::Phong, Distribution::Beckmann, FresnelMode::Schlick, true, s});
-        v.push_back({"blinnphong", BrdfModel::BlinnPhong, Distribution::Beckmann, FresnelMode::Schlick, true, s});
-        v.push_back({"ct_beckmann_schlick", BrdfModel::CookTorrance, Distribution::Beckmann, FresnelMode::Schlick, true, s});
-        v.push_back({"ct_gaussian_full", BrdfModel::CookTorrance, Distribution::Gaussian, FresnelMode::Full, true, s});
-        v.push_back({"ct_ggx_schlick_nogeometry", BrdfModel::CookTorrance, Distribution::Ggx, FresnelMode::Schlick, false, s});
-    }
-    return v;
-}
-
-std::string variantName(const testing::TestParamInfo<Variant>& info) {
-    return std::string(info.param.name) + "_" + std::string(toString(info.param.shading));
-}
-
-INSTANTIATE_TEST_SUITE_P(EveryBrdf, FactorViews, testing::ValuesIn(variants()), variantName);
+INSTANTIATE_TEST_SUITE_P(EveryBrdf, FactorViews, testing::ValuesIn(test::brdfVariants({Shading::Gouraud, Shading::Phong})),
+                         test::variantName<testing::TestParamInfo<Variant>>);
 
 class ViewRenders : public GlSuite<testing::Test, OffscreenRenderer> {};
 

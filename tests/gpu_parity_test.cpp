@@ -22,20 +22,7 @@ namespace {
 
 constexpr int kSize = 48; // 48 x 48 probes, one per pixel
 
-struct Variant {
-    const char* name;
-    BrdfModel brdf;
-    Distribution distribution;
-    FresnelMode fresnel;
-    bool geometry;
-    Shading shading;
-};
-
-void PrintTo(const Variant& v, std::ostream* os) { *os << v.name << "/" << toString(v.shading); }
-
-std::string variantName(const testing::TestParamInfo<Variant>& info) {
-    return std::string(info.param.name) + "_" + std::string(toString(info.param.shading));
-}
+using test::Variant;
 
 Preset probePreset(const Variant& v) {
     Preset p;
@@ -109,19 +96,9 @@ TEST_P(GpuParity, ShadersMatchTheCpuWithinOneLevel) {
     (void)worstLevel;
 }
 
-std::vector<Variant> variants() {
-    std::vector<Variant> v;
-    for (Shading s : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
-        v.push_back({"phong", BrdfModel::Phong, Distribution::Beckmann, FresnelMode::Schlick, true, s});
-        v.push_back({"blinnphong", BrdfModel::BlinnPhong, Distribution::Beckmann, FresnelMode::Schlick, true, s});
-        v.push_back({"ct_beckmann_schlick", BrdfModel::CookTorrance, Distribution::Beckmann, FresnelMode::Schlick, true, s});
-        v.push_back({"ct_gaussian_full", BrdfModel::CookTorrance, Distribution::Gaussian, FresnelMode::Full, true, s});
-        v.push_back({"ct_ggx_schlick_nogeometry", BrdfModel::CookTorrance, Distribution::Ggx, FresnelMode::Schlick, false, s});
-    }
-    return v;
-}
-
-INSTANTIATE_TEST_SUITE_P(EveryBrdfAndShading, GpuParity, testing::ValuesIn(variants()), variantName);
+INSTANTIATE_TEST_SUITE_P(EveryBrdfAndShading, GpuParity,
+                         testing::ValuesIn(test::brdfVariants({Shading::Flat, Shading::Gouraud, Shading::Phong})),
+                         test::variantName<testing::TestParamInfo<Variant>>);
 
 TEST(Shaders, CompileErrorsNameTheFileAndLine) {
     HeadlessGl gl;

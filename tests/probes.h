@@ -17,10 +17,43 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <functional>
+#include <ostream>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace lab::test {
+
+// One BRDF and shading mode the probe tests run: Phong, Blinn-Phong and three Cook-Torrance
+// variants (each distribution and Fresnel, the geometry term on and off).
+struct Variant {
+    const char* name;
+    BrdfModel brdf;
+    Distribution distribution;
+    FresnelMode fresnel;
+    bool geometry;
+    Shading shading;
+};
+
+inline void PrintTo(const Variant& v, std::ostream* os) { *os << v.name << "/" << toString(v.shading); }
+
+// The five BRDF variants under each of `shadings`.
+inline std::vector<Variant> brdfVariants(std::initializer_list<Shading> shadings) {
+    std::vector<Variant> v;
+    for (Shading s : shadings) {
+        v.push_back({"phong", BrdfModel::Phong, Distribution::Beckmann, FresnelMode::Schlick, true, s});
+        v.push_back({"blinnphong", BrdfModel::BlinnPhong, Distribution::Beckmann, FresnelMode::Schlick, true, s});
+        v.push_back({"ct_beckmann_schlick", BrdfModel::CookTorrance, Distribution::Beckmann, FresnelMode::Schlick, true, s});
+        v.push_back({"ct_gaussian_full", BrdfModel::CookTorrance, Distribution::Gaussian, FresnelMode::Full, true, s});
+        v.push_back({"ct_ggx_schlick_nogeometry", BrdfModel::CookTorrance, Distribution::Ggx, FresnelMode::Schlick, false, s});
+    }
+    return v;
+}
+
+// "phong_Gouraud": a test's name suffix.
+template <typename Info> std::string variantName(const Info& info) {
+    return std::string(info.param.name) + "_" + std::string(toString(info.param.shading));
+}
 
 struct Probes {
     std::vector<FlatVertex> vertices; // object space, as drawPoints takes them
