@@ -98,6 +98,9 @@ TEST(Legend, TheBandGoesUnderTheRenderWhichStaysAsItWas) {
     EXPECT_EQ(legendNumber(3.5359235f), "3.54");
     EXPECT_EQ(legendNumber(0.000694f), "0.000694");
     EXPECT_EQ(legendNumber(-0.0f), "0");
+    EXPECT_EQ(legendDigits({0.0f, 3.5f}), 3);
+    EXPECT_EQ(legendDigits({0.04f, 0.04004f}), 4); // a narrow F: "0.04" and "0.04004", not "0.04" twice
+    EXPECT_EQ(legendNumber(0.04004f, legendDigits({0.04f, 0.04004f})), "0.04004");
 }
 
 } // namespace

@@ -51,7 +51,7 @@ void legendStrip(const LegendModel& m, const Rect& r, ImDrawList* dl) {
     float y = r.y + p;
     std::string right;
     if (m.value) {
-        right = "here: " + legendNumber(*m.value);
+        right = "here: " + legendNumber(*m.value, m.range ? legendDigits(*m.range) : 3);
     }
     float rightW = right.empty() ? 0.0f : ImGui::CalcTextSize(right.c_str()).x;
     dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.w - rightW - 2 * p, r.y + r.h), true);
@@ -67,7 +67,8 @@ void legendStrip(const LegendModel& m, const Rect& r, ImDrawList* dl) {
         return;
     }
     // lo [bar] hi (automatic), the middle's value under its tick, the cursor's value marked on the bar.
-    std::string lo = legendNumber(m.range->lo), hi = legendNumber(m.range->hi) + (m.automatic ? "  (auto)" : "");
+    const int digits = legendDigits(*m.range);
+    std::string lo = legendNumber(m.range->lo, digits), hi = legendNumber(m.range->hi, digits) + (m.automatic ? "  (auto)" : "");
     float loW = ImGui::CalcTextSize(lo.c_str()).x, hiW = ImGui::CalcTextSize(hi.c_str()).x;
     dl->AddText(ImVec2(r.x + p, y), kText, lo.c_str());
     dl->AddText(ImVec2(r.x + r.w - p - hiW, y), kText, hi.c_str());

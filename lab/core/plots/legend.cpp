@@ -10,10 +10,18 @@
 
 namespace lab {
 
-std::string legendNumber(float value) {
+std::string legendNumber(float value, int digits) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.3g", static_cast<double>(value == 0.0f ? 0.0f : value)); // no "-0"
+    std::snprintf(text, sizeof text, "%.*g", digits, static_cast<double>(value == 0.0f ? 0.0f : value)); // no "-0"
     return text;
+}
+
+int legendDigits(const ValueRange& r) {
+    int digits = 3;
+    while (digits < 7 && legendNumber(r.lo, digits) == legendNumber(r.hi, digits)) {
+        ++digits;
+    }
+    return digits;
 }
 
 std::vector<float> legendTicks(const ValueRange& r) { return {r.lo, 0.5f * (r.lo + r.hi), r.hi}; }
@@ -50,7 +58,7 @@ Image withLegend(const Image& render, const LegendSpec& spec) {
     // The ticks' values under the bar: the first left-aligned, the last right-aligned, the middle centred.
     std::vector<float> ticks = legendTicks(spec.range);
     for (std::size_t i = 0; i < ticks.size(); ++i) {
-        std::string label = legendNumber(ticks[i]);
+        std::string label = legendNumber(ticks[i], legendDigits(spec.range));
         float width = font.measure(label, text).width;
         float share = static_cast<float>(i) / static_cast<float>(ticks.size() - 1);
         float x = static_cast<float>(x0) + share * static_cast<float>(x1 - x0) - share * width;

@@ -17,8 +17,11 @@ struct LegendSpec {
     ValuePalette palette = ValuePalette::Viridis;
 };
 
-// A value as a legend writes it: three significant digits ("0.0412", "12.5", "1.2e+03").
-std::string legendNumber(float value);
+// A value as a legend writes it: `digits` significant digits ("0.0412", "12.5", "1.2e+03").
+std::string legendNumber(float value, int digits = 3);
+// The significant digits that tell `range`'s ends apart: 3, or more (up to 7) for a narrow range
+// such as F's 0.040 to 0.045, which three digits would write as "0.04" twice.
+int legendDigits(const ValueRange& range);
 
 // The values a legend labels: lo, the middle, hi.
 std::vector<float> legendTicks(const ValueRange& range);
