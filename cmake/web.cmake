@@ -1,8 +1,9 @@
 # web.cmake — what the browser build (emcmake cmake, Debian's Emscripten 3.1.6) needs instead of
 # find_package: Debian's header-only libraries through a folder of links (never -I/usr/include,
 # which would bring glibc's headers), Dear ImGui compiled from Debian's source package, and the
-# link options of the page, and the glTF decoders (meshoptimizer, Draco) compiled from Debian's
-# source packages. Included from CMakeLists.txt when EMSCRIPTEN is set.
+# link options of the page, and the glTF decoders (meshoptimizer, Draco) and the QR code encoder
+# (libqrencode) compiled from Debian's source packages. Included from CMakeLists.txt when EMSCRIPTEN
+# is set.
 
 # GLM, nlohmann-json, stb and tinygltf headers, and nothing else from /usr/include.
 set(LAB_WEB_INCLUDE "${CMAKE_BINARY_DIR}/web-include")
@@ -128,6 +129,27 @@ target_include_directories(lab_draco SYSTEM PUBLIC "${LAB_DRACO_CONFIG}" "${LAB_
 target_compile_definitions(lab_draco PUBLIC LAB_HAVE_DRACO=1)
 target_compile_options(lab_draco PRIVATE -fwasm-exceptions)
 
+# libqrencode 4.1.1 (QR codes of the share links, lab/core/share): Debian's libqrencode-dev is built
+# for the host, not for WebAssembly, so the page compiles the library's own C files from the source
+# package (not qrenc.c, the command-line tool, which wants libpng). Its build would write these
+# definitions into config.h; here they are given directly, without HAVE_CONFIG_H:
+# STATIC_IN_RELEASE=static as in its release builds, the version, and strdup from Emscripten's libc.
+# No HAVE_LIBPTHREAD: the page has one thread, so rsecc.c's lazily built tables need no mutex (and
+# -pthread would need SharedArrayBuffer). A static library whose include folder gives qrencode.h,
+# linked as PkgConfig::QRENCODE below. It only reaches lab.wasm once the app calls encodeQr.
+enable_language(C)
+lab_fetch_source(LAB_QRENCODE_SOURCE_DIR qrencode libqrencode-dev qrencode.c)
+set(qrencode "${LAB_QRENCODE_SOURCE_DIR}")
+add_library(lab_qrencode STATIC
+  "${qrencode}/qrencode.c" "${qrencode}/qrinput.c" "${qrencode}/bitstream.c" "${qrencode}/qrspec.c"
+  "${qrencode}/rsecc.c" "${qrencode}/split.c" "${qrencode}/mask.c" "${qrencode}/mqrspec.c" "${qrencode}/mmask.c")
+# Its users see qrencode.h alone, not the library's internal headers (split.h, mask.h, ...).
+file(MAKE_DIRECTORY "${CMAKE_BINARY_DIR}/qrencode-include")
+file(CREATE_LINK "${qrencode}/qrencode.h" "${CMAKE_BINARY_DIR}/qrencode-include/qrencode.h" SYMBOLIC)
+target_include_directories(lab_qrencode SYSTEM PUBLIC "${CMAKE_BINARY_DIR}/qrencode-include")
+target_compile_definitions(lab_qrencode PRIVATE
+  STATIC_IN_RELEASE=static MAJOR_VERSION=4 MINOR_VERSION=1 MICRO_VERSION=1 VERSION="4.1.1" HAVE_STRDUP=1)
+
 # The native build's target names for what stands in for them here, so that each room of lab/
 # links the same names on both builds.
 foreach(name glm::glm nlohmann_json::nlohmann_json PkgConfig::STB)
@@ -138,6 +160,8 @@ add_library(draco::draco INTERFACE IMPORTED)
 target_link_libraries(draco::draco INTERFACE lab_draco)
 add_library(meshoptimizer::meshoptimizer INTERFACE IMPORTED)
 target_link_libraries(meshoptimizer::meshoptimizer INTERFACE lab_meshopt)
+add_library(PkgConfig::QRENCODE INTERFACE IMPORTED)
+target_link_libraries(PkgConfig::QRENCODE INTERFACE lab_qrencode)
 
 # The UI font, cut down to the characters the UI can show (the glyph ranges ImGuiHost asks for,
 # lab/platform/imgui_host.cpp: Latin-1, Greek, dashes and the ellipsis, arrows, minus, <= and >=)

@@ -1,5 +1,5 @@
 // share_link_test.cpp — preset links round-trip exactly, and broken links are refused with a reason.
-#include "core/scene/share_link.h"
+#include "core/share/share_link.h"
 
 #include <gtest/gtest.h>
 
@@ -27,12 +27,59 @@ TEST(Link, PresetRoundTripsThroughTheFragment) {
     p.lights.push_back(LightDesc{});
     p.lights[1].type = LightType::Spot;
     std::string link = presetLink(p, std::nullopt);
-    ASSERT_EQ(link.rfind("p=", 0), 0u);
+    ASSERT_EQ(link.rfind("z=", 0), 0u);
+    // Only what differs from the defaults, deflated: far shorter than the whole preset.
+    EXPECT_LT(link.size(), 160u) << link; // the whole preset, minified: about 1100 characters
     Diagnostics d;
     auto parsed = parseLink("#" + link, ".", d);
     ASSERT_TRUE(parsed) << toString(d);
     ASSERT_TRUE(std::holds_alternative<Preset>(*parsed));
     EXPECT_EQ(std::get<Preset>(*parsed), p);
+}
+
+TEST(Link, APresetLinkCarriesOnlyWhatDiffersFromTheDefaults) {
+    Preset p;
+    p.material.shininess = 80.0f;
+    std::optional<std::string> json = inflateBytes(*base64UrlDecode(presetLink(p, std::nullopt).substr(2)), 1 << 20);
+    ASSERT_TRUE(json);
+    EXPECT_EQ(*json, R"({"material":{"shininess":80}})");
+    // A preset with fewer lights than the defaults cannot be a patch: it is whole, and still exact.
+    p.lights.clear();
+    Diagnostics d;
+    auto parsed = parseLink(presetLink(p, std::nullopt), ".", d);
+    ASSERT_TRUE(parsed) << toString(d);
+    EXPECT_EQ(std::get<Preset>(*parsed), p);
+}
+
+TEST(Link, AnExerciseRoundTripsThroughTheFragment) {
+    Exercise e;
+    e.title = "Find the shininess";
+    e.instructions = "Match the highlight.";
+    e.start.material.shininess = 10.0f;
+    e.start.lights.push_back(LightDesc{});
+    e.start.lights[1].position = {-1.0f, 0.5f, 3.0f};
+    e.target = e.start;
+    e.target.material.shininess = 60.0f;
+    e.open = {"material.shininess"};
+    e.hints = {"n is the exponent."};
+    e.tolerance.maxMean = 0.25f;
+    e.tolerance.fields = {{"material.shininess", 5.0f}};
+    std::string link = exerciseLink(e, std::nullopt);
+    ASSERT_EQ(link.rfind("x=", 0), 0u);
+    Diagnostics d;
+    auto parsed = parseLink(link, ".", d);
+    ASSERT_TRUE(parsed) << toString(d);
+    ASSERT_TRUE(std::holds_alternative<Exercise>(*parsed));
+    EXPECT_EQ(std::get<Exercise>(*parsed), e);
+    EXPECT_EQ(exerciseLink(e, std::string("03-shininess")), "exercise=03-shininess");
+    auto named = parseLink("#exercise=03-shininess", ".", d);
+    ASSERT_TRUE(named);
+    EXPECT_EQ(std::get<LinkedExerciseName>(*named).name, "03-shininess");
+}
+
+TEST(Link, AShareUrlReplacesTheBasesOwnFragment) {
+    EXPECT_EQ(shareUrl("https://c.example.org/lab/", "preset=05"), "https://c.example.org/lab/#preset=05");
+    EXPECT_EQ(shareUrl("https://c.example.org/lab/index.html#old", "z=abc"), "https://c.example.org/lab/index.html#z=abc");
 }
 
 TEST(Link, BundledPresetsGoByName) {
@@ -54,7 +101,14 @@ TEST(Link, BrokenLinksAreRefusedWithAReason) {
          "material.shininess", "in [0.001, 1000000]"},
         {"#preset=../../etc/passwd", "preset", "not the name of a bundled preset"},
         {"#preset=", "preset", "not the name"},
-        {"#zoom=3", "", "expected #preset=<name> or #p="},
+        {"#zoom=3", "", "expected #preset=<name>, #exercise=<name>, #z="},
+        {"#z=" + base64UrlEncode("not deflated"), "z", "not deflated data"},
+        // 2 MB of spaces deflate to a few KB: inflating stops at the preset's limit.
+        {"#z=" + base64UrlEncode(deflateBytes(std::string(2u << 20, ' '))), "z", "more than 1048576 bytes"},
+        {"#z=" + base64UrlEncode(deflateBytes("[1, 2]")), "z", "not a JSON object"},
+        {"#z=" + base64UrlEncode(deflateBytes(R"({"material": {"shininess": -1}})")), "material.shininess", "in [0.001"},
+        {"#x=" + base64UrlEncode(deflateBytes(R"({"format": "lighting-lab-exercise", "version": 1})")), "title", "missing"},
+        {"#exercise=a/b", "exercise", "not the name of a bundled exercise"},
         {"#p=" + std::string(70000, 'A'), "", "longer than"},
     };
     for (const Case& c : cases) {

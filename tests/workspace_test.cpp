@@ -6,7 +6,7 @@
 
 #include "core/gltf/model_loader.h"
 #include "core/scene/camera.h"
-#include "core/scene/share_link.h"
+#include "core/share/share_link.h"
 #include "box_gltf.h"
 #include "test_files.h"
 
@@ -170,7 +170,7 @@ TEST(Workspace, ALinkRoundTripsTheSceneAndABrokenLinkChangesNothing) {
     f.ws.a().material.shininess = 64.0f;
     f.ws.a().brdf = BrdfModel::CookTorrance;
     std::string link = f.ws.link();
-    ASSERT_EQ(link.rfind("p=", 0), 0u);
+    ASSERT_EQ(link.rfind("z=", 0), 0u);
     Preset shared = f.ws.a();
 
     Fixture g;
@@ -262,7 +262,7 @@ TEST(Workspace, ABundledPresetIsLinkedByName) {
     ws.start(kPresets, kPresets / "05-full-phong.json");
     EXPECT_EQ(ws.link(), "preset=05-full-phong");
     ws.a().material.shininess += 1.0f;
-    EXPECT_EQ(ws.link().rfind("p=", 0), 0u);
+    EXPECT_EQ(ws.link().rfind("z=", 0), 0u);
 }
 
 TEST(Workspace, ADroppedModelInsideTheFolderBecomesTheModelAndOneOutsideIsRefused) {

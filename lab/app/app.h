@@ -44,7 +44,7 @@ struct FrameInput {
     bool repaint = false;               // the window's picture was lost (uncovered, resized): draw it even if unchanged
     bool closeRequested = false; // the user closed the window
     bool touch = false;          // the pointer is a finger (app/touch.h): touch-sized widgets
-    std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/scene/share_link.h)
+    std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/share/share_link.h)
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
 };
 

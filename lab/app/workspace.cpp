@@ -1,12 +1,14 @@
 // workspace.cpp — files, links, commands and meshes of the editing state.
 #include "app/workspace.h"
 
+#include "core/exercise/preset_fields.h"
 #include "core/gltf/model_loader.h"
+#include "core/io/file_io.h"
 #include "core/io/paths.h"
 #include "core/io/safe_text.h"
 #include "core/scene/camera.h"
 #include "core/scene/preset_choices.h"
-#include "core/scene/share_link.h"
+#include "core/share/share_link.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -134,8 +136,148 @@ bool Workspace::run(const Request& r) {
     case Command::Revert: doc_.revert(); return true;
     case Command::Undo: doc_.undo(); return true;
     case Command::Redo: doc_.redo(); return true;
-    default: return runEdit(r.command);
+    default: return runExercise(r) || runEdit(r.command);
     }
+}
+
+//----------------------------------------------------------------------------------------
+// Exercises
+//----------------------------------------------------------------------------------------
+
+bool Workspace::runExercise(const Request& r) {
+    switch (r.command) {
+    case Command::ExerciseReset:
+        if (exercise_) {
+            Camera camera = doc_.preset.camera; // looking around is kept
+            doc_.preset = exercise_->exercise.start;
+            doc_.preset.camera = camera;
+            notes_.push_back("Back at the start of the exercise (Undo brings your attempt back)");
+        }
+        return true;
+    case Command::ExerciseHint:
+        if (exercise_ && exercise_->hintsShown < static_cast<int>(exercise_->exercise.hints.size())) {
+            ++exercise_->hintsShown;
+        }
+        return true;
+    case Command::ExerciseLeave:
+        if (exercise_) {
+            exercise_.reset();
+            view.compare = false;
+            notes_.push_back("Left the exercise: the attempt is an ordinary scene now");
+        }
+        return true;
+    case Command::MakeExercise:
+        if (draft_) {
+            draft_.reset();
+        } else {
+            draft_ = ExerciseDraft{};
+            draft_->target = doc_.preset;
+            if (!doc_.preset.name.empty() && doc_.preset.name != "Untitled") {
+                draft_->title = doc_.preset.name;
+            }
+            notes_.push_back("Making an exercise: this scene is the target. Tick the fields students may change, "
+                             "set them to where students start, then save.");
+        }
+        return true;
+    case Command::SaveExercise: saveExercise(r.path); return true;
+    default: return false;
+    }
+}
+
+void Workspace::openExercise(LoadedExercise loaded, std::optional<std::string> bundledName) {
+    whenChangesAreSafe("open the exercise " + loaded.exercise.title,
+                       [this, loaded = std::move(loaded), bundledName = std::move(bundledName)]() {
+        fs::path folder = loaded.file.empty() ? bundledFolder() : loaded.folder();
+        Preset start = loaded.exercise.start;
+        adopt(start, {}, folder);
+        exercise_ = ExerciseSession{loaded.exercise, loaded.file, bundledName, 0, ++exercisesOpened_};
+        kept_ = doc_.preset;
+        doc_.compare = loaded.exercise.target;
+        view.compare = true;
+        view.editingB = false;
+        draft_.reset();
+        notes_.push_back("Exercise: " + loaded.exercise.title);
+    });
+}
+
+void Workspace::keepExercise() {
+    if (!exercise_) {
+        return;
+    }
+    view.compare = true; // the target stays beside the attempt
+    view.editingB = false;
+    doc_.compare = exercise_->exercise.target;
+    if (doc_.preset != kept_) {
+        doc_.preset = withLockedFieldsOfStart(exercise_->exercise, doc_.preset);
+        kept_ = doc_.preset;
+    }
+}
+
+std::optional<Exercise> Workspace::draftExercise(Diagnostics& diagnostics) const {
+    if (!draft_) {
+        return std::nullopt;
+    }
+    Exercise e;
+    e.title = draft_->title;
+    e.instructions = draft_->instructions;
+    e.start = doc_.preset;
+    e.target = draft_->target;
+    e.target.camera = e.start.camera; // the camera is always free: the target is seen as the student starts
+    e.open = draft_->open;
+    std::size_t from = 0;
+    while (from <= draft_->hints.size()) {
+        std::size_t end = draft_->hints.find('\n', from);
+        std::string line = draft_->hints.substr(from, end == std::string::npos ? std::string::npos : end - from);
+        if (!line.empty()) {
+            e.hints.push_back(line);
+        }
+        if (end == std::string::npos) {
+            break;
+        }
+        from = end + 1;
+    }
+    // Read back as a file would be: the same checks, the same messages.
+    std::optional<Exercise> checked = parseExercise(exerciseToJson(e), e.title, doc_.folder(), diagnostics);
+    return checked;
+}
+
+void Workspace::saveExercise(const std::string& path) {
+    Diagnostics d;
+    std::optional<Exercise> e = draftExercise(d);
+    if (!e) {
+        problem("Not an exercise yet (nothing was saved)", std::move(d));
+        return;
+    }
+    std::string text = exerciseToJson(*e);
+    if (options_.saveByDownload) {
+        downloads_.push_back({safeStem(e->title) + ".json", text});
+        notes_.push_back("Downloaded the exercise " + e->title);
+        draft_.reset();
+        openExercise(LoadedExercise{*e, {}}, std::nullopt);
+        return;
+    }
+    if (path.empty()) {
+        problem("Save exercise", "type the exercise's path in the field beside the button, e.g. exercises/shininess.json");
+        return;
+    }
+    fs::path file = path;
+    if (isShipped(file)) {
+        problem("Cannot save " + file.string(), "this folder holds the shipped presets, which stay as they are; save elsewhere");
+        return;
+    }
+    std::string error;
+    if (!e->start.model.gltf.empty()) {
+        problem("Cannot save " + file.string(), "an exercise made in the lab uses a built-in model; write a glTF exercise by hand (model paths relative to its file)");
+        return;
+    }
+    if (!writeFileAtomic(file, text, error)) {
+        problem("Cannot save " + file.string() + " (nothing was written)", error);
+        return;
+    }
+    draft_.reset();
+    doc_.markSaved(doc_.file()); // the start's edits belong to the exercise now
+    notes_.push_back("Saved the exercise " + file.string() + ": opened as a student sees it");
+    openExercise(LoadedExercise{*e, file}, std::nullopt);
 }
 
 // The commands that edit the scene or how it is shown.
@@ -157,6 +299,10 @@ bool Workspace::runEdit(Command command) {
     case Command::ResetCamera: doc_.preset.camera = doc_.saved().camera; return true;
     case Command::FrameModel: frameModel(); return true;
     case Command::ToggleCompare:
+        if (exercise_) {
+            notes_.push_back("In an exercise the target stays beside your attempt (Leave exercise to compare freely)");
+            return true;
+        }
         view.compare = !view.compare;
         view.editingB = false;
         if (view.compare) { // a useful first comparison: the other shading mode
@@ -200,6 +346,10 @@ void Workspace::refreshPresetList() {
 
 // The scene becomes `preset`: a new history, B a copy of A.
 void Workspace::adopt(Preset preset, fs::path file, fs::path folder) {
+    if (exercise_) {
+        exercise_.reset();
+        view.compare = false;
+    }
     doc_.reset(std::move(preset), std::move(file), std::move(folder));
     ++scenesOpened_;
     refreshPresetList();
@@ -208,6 +358,25 @@ void Workspace::adopt(Preset preset, fs::path file, fs::path folder) {
 // Loads and checks everything first; the scene changes only when all of it worked.
 void Workspace::open(const fs::path& file) {
     Diagnostics d;
+    std::string error;
+    if (std::optional<std::string> text = readFile(file, kMaxExerciseBytes, error); text && isExerciseText(*text)) {
+        std::optional<LoadedExercise> exercise = loadExercise(file, d);
+        if (!exercise) {
+            problem("Cannot open " + file.filename().string() + " (nothing was changed)", std::move(d));
+            return;
+        }
+        if (!meshes_.get(exercise->exercise.start.model, exercise->folder(), d)) {
+            problem("Cannot load the model of " + file.filename().string() + " (nothing was changed)", std::move(d));
+            return;
+        }
+        std::optional<std::string> bundled;
+        std::error_code ec;
+        if (fs::equivalent(exercise->folder(), bundledFolder() / "exercises", ec)) {
+            bundled = file.stem().string();
+        }
+        openExercise(std::move(*exercise), bundled);
+        return;
+    }
     std::optional<LoadedPreset> loaded = loadPreset(file, d);
     if (!loaded) {
         problem("Cannot open " + file.filename().string() + " (nothing was changed)", std::move(d));
@@ -441,6 +610,24 @@ void Workspace::openLink(const std::string& fragment) {
         problem("Cannot open the link (nothing was changed)", std::move(d));
         return;
     }
+    if (auto* name = std::get_if<LinkedExerciseName>(&*parsed)) {
+        fs::path file = bundledFolder() / "exercises" / (name->name + ".json");
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec)) {
+            problem("Cannot open the link (nothing was changed)", "there is no bundled exercise " + inQuotes(name->name));
+            return;
+        }
+        open(file);
+        return;
+    }
+    if (auto* exercise = std::get_if<Exercise>(&*parsed)) {
+        if (!meshes_.get(exercise->start.model, bundledFolder(), d)) {
+            problem("Cannot load the linked exercise's model (nothing was changed)", std::move(d));
+            return;
+        }
+        openExercise(LoadedExercise{*exercise, {}}, std::nullopt);
+        return;
+    }
     if (auto* name = std::get_if<LinkedPresetName>(&*parsed)) {
         fs::path file = bundledFolder() / (name->name + ".json");
         std::error_code ec;
@@ -462,6 +649,13 @@ void Workspace::openLink(const std::string& fragment) {
 }
 
 const std::string& Workspace::link() {
+    if (exercise_) { // students open the exercise at its start, not the instructor's attempt
+        if (exerciseLinkFor_ != exercise_->opened) {
+            exerciseLink_ = exerciseLink(exercise_->exercise, exercise_->bundledName);
+            exerciseLinkFor_ = exercise_->opened;
+        }
+        return exerciseLink_;
+    }
     if (!link_.valid || link_.preset != doc_.preset || link_.file != doc_.file()) {
         std::optional<std::string> bundled;
         std::error_code ec;

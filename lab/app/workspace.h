@@ -13,6 +13,7 @@
 #pragma once
 
 #include "app/document.h"
+#include "core/exercise/exercise.h"
 #include "core/gltf/mesh_cache.h"
 #include "core/io/diagnostics.h"
 #include "core/io/image.h"
@@ -48,6 +49,26 @@ struct WorkspaceOptions {
 // ~/.local/share/lighting-lab/presets, else ./lighting-lab-presets.
 std::filesystem::path defaultUserFolder();
 
+// An exercise being solved (core/exercise/exercise.h): A is the student's attempt, B the target,
+// drawn beside it with its parameters hidden; only the open fields of A can change.
+struct ExerciseSession {
+    Exercise exercise;
+    std::filesystem::path file;             // empty when it came from a link
+    std::optional<std::string> bundledName; // a shipped exercise: linked by name
+    int hintsShown = 0;
+    unsigned opened = 0; // counts the exercises opened: a new one needs a new target render
+};
+
+// "Make exercise": the scene when it was pressed is the target; the author ticks the fields a
+// student may change, sets them to where the student starts, writes the instructions and saves.
+struct ExerciseDraft {
+    Preset target;
+    std::vector<std::string> open;
+    std::string title = "Untitled exercise";
+    std::string instructions;
+    std::string hints; // one a line
+};
+
 // Compare mode's two sets, side by side: A (the document's preset, what is saved) and B.
 enum class Side { A, B };
 inline constexpr std::array kSides{Side::A, Side::B};
@@ -76,7 +97,7 @@ public:
     // Carries out a scene or file command; false if `request` is not the workspace's.
     bool run(const Request& request);
     void open(const std::filesystem::path& file);
-    void openLink(const std::string& fragment); // "preset=name" or "p=..." (core/scene/share_link.h)
+    void openLink(const std::string& fragment); // "preset=name", "exercise=name", "z=...", "x=..." (core/share/share_link.h)
     bool saveTo(const std::filesystem::path& file);
     // A .gltf/.glb becomes A's model, framed as a preset without a camera is (seen from
     // core/scene/camera.h threeQuarterDirection), and A's lights are carried to it
@@ -94,12 +115,22 @@ public:
     // <preset>-<file> in the browser); `what` names them in the messages.
     void saveFiles(const std::vector<Download>& files, const std::string& what);
 
-    // B follows A's camera; then the frame's edits become one undo step unless a gesture is
-    // still in progress.
+    // B follows A's camera (in an exercise B is the target, and A keeps the start's value of
+    // every field the exercise does not open); then the frame's edits become one undo step unless
+    // a gesture is still in progress.
     void endFrame(bool gestureInProgress) {
+        keepExercise();
         doc_.compare.camera = doc_.preset.camera;
         doc_.commit(gestureInProgress);
     }
+
+    //--- exercises ----------------------------------------------------------------------
+    const std::optional<ExerciseSession>& exercise() const { return exercise_; }
+    std::optional<ExerciseDraft>& draft() { return draft_; }
+    // The exercise replaces the scene (asking first about unsaved changes): A its start, B its target.
+    void openExercise(LoadedExercise loaded, std::optional<std::string> bundledName);
+    // The exercise `draft` and the scene make, as saved (nullopt with the reasons when it is not one).
+    std::optional<Exercise> draftExercise(Diagnostics& diagnostics) const;
     // Counts the scenes opened (files, links): what belonged to the last scene can be dropped.
     unsigned scenesOpened() const { return scenesOpened_; }
 
@@ -137,6 +168,9 @@ private:
     void problem(std::string title, Diagnostics diagnostics);
     void problem(std::string title, std::string message);
     std::filesystem::path bundledFolder() const;
+    bool runExercise(const Request& request);
+    void keepExercise();
+    void saveExercise(const std::string& path);
 
     WorkspaceOptions options_;
     Document doc_;
@@ -153,6 +187,12 @@ private:
     int screenshots_ = 0;
     int figureFolders_ = 0;
     unsigned scenesOpened_ = 0;
+    std::optional<ExerciseSession> exercise_;
+    unsigned exercisesOpened_ = 0;
+    Preset kept_; // the attempt as last checked against the exercise's open fields
+    std::string exerciseLink_;
+    unsigned exerciseLinkFor_ = 0; // ExerciseSession::opened of exerciseLink_
+    std::optional<ExerciseDraft> draft_;
     struct {
         std::string text;
         Preset preset;

@@ -313,6 +313,37 @@ void checkLine(const CheckArguments& a, CommandLine& line) {
     }
 }
 
+// `lab exercise check` and `lab share`, as typed.
+struct ExerciseArguments {
+    std::string exercise, attempt, diff;
+};
+
+CLI::App* addExerciseCommand(CLI::App& app, ExerciseArguments& a, CLI::App*& check) {
+    CLI::App* exercise = app.add_subcommand("exercise", "Exercises: check a student's attempt");
+    exercise->require_subcommand(1, 1);
+    check = exercise->add_subcommand("check", "Whether an attempt (a preset) solves an exercise: exit 0 solved, 1 not yet, "
+                                              "2 bad input or a field the exercise does not open changed");
+    check->add_option("exercise", a.exercise, "Exercise file (\"format\": \"lighting-lab-exercise\")")->required()->check(kNotEmpty);
+    check->add_option("attempt", a.attempt, "The attempt: a preset file (e.g. the student's saved scene)")->required()->check(kNotEmpty);
+    check->add_option("--diff", a.diff, "PNG file to write the difference of the two renders to")->check(kNotEmpty);
+    return exercise;
+}
+
+struct ShareArguments {
+    std::string file, base, qr;
+};
+
+CLI::App* addShareCommand(CLI::App& app, ShareArguments& a) {
+    CLI::App* share = app.add_subcommand("share", "Print the link that opens a preset or an exercise in the course's "
+                                                  "page, and write its QR code");
+    share->add_option("file", a.file, "Preset or exercise file")->required()->check(kNotEmpty);
+    share->add_option("--base", a.base, "The course page's address, e.g. https://course.example.org/lab/")
+        ->required()
+        ->check(kNotEmpty);
+    share->add_option("--qr", a.qr, "PNG file to write the link's QR code to")->check(kNotEmpty);
+    return share;
+}
+
 } // namespace
 
 std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* argv) {
@@ -342,6 +373,11 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     CLI::App* plot = addPlotCommand(app, line, plotArguments);
     CheckArguments checkArguments;
     CLI::App* check = addCheckCommand(app, line, checkArguments);
+    ExerciseArguments exerciseArguments;
+    CLI::App* exerciseCheck = nullptr;
+    addExerciseCommand(app, exerciseArguments, exerciseCheck);
+    ShareArguments shareArguments;
+    CLI::App* share = addShareCommand(app, shareArguments);
 
     try {
         app.parse(argc, argv);
@@ -370,6 +406,22 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     }
     if (*check) {
         checkLine(checkArguments, line);
+    }
+    if (*exerciseCheck) {
+        line.command = CommandLine::Command::ExerciseCheck;
+        line.exercise = exerciseArguments.exercise;
+        line.attempt = exerciseArguments.attempt;
+        if (!exerciseArguments.diff.empty()) {
+            line.diffOut = exerciseArguments.diff;
+        }
+    }
+    if (*share) {
+        line.command = CommandLine::Command::Share;
+        line.shared = shareArguments.file;
+        line.shareBase = shareArguments.base;
+        if (!shareArguments.qr.empty()) {
+            line.qrOut = shareArguments.qr;
+        }
     }
     return line;
 }

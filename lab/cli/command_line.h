@@ -16,7 +16,7 @@
 namespace lab {
 
 struct CommandLine {
-    enum class Command { Lab, Render, Plot, Check } command = Command::Lab;
+    enum class Command { Lab, Render, Plot, Check, ExerciseCheck, Share } command = Command::Lab;
     // lab (the interactive lab)
     std::optional<std::filesystem::path> preset;
     bool presenter = false, fullscreen = false;
@@ -34,6 +34,13 @@ struct CommandLine {
     std::vector<SweepAxis> sweeps;                  // render --sweep (core/scene/sweep.h), columns then rows
     RenderView view;                                // render --view, --light, --palette, --range, --legend
     CheckOptions check;
+    // exercise check EXERCISE ATTEMPT [--diff FILE.png]
+    std::filesystem::path exercise, attempt;
+    std::optional<std::filesystem::path> diffOut;
+    // share FILE --base URL [--qr FILE.png]
+    std::filesystem::path shared;
+    std::string shareBase;
+    std::optional<std::filesystem::path> qrOut;
 };
 
 // The parsed command line, or the exit status when parsing ends the program: 0 after --help or

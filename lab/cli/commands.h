@@ -83,6 +83,20 @@ struct CheckOptions {
 
 int runCheck(const std::vector<std::filesystem::path>& presets, const CheckOptions& options);
 
+// `lab exercise check EXERCISE ATTEMPT [--diff FILE.png]` (exercise_commands.cpp): 0 when the attempt
+// (a preset) reaches the exercise's target (core/exercise/exercise.h), 1 when not yet (its score
+// printed), 2 for bad input, an attempt that changed a field the exercise does not open included
+// (each named by its JSON path). --diff writes the difference image of the two renders.
+int runExerciseCheck(const std::filesystem::path& exercise, const std::filesystem::path& attempt,
+                     const std::optional<std::filesystem::path>& diffOut);
+
+// `lab share FILE --base URL [--qr FILE.png]` (exercise_commands.cpp): prints the link that opens the
+// preset or exercise in the course's page (core/share/share_link.h: a shipped one by name, any
+// other as what differs from the defaults) and writes its QR code (8 pixels a module). A link too
+// long for a version-20 code is refused with --qr (exit 2), noted without.
+int runShare(const std::filesystem::path& file, const std::string& base,
+             const std::optional<std::filesystem::path>& qrOut, const std::filesystem::path& shippedPresets);
+
 // No GUI in this build (or no display): renders the preset (or the defaults) to a PNG in the
 // temporary folder and prints its path.
 int runPreview(const std::optional<std::filesystem::path>& preset);

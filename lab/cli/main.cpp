@@ -7,6 +7,8 @@
 //   lab plot PRESET [--out FILE.csv] [--incident-deg A] [--albedo FILE.csv]
 //                   [--figure lobe|overlay|attenuation|albedo --svg FILE --png FILE --scale S --csv FILE]
 //   lab check PRESET... --golden DIR [--update] [--report DIR] [--size WxH]
+//   lab exercise check EXERCISE ATTEMPT [--diff FILE.png]
+//   lab share PRESET_OR_EXERCISE --base URL [--qr FILE.png]
 //
 // Exit status: 0 success, 2 bad input (message on stderr), 1 internal failure or failed check.
 #include "cli/command_line.h"
@@ -18,17 +20,10 @@
 
 namespace {
 
-// The interactive lab on this build's platform (platform/window.h), or a preview without one.
-int runInteractive(const lab::CommandLine& line) {
-    lab::AppOptions options;
-    options.preset = line.preset;
-    options.presenter = line.presenter;
-    options.screenshotFolder = line.screenshotFolder;
-    options.layoutFile = line.layoutFile;
-    options.frameBudgetSeconds = line.frameBudgetMs / 1000.0f;
-    // The shipped presets, one rule: those installed relative to the program (LAB_INSTALLED_PRESETS,
-    // cmake/package.cmake: bin/lab -> share/lighting-lab/presets) where that folder exists, else the
-    // source tree's presets/ this program was built from (a build tree).
+// The shipped presets, one rule: those installed relative to the program (LAB_INSTALLED_PRESETS,
+// cmake/package.cmake: bin/lab -> share/lighting-lab/presets) where that folder exists, else the
+// source tree's presets/ this program was built from (a build tree).
+std::filesystem::path shippedPresets() {
     std::filesystem::path shipped = LAB_SOURCE_PRESETS;
     char exe[4096];
     ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
@@ -40,7 +35,18 @@ int runInteractive(const lab::CommandLine& line) {
             shipped = installed;
         }
     }
-    options.presetFolders.push_back(shipped);
+    return shipped;
+}
+
+// The interactive lab on this build's platform (platform/window.h), or a preview without one.
+int runInteractive(const lab::CommandLine& line) {
+    lab::AppOptions options;
+    options.preset = line.preset;
+    options.presenter = line.presenter;
+    options.screenshotFolder = line.screenshotFolder;
+    options.layoutFile = line.layoutFile;
+    options.frameBudgetSeconds = line.frameBudgetMs / 1000.0f;
+    options.presetFolders.push_back(shippedPresets());
     lab::WindowOptions window;
     window.fullscreen = line.fullscreen;
     if (line.windowSize) {
@@ -76,6 +82,8 @@ int main(int argc, char** argv) {
     case lab::CommandLine::Command::Plot:
         return lab::runPlot(line.presets.front(), line.out, line.incidentDeg, line.albedoOut, line.figure);
     case lab::CommandLine::Command::Check: return lab::runCheck(line.presets, line.check);
+    case lab::CommandLine::Command::ExerciseCheck: return lab::runExerciseCheck(line.exercise, line.attempt, line.diffOut);
+    case lab::CommandLine::Command::Share: return lab::runShare(line.shared, line.shareBase, line.qrOut, shippedPresets());
     case lab::CommandLine::Command::Lab: break;
     }
     return runInteractive(line);

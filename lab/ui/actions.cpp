@@ -25,6 +25,7 @@ constexpr std::array kRows = {
     CommandRow{C::ToggleWireframe,    'W',                 kNoModifier,   "Wireframe",        "wireframe: the triangles' edges over the shaded model"},
     CommandRow{C::ToggleVertexNormals, 'N',                kNoModifier,   "Vertex normals",   "vertex normals as short lines over the model"},
     CommandRow{C::ToggleCompare,      'C',                 kNoModifier,   "Compare",          "compare mode: the view split in two"},
+    CommandRow{C::ToggleShareCode,    'Q',                 kNoModifier,   "QR code (Q)",      "a large QR code of the scene's link, for students' phones (the exercise too)"},
     CommandRow{C::TogglePanels,       keys::Tab,           kNoModifier,   "Panels",           "cycle the panels: all, plots and model, model only"},
     CommandRow{C::TogglePresenter,    'P',                 kNoModifier,   "Presenter",        "presenter mode (large UI, with the caption)"},
     CommandRow{C::ToggleCaption,      'I',                 kNoModifier,   "Caption",          "show or hide the caption: the preset's name and description"},
@@ -58,6 +59,11 @@ constexpr std::array kRows = {
     CommandRow{C::CopyLink,           0,                   kNoModifier,   "Copy link",        ""},
     CommandRow{C::ExportFigures,      0,                   kNoModifier,   "Export figures",   ""},
     CommandRow{C::SaveSweep,          0,                   kNoModifier,   "Save PNG",         ""},
+    CommandRow{C::ExerciseReset,      0,                   kNoModifier,   "Start again",      ""},
+    CommandRow{C::ExerciseHint,       0,                   kNoModifier,   "Hint",             ""},
+    CommandRow{C::ExerciseLeave,      0,                   kNoModifier,   "Leave exercise",   ""},
+    CommandRow{C::MakeExercise,       0,                   kNoModifier,   "Make exercise",    ""},
+    CommandRow{C::SaveExercise,       0,                   kNoModifier,   "Save exercise",    ""},
 };
 // clang-format on
 

@@ -40,6 +40,8 @@ enum class Command {
     ToggleFullscreen, Screenshot, FocusOpenPath, PickFile, CopyLink, ToggleShaderEditor, CompileShaders,
     ExportFigures,
     RevertShaders, ToggleSweep, SaveSweep,
+    // Exercises (core/exercise/exercise.h): the workspace carries these out, the QR code the app
+    ExerciseReset, ExerciseHint, ExerciseLeave, MakeExercise, SaveExercise, ToggleShareCode,
 };
 
 struct CommandRow {
@@ -55,7 +57,7 @@ struct CommandRow {
 struct Request {
     Request(Command c, std::string p = {}, int i = -1) : command(c), path(std::move(p)), index(i) {}
     Command command;
-    std::string path; // OpenPath, SaveAs, LoadModel; Save: the "Save as" field, for an untitled scene
+    std::string path; // OpenPath, SaveAs, LoadModel, SaveExercise; Save: the "Save as" field, for an untitled scene
     int index = -1;   // OpenPresetAt
 };
 

@@ -180,6 +180,13 @@ std::optional<Preset> parsePreset(std::string_view text, const std::string& disp
                                   const std::optional<std::filesystem::path>& folder,
                                   Diagnostics& diagnostics, OmittedKeys* omitted = nullptr);
 
+// An inline preset (an exercise's `start` and `target`, a link's scene): the JSON text of one
+// object, read as a file's, each diagnostic's path under `where` ("start.material.shininess").
+// "format" and "version" may be left out (those of the file around it hold); given, they are checked.
+std::optional<Preset> parseInlinePreset(std::string_view objectText, const std::string& displayName,
+                                        const std::string& where, const std::optional<std::filesystem::path>& folder,
+                                        Diagnostics& diagnostics, OmittedKeys* omitted = nullptr);
+
 // Reads, parses and validates a preset file (at most kMaxPresetBytes).
 std::optional<LoadedPreset> loadPreset(const std::filesystem::path& file, Diagnostics& diagnostics);
 

@@ -451,6 +451,32 @@ std::optional<Preset> parsePreset(std::string_view text, const std::string& disp
     return preset;
 }
 
+std::optional<Preset> parseInlinePreset(std::string_view objectText, const std::string& displayName,
+                                        const std::string& where, const std::optional<fs::path>& folder,
+                                        Diagnostics& diagnostics, OmittedKeys* omitted) {
+    std::optional<Json> json = parseObject(objectText, displayName, diagnostics);
+    if (!json) {
+        return std::nullopt;
+    }
+    Diagnostics out;
+    Reader r(*json, where, displayName, out);
+    Preset preset;
+    // The format and version are those of the file around it; given here, they must still be right.
+    if ((!r.has("format") && !r.has("version")) || readFormatAndVersion(r)) {
+        r.find("format");
+        r.find("version");
+        readPresetKeys(r, preset, folder);
+    }
+    if (!out.empty()) {
+        diagnostics.insert(diagnostics.end(), out.begin(), out.end());
+        return std::nullopt;
+    }
+    if (omitted) {
+        *omitted = {!r.has("camera"), !r.has("lights")};
+    }
+    return preset;
+}
+
 std::optional<LoadedPreset> loadPreset(const fs::path& file, Diagnostics& diagnostics) {
     std::string error;
     std::optional<std::string> text = readFile(file, kMaxPresetBytes, error);

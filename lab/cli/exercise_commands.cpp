@@ -1,0 +1,142 @@
+// exercise_commands.cpp — `lab exercise check` and `lab share`.
+#include "cli/commands.h"
+
+#include "cli/command_kit.h"
+#include "cli/output.h"
+#include "core/exercise/exercise.h"
+#include "core/io/file_io.h"
+#include "core/io/safe_text.h"
+#include "core/share/qr_code.h"
+#include "core/share/share_link.h"
+
+namespace lab {
+
+namespace fs = std::filesystem;
+
+int runExerciseCheck(const fs::path& exerciseFile, const fs::path& attemptFile, const std::optional<fs::path>& diffOut) {
+    Diagnostics diagnostics;
+    std::optional<LoadedExercise> exercise = loadExercise(exerciseFile, diagnostics);
+    std::optional<LoadedPreset> attempt;
+    if (exercise) {
+        attempt = loadPreset(attemptFile, diagnostics);
+    }
+    if (!exercise || !attempt) {
+        printDiagnostics(diagnostics);
+        return kExitBadInput;
+    }
+    std::vector<std::string> locked =
+        lockedChanges(exercise->exercise, attempt->preset, exercise->folder(), attempt->folder());
+    if (!locked.empty()) {
+        std::string open;
+        for (const std::string& o : exercise->exercise.open) {
+            open += (open.empty() ? "" : ", ") + o;
+        }
+        for (const std::string& field : locked) {
+            print(stderr, attemptFile.string() + ": " + field + ": changed from the exercise's start, but the exercise "
+                          "does not open this field (open: " + open + ")\n");
+        }
+        return kExitBadInput;
+    }
+    Gpu gpu;
+    if (!gpu.start()) {
+        return kExitFailure;
+    }
+    const Exercise& e = exercise->exercise;
+    LoadedPreset tried{attemptAsScored(e, attempt->preset), attempt->file};
+    LoadedPreset target{targetAsScored(e), exercise->file};
+    std::optional<Image> a = gpu.renderer.render(tried, kExerciseRenderSide, kExerciseRenderSide, diagnostics);
+    std::optional<Image> t = a ? gpu.renderer.render(target, kExerciseRenderSide, kExerciseRenderSide, diagnostics)
+                               : std::nullopt;
+    if (!a || !t) {
+        printDiagnostics(diagnostics);
+        return kExitFailure;
+    }
+    ExerciseScore score = scoreExercise(e, attempt->preset, *a, *t);
+    if (diffOut) {
+        std::string error;
+        if (!writePng(score.image.diff, *diffOut, error)) {
+            print(stderr, "lab exercise check: " + error + "\n");
+            return kExitFailure;
+        }
+    }
+    print(stdout, attemptFile.string() + ": " + score.summary() + "\n");
+    return score.solved ? kExitOk : kExitFailure;
+}
+
+namespace {
+
+// The file's name when it is one of the shipped presets (or exercises) itself: the link names it.
+std::optional<std::string> shippedName(const fs::path& file, const fs::path& folder) {
+    std::error_code ec;
+    if (folder.empty() || !fs::is_directory(folder, ec) || !fs::equivalent(fs::absolute(file).parent_path(), folder, ec)) {
+        return std::nullopt;
+    }
+    return file.stem().string();
+}
+
+} // namespace
+
+int runShare(const fs::path& file, const std::string& base, const std::optional<fs::path>& qrOut,
+             const fs::path& shippedPresets) {
+    if (!(base.starts_with("https://") || base.starts_with("http://")) || base.size() > 2000 ||
+        base.find_first_of(" \t\r\n\"<>") != std::string::npos) {
+        print(stderr, "lab share: --base: expected the course page's address, e.g. https://course.example.org/lab/, got " +
+                          inQuotes(base) + "\n");
+        return kExitBadInput;
+    }
+    std::string error;
+    std::optional<std::string> text = readFile(file, kMaxExerciseBytes, error);
+    if (!text) {
+        print(stderr, file.string() + ": " + error + "\n");
+        return kExitBadInput;
+    }
+    Diagnostics diagnostics;
+    std::string fragment;
+    if (isExerciseText(*text)) {
+        std::optional<LoadedExercise> exercise = loadExercise(file, diagnostics);
+        if (!exercise) {
+            printDiagnostics(diagnostics);
+            return kExitBadInput;
+        }
+        fragment = exerciseLink(exercise->exercise, shippedName(file, shippedPresets / "exercises"));
+    } else {
+        std::optional<LoadedPreset> preset = loadPreset(file, diagnostics);
+        if (!preset) {
+            printDiagnostics(diagnostics);
+            return kExitBadInput;
+        }
+        std::optional<std::string> shipped = shippedName(file, shippedPresets);
+        if (!shipped && !preset->preset.model.gltf.empty()) {
+            print(stderr, file.string() + ": model.gltf: a link carries the scene, not its model file; only the shipped "
+                          "presets' glTF models can be linked (publish the model with the course page and make it a "
+                          "shipped preset)\n");
+            return kExitBadInput;
+        }
+        fragment = presetLink(preset->preset, shipped);
+    }
+    const std::string url = shareUrl(base, fragment);
+    std::optional<QrCode> code = encodeQr(url, error);
+    if (!code) {
+        std::string why = file.string() + ": the link is too long for a QR code that can be read across a room: " + error +
+                          ". Shorten the description and instructions, or publish the file with the course page and "
+                          "link it by name (#preset=NAME, #exercise=NAME)\n";
+        if (qrOut) {
+            print(stderr, why);
+            return kExitBadInput;
+        }
+        print(stderr, "lab share: note: " + why);
+    }
+    print(stdout, url + "\n");
+    if (qrOut && code) {
+        if (!writePng(qrImage(*code, 8), *qrOut, error)) {
+            print(stderr, "lab share: " + error + "\n");
+            return kExitFailure;
+        }
+        print(stderr, qrOut->string() + ": QR code version " + std::to_string(code->version) + " (" +
+                          std::to_string(code->size) + "x" + std::to_string(code->size) + " modules), " +
+                          std::to_string(url.size()) + " bytes\n");
+    }
+    return kExitOk;
+}
+
+} // namespace lab

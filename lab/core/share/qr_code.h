@@ -1,0 +1,48 @@
+// qr_code.h — QR codes for the lab's share links: the text in, the modules and an image out.
+//
+// Byte mode at error-correction level M (15% of the code may be lost), the smallest version that
+// holds the text, up to kMaxQrVersion. The encoding itself is libqrencode's (Debian's
+// libqrencode-dev natively; in the browser build the same sources compiled by cmake/web.cmake).
+// No GL, no ImGui: the caller shows the image (a texture, a PNG file) as it likes.
+#pragma once
+
+#include "core/io/image.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lab {
+
+struct QrCode {
+    int version = 0; // 1 to 40: the code has 17 + 4 * version modules a side
+    int size = 0;    // modules a side
+    std::vector<std::uint8_t> modules; // size*size, 1 = dark, row-major, top first
+
+    // Whether module (x, y) is dark; outside the code (the quiet zone) it is light.
+    bool dark(int x, int y) const {
+        return x >= 0 && y >= 0 && x < size && y < size && modules[std::size_t(y) * std::size_t(size) + std::size_t(x)];
+    }
+};
+
+// The largest code the lab makes: 97x97 modules, still scannable across a classroom.
+inline constexpr int kMaxQrVersion = 20;
+
+// Byte-mode QR code of `text` at error-correction level M, the smallest version that holds it.
+// nullopt, with `error` saying how many bytes it has and how many version `maxVersion` holds at
+// level M (666 for 20), when it does not fit; `maxVersion` outside 1..40 is an error too.
+std::optional<QrCode> encodeQr(std::string_view text, std::string& error, int maxVersion = kMaxQrVersion);
+
+// How many bytes a byte-mode code of `version` holds at level M (ISO/IEC 18004 table 7);
+// 0 outside 1..40.
+std::size_t qrCapacityBytes(int version);
+
+// The code as an image: `moduleSize` pixels a module, black on white, with the standard 4-module
+// quiet zone around it: (size + 8) * moduleSize pixels a side. An empty image (0 x 0) when
+// `moduleSize` is below 1, or the side would exceed kMaxImageSide.
+Image qrImage(const QrCode& code, int moduleSize);
+
+} // namespace lab
