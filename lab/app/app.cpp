@@ -1,6 +1,7 @@
 // app.cpp — one frame: layout, UI, requests carried out, one undo step, the model's viewport.
 #include "app/app.h"
 
+#include "app/exercise_score.h"
 #include "app/figure_export.h"
 #include "app/frame_speed.h"
 #include "app/orbit_clock.h"
@@ -12,6 +13,8 @@
 #include "core/io/file_io.h"
 #include "core/io/safe_text.h"
 #include "core/scene/light_orbit.h"
+#include "core/share/qr_code.h"
+#include "core/share/share_link.h"
 #include "render/renderer.h"
 #include "render/shader.h"
 #include "ui/screen.h"
@@ -94,6 +97,18 @@ struct App::Impl {
 
     OrbitClock orbits; // the moving lights (app/orbit_clock.h)
 
+    // Exercises: the live score, what the panel shows of the exercise and of a draft.
+    ExerciseScorer scorer;
+    ui::ExerciseView exerciseView;
+    ui::ExerciseDraftView draftView;
+    bool wasSolved = false;
+    // The scene's link as a QR code (Q): made again only when the link changes.
+    bool shareCode = false;
+    std::string shareCodeFor;
+    std::optional<QrCode> qr;
+    ui::ShareCodeModel shareModel;
+    void updateShareCode();
+
     // A side of the comparison as this frame shows it: A, and B in compare mode.
     struct ShownSide {
         std::size_t index;                // 0: A, 1: B
@@ -175,7 +190,66 @@ ui::ScreenModel App::Impl::screenModel() {
                  readout.legend(workspace.view, workspace.a(), renders[0].range()), std::nullopt, false};
     m.lightShapes = lightShapes;
     m.motion = anyOrbit(workspace.a()) ? &orbits.motion(0) : nullptr;
+    if (const std::optional<ExerciseSession>& ex = workspace.exercise()) {
+        const Exercise& e = ex->exercise;
+        const std::optional<ExerciseScore>& score = scorer.score();
+        exerciseView = {printable(e.title, true), printable(e.instructions, true), {},
+                        static_cast<int>(e.hints.size()) - ex->hintsShown, e.open,
+                        score ? score->summary() : std::string{}, score ? score->closeness : 0.0,
+                        score && score->solved};
+        for (int i = 0; i < ex->hintsShown; ++i) {
+            exerciseView.hints.push_back(printable(e.hints[static_cast<std::size_t>(i)], true));
+        }
+        m.panelInfo.exercise = &exerciseView;
+        m.overlay.exercise = true;
+    } else if (std::optional<ExerciseDraft>& draft = workspace.draft()) {
+        Diagnostics d;
+        workspace.draftExercise(d);
+        draftView = {&draft->open, &draft->title, &draft->instructions, &draft->hints,
+                     d.empty() ? std::string{} : printable(d.front().where.empty() ? d.front().message
+                                                                                     : d.front().where + ": " + d.front().message,
+                                                           true)};
+        m.panelInfo.draft = &draftView;
+    }
+    if (shareCode) {
+        updateShareCode();
+        m.shareCode = &shareModel;
+    }
     return m;
+}
+
+// The QR code of the scene's link on the course page (AppOptions::shareBase), made when the link changed.
+void App::Impl::updateShareCode() {
+    const std::string& fragment = workspace.link();
+    std::string url = options.shareBase.empty() ? std::string{} : shareUrl(options.shareBase, fragment);
+    shareModel.title = workspace.exercise() ? "Exercise: " + printable(workspace.exercise()->exercise.title, true)
+                                            : printable(workspace.document().displayName(), true);
+    if (!shareModel.problem.empty() && url == shareCodeFor && !url.empty()) {
+        return;
+    }
+    if (qr && url == shareCodeFor) {
+        return;
+    }
+    shareCodeFor = url;
+    qr.reset();
+    shareModel.code = nullptr;
+    shareModel.link = url;
+    shareModel.problem.clear();
+    if (url.empty()) {
+        shareModel.problem = "The QR code needs the course page's address. Start the lab once with\n"
+                             "  lab --share-base https://your-course.example.org/lab/\n"
+                             "(it is remembered), or use the page's Copy link.";
+        return;
+    }
+    std::string error;
+    qr = encodeQr(url, error);
+    if (qr) {
+        shareModel.code = &*qr;
+    } else {
+        shareModel.problem = "This scene's link is too long for a QR code that can be read across a room: " + error +
+                             ". Shorten the description, or publish the exercise with the course page and link it by "
+                             "name (lab share prints such links).";
+    }
 }
 
 // What the platform and the UI asked for this frame, in order, then one undo step if a gesture ended.
@@ -234,6 +308,7 @@ void App::Impl::carryOut(const Request& r) {
     case Command::FocusOpenPath: panel.focusOpenPath = true; break;
     case Command::PickFile: pickFile = true; break;
     case Command::CopyLink: copyLink = true; break; // the page says whether the browser allowed it
+    case Command::ToggleShareCode: shareCode = !shareCode; break;
     case Command::ToggleShaderEditor: shaderEditor.open = !shaderEditor.open; break;
     case Command::CompileShaders:
         if (shaderEditor.open) {
@@ -521,11 +596,22 @@ FrameOutput App::frame(const FrameInput& in) {
     m.viewportDrawn = m.updateViewports(layout, in, scale);
     bool legendOwed = m.updateReadout(in, model.overlay.legend);
     bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);
+    bool scoreOwed = false;
+    if (const std::optional<ExerciseSession>& ex = ws.exercise()) {
+        scoreOwed = m.scorer.update(m.renderer, ex->exercise, ex->opened, ws.a(), ws.mesh(Side::A), ws.mesh(Side::B),
+                                    events.gesture || events.dragging, m.clock, in.targetFramebuffer);
+        bool solved = m.scorer.score() && m.scorer.score()->solved;
+        if (solved && !m.wasSolved) {
+            m.toast = "Solved! Your attempt matches the target.";
+            m.toastLeft = kToastSeconds;
+        }
+        m.wasSolved = solved;
+    }
     bindFramebuffer(in.targetFramebuffer);
     // A toast is removed when its time is up; nothing else on screen changes by itself (a
     // reduced view is drawn at full size by the frame that ends the drag).
     m.interacting = events.gesture || events.dragging || orbiting;
-    float redrawIn = m.orbits.redrawIn(sweepDrawn || legendOwed || (probeMoved && !orbiting) ? 0.0f : m.textGoesIn(),
+    float redrawIn = m.orbits.redrawIn(sweepDrawn || legendOwed || scoreOwed || (probeMoved && !orbiting) ? 0.0f : m.textGoesIn(),
                                        orbiting, in.deltaTime);
     if (m.options.layoutFile) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);

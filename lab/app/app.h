@@ -82,6 +82,9 @@ struct AppOptions {
     // While dragging, the model's viewport is drawn at a lower resolution when frames take longer than
     // this (app/viewport_cache.h); 0 turns that off.
     float frameBudgetSeconds = 0.05f;
+    // The course page's address (https://.../lab/): the QR code (Q) opens the scene's link there.
+    // The page gives its own; the desktop --share-base (remembered in the settings file).
+    std::string shareBase;
 };
 
 // Owns the workspace, the renderer and the UI state (not copyable: impl_ is unique).

@@ -2,6 +2,7 @@
 #include "cli/command_line.h"
 
 #include "cli/output.h"
+#include "cli/settings.h"
 #include "core/io/safe_text.h"
 #include "core/io/suggest.h"
 #include "core/scene/limits.h"
@@ -364,6 +365,10 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
         ->check(kFinite)
         ->check(CLI::Range(0.0f, 1000.0f))
         ->capture_default_str();
+    app.add_option("--share-base", line.shareBase,
+                   "The course page's address (https://.../lab/): the QR code (Q) opens the scene there. Remembered in "
+                   "$XDG_CONFIG_HOME/lighting-lab/settings.json")
+        ->check(CLI::Validator([](std::string& text) { return shareBaseProblem(text); }, "URL"));
     // For GUI tests: the screen rectangles of the main widgets, rewritten every frame.
     app.add_option("--layout-file", layoutFile, "")->group("");
 
@@ -418,7 +423,7 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     if (*share) {
         line.command = CommandLine::Command::Share;
         line.shared = shareArguments.file;
-        line.shareBase = shareArguments.base;
+        line.base = shareArguments.base;
         if (!shareArguments.qr.empty()) {
             line.qrOut = shareArguments.qr;
         }

@@ -24,6 +24,7 @@ struct CommandLine {
     std::optional<Size> windowSize; // --size: else fitted to the screen
     std::filesystem::path screenshotFolder = ".";
     std::optional<std::filesystem::path> layoutFile;
+    std::string shareBase; // --share-base (remembered in the settings file, cli/settings.h)
     // render, plot, check
     std::vector<std::filesystem::path> presets;
     std::filesystem::path out;
@@ -39,7 +40,7 @@ struct CommandLine {
     std::optional<std::filesystem::path> diffOut;
     // share FILE --base URL [--qr FILE.png]
     std::filesystem::path shared;
-    std::string shareBase;
+    std::string base; // share --base
     std::optional<std::filesystem::path> qrOut;
 };
 

@@ -3,6 +3,7 @@
 
 #include "cli/command_kit.h"
 #include "cli/output.h"
+#include "cli/settings.h"
 #include "core/exercise/exercise.h"
 #include "core/io/file_io.h"
 #include "core/io/safe_text.h"
@@ -78,10 +79,8 @@ std::optional<std::string> shippedName(const fs::path& file, const fs::path& fol
 
 int runShare(const fs::path& file, const std::string& base, const std::optional<fs::path>& qrOut,
              const fs::path& shippedPresets) {
-    if (!(base.starts_with("https://") || base.starts_with("http://")) || base.size() > 2000 ||
-        base.find_first_of(" \t\r\n\"<>") != std::string::npos) {
-        print(stderr, "lab share: --base: expected the course page's address, e.g. https://course.example.org/lab/, got " +
-                          inQuotes(base) + "\n");
+    if (std::string problem = shareBaseProblem(base); !problem.empty()) {
+        print(stderr, "lab share: --base: " + problem + "\n");
         return kExitBadInput;
     }
     std::string error;

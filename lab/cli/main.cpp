@@ -13,6 +13,7 @@
 // Exit status: 0 success, 2 bad input (message on stderr), 1 internal failure or failed check.
 #include "cli/command_line.h"
 #include "cli/output.h"
+#include "cli/settings.h"
 #include "platform/window.h"
 
 #include <cstdio>
@@ -47,6 +48,19 @@ int runInteractive(const lab::CommandLine& line) {
     options.layoutFile = line.layoutFile;
     options.frameBudgetSeconds = line.frameBudgetMs / 1000.0f;
     options.presetFolders.push_back(shippedPresets());
+    // The course page's address: --share-base, remembered; else what was remembered.
+    std::string warning, error;
+    lab::Settings settings = lab::readSettings(lab::settingsFile(), warning);
+    if (!warning.empty()) {
+        lab::print(stderr, "lab: " + warning + "\n");
+    }
+    if (!line.shareBase.empty() && line.shareBase != settings.shareBase) {
+        settings.shareBase = line.shareBase;
+        if (!lab::writeSettings(settings, lab::settingsFile(), error)) {
+            lab::print(stderr, "lab: cannot remember --share-base: " + error + "\n");
+        }
+    }
+    options.shareBase = settings.shareBase;
     lab::WindowOptions window;
     window.fullscreen = line.fullscreen;
     if (line.windowSize) {
@@ -54,7 +68,6 @@ int runInteractive(const lab::CommandLine& line) {
         window.height = line.windowSize->height;
         window.sizeGiven = true;
     }
-    std::string error;
     switch (lab::runLab(options, window, error)) {
     case lab::WindowResult::Closed: return lab::kExitOk;
     case lab::WindowResult::Failed:
@@ -83,7 +96,7 @@ int main(int argc, char** argv) {
         return lab::runPlot(line.presets.front(), line.out, line.incidentDeg, line.albedoOut, line.figure);
     case lab::CommandLine::Command::Check: return lab::runCheck(line.presets, line.check);
     case lab::CommandLine::Command::ExerciseCheck: return lab::runExerciseCheck(line.exercise, line.attempt, line.diffOut);
-    case lab::CommandLine::Command::Share: return lab::runShare(line.shared, line.shareBase, line.qrOut, shippedPresets());
+    case lab::CommandLine::Command::Share: return lab::runShare(line.shared, line.base, line.qrOut, shippedPresets());
     case lab::CommandLine::Command::Lab: break;
     }
     return runInteractive(line);

@@ -1,6 +1,7 @@
 // panel.cpp — the control panel's sections.
 #include "ui/panel.h"
 
+#include "core/exercise/preset_fields.h"
 #include "core/io/safe_text.h"
 #include "core/lighting/lighting.h"
 #include "core/scene/camera.h"
@@ -19,6 +20,55 @@
 namespace lab::ui {
 
 namespace {
+
+// The exercise being solved or made during this controlPanel call (set there): which fields show.
+const ExerciseView* gExercise = nullptr;
+ExerciseDraftView* gDraft = nullptr;
+
+// Whether the field at JSON path `path` (core/exercise/preset_fields.h) gets its widget: in an
+// exercise only the open ones (and the always free); while making one, every field, with a
+// checkbox before it that opens it to students.
+bool field(const std::string& path) {
+    if (gExercise) {
+        return alwaysFree(path) || std::any_of(gExercise->open.begin(), gExercise->open.end(),
+                                               [&](const std::string& o) { return covers(o, path); });
+    }
+    if (gDraft && gDraft->open) {
+        std::vector<std::string>& open = *gDraft->open;
+        auto at = std::find(open.begin(), open.end(), path);
+        bool on = at != open.end();
+        ImGui::PushID(path.c_str());
+        if (ImGui::Checkbox("##open", &on)) {
+            if (on) {
+                open.push_back(path);
+            } else {
+                open.erase(at);
+            }
+        }
+        if (ImGui::IsItemHovered()) {
+            ImGui::SetTooltip("Students may change %s", path.c_str());
+        }
+        mark("open." + path);
+        ImGui::PopID();
+        ImGui::SameLine();
+    }
+    return true;
+}
+
+// Whether a section holding the fields under these paths shows at all (in an exercise: some open).
+bool anyField(std::initializer_list<const char*> prefixes) {
+    if (!gExercise) {
+        return true;
+    }
+    for (const char* p : prefixes) {
+        for (const std::string& o : gExercise->open) {
+            if (covers(o, p) || covers(p, o)) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
 
 // A combo over every value of an enumeration (core/scene/preset_choices.h), with one display name each.
 template <typename E, std::size_t N>
@@ -143,24 +193,31 @@ bool limitedSlider(const char* label, float& value, const limits::Range& r, cons
 }
 
 void materialSection(Preset& p) {
-    colorEdit("emissive", p.material.emissive);
-    mark("material.emissive");
-    colorEdit("ambient", p.material.ambient);
-    mark("material.ambient");
-    colorEdit("diffuse", p.material.diffuse);
-    mark("material.diffuse");
-    colorEdit("specular", p.material.specular);
-    mark("material.specular");
+    const std::pair<const char*, glm::vec3*> colors[] = {{"emissive", &p.material.emissive},
+                                                         {"ambient", &p.material.ambient},
+                                                         {"diffuse", &p.material.diffuse},
+                                                         {"specular", &p.material.specular}};
+    for (const auto& [name, color] : colors) {
+        const std::string path = std::string("material.") + name;
+        if (field(path)) {
+            colorEdit(name, *color);
+            mark(path);
+        }
+    }
     if (p.brdf == BrdfModel::CookTorrance) {
         return; // the exponent n has no effect there (the roughness m shapes the lobe), as m has none for Phong
     }
-    limitedSlider("shininess", p.material.shininess, limits::kShininess, "%.1f", ImGuiSliderFlags_Logarithmic);
-    mark("material.shininess");
-    helpMarker("The specular exponent n (logarithmic slider). Ctrl+click to type any value > 0.");
+    if (field("material.shininess")) {
+        limitedSlider("shininess", p.material.shininess, limits::kShininess, "%.1f", ImGuiSliderFlags_Logarithmic);
+        mark("material.shininess");
+        helpMarker("The specular exponent n (logarithmic slider). Ctrl+click to type any value > 0.");
+    }
 }
 
 void brdfSection(Preset& p) {
-    enumRadios("brdf", p.brdf, kBrdfModels, kBrdfLabels);
+    if (field("brdf")) {
+        enumRadios("brdf", p.brdf, kBrdfModels, kBrdfLabels);
+    }
     if (p.brdf == BrdfModel::Phong) {
         ImGui::TextDisabled("S = max(0, R.V)^n");
     } else if (p.brdf == BrdfModel::BlinnPhong) {
@@ -168,36 +225,57 @@ void brdfSection(Preset& p) {
     } else {
         ImGui::TextDisabled("S = D F G / (4 N.V)");
         static const char* const distributionNames[] = {"Beckmann", "Gaussian", "GGX"};
-        enumCombo("D: distribution", p.cookTorrance.distribution, kDistributions, distributionNames);
-        mark("cook_torrance.distribution");
-        limitedSlider("roughness m", p.cookTorrance.roughness, limits::kRoughness, "%.3f", ImGuiSliderFlags_Logarithmic);
-        mark("cook_torrance.roughness");
+        if (field("cook_torrance.distribution")) {
+            enumCombo("D: distribution", p.cookTorrance.distribution, kDistributions, distributionNames);
+            mark("cook_torrance.distribution");
+        }
+        if (field("cook_torrance.roughness")) {
+            limitedSlider("roughness m", p.cookTorrance.roughness, limits::kRoughness, "%.3f", ImGuiSliderFlags_Logarithmic);
+            mark("cook_torrance.roughness");
+        }
         static const char* const fresnelNames[] = {"Schlick", "full (unpolarized)"};
-        enumCombo("F: Fresnel", p.cookTorrance.fresnel, kFresnelModes, fresnelNames);
-        mark("cook_torrance.fresnel");
-        limitedSlider("ior", p.cookTorrance.ior, limits::kIor, "%.3f");
-        mark("cook_torrance.ior");
-        ImGui::SameLine();
-        ImGui::TextDisabled("F0 = %.3f", glsl::fresnelF0(p.cookTorrance.ior));
-        ImGui::Checkbox("G: geometry term", &p.cookTorrance.geometry);
-        mark("cook_torrance.geometry");
+        if (field("cook_torrance.fresnel")) {
+            enumCombo("F: Fresnel", p.cookTorrance.fresnel, kFresnelModes, fresnelNames);
+            mark("cook_torrance.fresnel");
+        }
+        if (field("cook_torrance.ior")) {
+            limitedSlider("ior", p.cookTorrance.ior, limits::kIor, "%.3f");
+            mark("cook_torrance.ior");
+            ImGui::SameLine();
+            ImGui::TextDisabled("F0 = %.3f", glsl::fresnelF0(p.cookTorrance.ior));
+        }
+        if (field("cook_torrance.geometry")) {
+            ImGui::Checkbox("G: geometry term", &p.cookTorrance.geometry);
+            mark("cook_torrance.geometry");
+        }
     }
 }
 
 void shadingSection(Preset& p, ViewSettings& view) {
-    enumRadios("shading", p.shading, kShadings, kShadingLabels);
+    if (field("shading")) {
+        enumRadios("shading", p.shading, kShadings, kShadingLabels);
+    }
     static const char* const modeNames[] = {"inverse-transpose (correct)", "model-view (wrong)"};
-    enumCombo("normal matrix", p.normalMatrix, kNormalMatrixModes, modeNames);
-    mark("normal_matrix");
-    ImGui::TextUnformatted("terms");
+    if (field("normal_matrix")) {
+        enumCombo("normal matrix", p.normalMatrix, kNormalMatrixModes, modeNames);
+        mark("normal_matrix");
+    }
+    if (anyField({"terms"})) {
+        ImGui::TextUnformatted("terms");
+    }
     const std::pair<const char*, bool*> terms[] = {{"emissive", &p.terms.emissive},
                                                    {"ambient", &p.terms.ambient},
                                                    {"diffuse", &p.terms.diffuse},
                                                    {"specular", &p.terms.specular}};
     for (const auto& [name, on] : terms) {
+        if (!anyField({"terms"})) {
+            break;
+        }
         sameLineIfFitsRadio(name); // a checkbox is as wide as a radio button
-        ImGui::Checkbox((std::string(name) + "##t").c_str(), on);
-        mark(std::string("terms.") + name);
+        if (field(std::string("terms.") + name)) {
+            ImGui::Checkbox((std::string(name) + "##t").c_str(), on);
+            mark(std::string("terms.") + name);
+        }
     }
     static const std::array<const char*, kViewModes.size()> viewNames = [] {
         std::array<const char*, kViewModes.size()> names{};
@@ -218,16 +296,20 @@ void shadingSection(Preset& p, ViewSettings& view) {
     sameLineIfFitsRadio("vertex normals (N)");
     ImGui::Checkbox("vertex normals (N)", &view.vertexNormals);
     mark("view.vertex_normals");
-    lightColorEdit("global ambient", p.ambientLight);
-    mark("ambient_light");
-    colorEdit("background", p.background);
-    mark("background");
+    if (field("ambient_light")) {
+        lightColorEdit("global ambient", p.ambientLight);
+        mark("ambient_light");
+    }
+    if (field("background")) {
+        colorEdit("background", p.background);
+        mark("background");
+    }
 }
 
 void modelSection(Preset& p, const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
     bool builtin = p.model.gltf.empty();
     static const char* const builtinNames[] = {"sphere", "cube", "plane", "torus"};
-    if (builtin) {
+    if (builtin && field("model.builtin")) {
         Builtin before = p.model.builtin;
         enumCombo("built-in", p.model.builtin, kBuiltins, builtinNames);
         mark("model.builtin");
@@ -242,19 +324,19 @@ void modelSection(Preset& p, const PanelInfo& info, PanelState& state, std::vect
         ImGui::SliderInt2(label, &p.model.subdivisions.x, range.min, 256);
         mark("model.subdivisions");
         p.model.subdivisions = {limits::clamp(range, p.model.subdivisions.x), limits::clamp(range, p.model.subdivisions.y)};
-    } else {
+    } else if (!builtin) {
         ImGui::Text("glTF: %s", p.model.gltf.c_str());
         if (ImGui::Button("Use a built-in shape")) {
             p.model.gltf.clear();
             p.model.subdivisions = defaultSubdivisions(p.model.builtin);
         }
     }
-    if (!info.browser) {
+    if (!info.browser && !gExercise) {
         pathField("##model", "model.glb (or drop one on the window)", state.modelPath, Command::LoadModel, requests);
         mark("model.path");
     }
     glm::vec3 scale = p.model.scale;
-    if (dragVec3("scale", scale, 0.01f, -10.0f, 10.0f)) {
+    if (field("model.scale") && dragVec3("scale", scale, 0.01f, -10.0f, 10.0f)) {
         // A zero factor would make the normal matrix singular: step over it.
         for (int i = 0; i < 3; ++i) {
             if (std::abs(scale[i]) < 0.01f) {
@@ -264,10 +346,14 @@ void modelSection(Preset& p, const PanelInfo& info, PanelState& state, std::vect
         p.model.scale = scale;
     }
     mark("model.scale");
-    dragVec3("rotate (deg)", p.model.rotateDeg, 0.5f, limits::kRotationDeg.min, limits::kRotationDeg.max);
-    mark("model.rotate");
-    dragVec3("translate", p.model.translate, 0.01f, limits::kCoordinate.min, limits::kCoordinate.max);
-    mark("model.translate");
+    if (field("model.rotate_deg")) {
+        dragVec3("rotate (deg)", p.model.rotateDeg, 0.5f, limits::kRotationDeg.min, limits::kRotationDeg.max);
+        mark("model.rotate");
+    }
+    if (field("model.translate")) {
+        dragVec3("translate", p.model.translate, 0.01f, limits::kCoordinate.min, limits::kCoordinate.max);
+        mark("model.translate");
+    }
 }
 
 // Direction as angles: θ from +y (0 = straight up), φ around +y from +z towards +x.
@@ -283,7 +369,7 @@ glm::vec3 fromAngles(const glm::vec2& a) {
 
 // Attenuation with one-click choices, and the spot cone.
 void lightFalloffEditor(LightDesc& l, const std::string& prefix) {
-    if (l.type != LightType::Directional) {
+    if (l.type != LightType::Directional && field(prefix + "attenuation")) {
         glm::vec3 c = l.attenuation;
         const limits::Range& r = limits::kAttenuation;
         if (ImGui::DragFloat3("c0, c1, c2", &c.x, 0.005f, r.sliderMin, r.sliderMax, "%.3f")) {
@@ -310,9 +396,11 @@ void lightFalloffEditor(LightDesc& l, const std::string& prefix) {
             mark(prefix + "attenuation." + choices[i].name);
         }
     }
-    if (l.type == LightType::Spot) {
+    if (l.type == LightType::Spot && field(prefix + "cutoff_deg")) {
         limitedSlider("cut-off (deg)", l.cutoffDeg, limits::kCutoffDeg, "%.1f");
         mark(prefix + "cutoff");
+    }
+    if (l.type == LightType::Spot && field(prefix + "exponent")) {
         limitedSlider("exponent", l.exponent, limits::kSpotExponent, "%.1f");
         mark(prefix + "exponent");
     }
@@ -321,6 +409,9 @@ void lightFalloffEditor(LightDesc& l, const std::string& prefix) {
 // The moving light (core/scene/light_orbit.h): on, its speed and its axis. The position above stays
 // where the orbit starts; only the live view moves.
 void lightOrbitEditor(LightDesc& l, const std::string& prefix) {
+    if (!field(prefix + "orbit")) {
+        return;
+    }
     ImGui::Checkbox("orbit the model", &l.orbit.on);
     mark(prefix + "orbit");
     helpMarker("The light circles the axis through the model's centre, starting from the position "
@@ -354,18 +445,24 @@ void lightOrbitEditor(LightDesc& l, const std::string& prefix) {
 
 // Position, direction, colours of one light; `prefix` names its widgets ("lights[0].").
 void lightEditor(LightDesc& l, const std::string& prefix) {
-    ImGui::Checkbox("enabled", &l.enabled);
-    mark(prefix + "enabled");
+    if (field(prefix + "enabled")) {
+        ImGui::Checkbox("enabled", &l.enabled);
+        mark(prefix + "enabled");
+        ImGui::SameLine();
+    }
     static const char* const typeNames[] = {"point", "directional", "spot"};
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
-    enumCombo("type", l.type, kLightTypes, typeNames);
-    mark(prefix + "type");
-    if (l.type != LightType::Directional) {
+    if (field(prefix + "type")) {
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+        enumCombo("type", l.type, kLightTypes, typeNames);
+        mark(prefix + "type");
+    } else {
+        ImGui::NewLine();
+    }
+    if (l.type != LightType::Directional && field(prefix + "position")) {
         dragVec3("position", l.position, 0.02f, limits::kCoordinate.min, limits::kCoordinate.max);
         mark(prefix + "position");
     }
-    if (l.type != LightType::Point) {
+    if (l.type != LightType::Point && field(prefix + "direction")) {
         glm::vec3 before = l.direction;
         if (dragVec3("direction", l.direction, 0.01f, limits::kCoordinate.min, limits::kCoordinate.max) &&
             glm::length(l.direction) < limits::kMinDirectionLength) {
@@ -380,30 +477,36 @@ void lightEditor(LightDesc& l, const std::string& prefix) {
         mark(prefix + "angles");
         helpMarker("theta from +y (0 points up, 180 straight down), phi around +y from +z towards +x.");
     }
-    lightColorEdit("ambient", l.ambient);
-    mark(prefix + "ambient");
-    lightColorEdit("diffuse", l.diffuse);
-    mark(prefix + "diffuse");
-    lightColorEdit("specular", l.specular);
-    mark(prefix + "specular");
+    const std::pair<const char*, glm::vec3*> colors[] = {{"ambient", &l.ambient}, {"diffuse", &l.diffuse}, {"specular", &l.specular}};
+    for (const auto& [name, color] : colors) {
+        if (field(prefix + name)) {
+            lightColorEdit(name, *color);
+            mark(prefix + name);
+        }
+    }
     lightFalloffEditor(l, prefix);
     lightOrbitEditor(l, prefix);
 }
 
 void lightsSection(Preset& p, PanelState& state) {
-    if (ImGui::Button("Add light") && p.lights.size() < static_cast<std::size_t>(limits::kMaxLights)) {
-        p.lights.push_back(LightDesc{});
-        state.selectedLight = static_cast<int>(p.lights.size()) - 1;
+    if (gExercise && !anyField({"lights"})) {
+        return;
     }
-    mark("lights.add");
-    ImGui::SameLine();
-    ImGui::BeginDisabled(p.lights.empty());
-    if (ImGui::Button("Remove") && !p.lights.empty()) {
-        p.lights.erase(p.lights.begin() + std::clamp(state.selectedLight, 0, static_cast<int>(p.lights.size()) - 1));
+    if (field("lights")) {
+        if (ImGui::Button("Add light") && p.lights.size() < static_cast<std::size_t>(limits::kMaxLights)) {
+            p.lights.push_back(LightDesc{});
+            state.selectedLight = static_cast<int>(p.lights.size()) - 1;
+        }
+        mark("lights.add");
+        ImGui::SameLine();
+        ImGui::BeginDisabled(p.lights.empty());
+        if (ImGui::Button("Remove") && !p.lights.empty()) {
+            p.lights.erase(p.lights.begin() + std::clamp(state.selectedLight, 0, static_cast<int>(p.lights.size()) - 1));
+        }
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+        ImGui::TextDisabled("%zu of %d", p.lights.size(), limits::kMaxLights);
     }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::TextDisabled("%zu of %d", p.lights.size(), limits::kMaxLights);
     if (p.lights.empty()) {
         disabledWrapped("No lights: only emissive and global ambient remain.");
         return;
@@ -458,6 +561,85 @@ void compareRow(ViewSettings& view, const PanelInfo& info, std::vector<Request>&
     }
 }
 
+// The exercise being solved: what to do, how close the attempt is, hints, start again, leave.
+void exerciseSection(const ExerciseView& e, std::vector<Request>& requests) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(e.title.c_str());
+    mark("exercise.title");
+    if (!e.instructions.empty()) {
+        ImGui::TextDisabled("%s", e.instructions.c_str());
+    }
+    ImGui::PopTextWrapPos();
+    if (e.solved) {
+        ImGui::PushStyleColor(ImGuiCol_PlotHistogram, IM_COL32(40, 170, 70, 255));
+    }
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%s%.0f%%", e.solved ? "Solved!  " : "", std::floor(e.closeness * 100.0));
+    ImGui::ProgressBar(static_cast<float>(e.closeness), ImVec2(-1, 0), e.score.empty() ? "..." : overlay);
+    mark(e.solved ? "exercise.solved" : "exercise.score");
+    if (e.solved) {
+        ImGui::PopStyleColor();
+    }
+    if (!e.score.empty()) {
+        ImGui::PushTextWrapPos(0.0f);
+        if (e.solved) {
+            ImGui::TextColored(ImVec4(0.45f, 0.9f, 0.5f, 1.0f), "%s", e.score.c_str());
+        } else {
+            ImGui::TextDisabled("%s", e.score.c_str());
+        }
+        ImGui::PopTextWrapPos();
+    }
+    for (std::size_t i = 0; i < e.hints.size(); ++i) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::Text("Hint %zu: %s", i + 1, e.hints[i].c_str());
+        ImGui::PopTextWrapPos();
+    }
+    commandButton(Command::ExerciseReset, requests);
+    mark("exercise.reset");
+    sameLineIfFits(commandRow(Command::ExerciseHint).label);
+    commandButton(Command::ExerciseHint, requests, e.hintsLeft > 0);
+    mark("exercise.hint");
+    sameLineIfFits(commandRow(Command::Undo).label);
+    commandButton(Command::Undo, requests);
+    sameLineIfFits(commandRow(Command::ExerciseLeave).label);
+    commandButton(Command::ExerciseLeave, requests);
+    mark("exercise.leave");
+    disabledWrapped("Only the fields the exercise opens are shown. The target is on the right (below on a phone); "
+                    "turn the camera freely.");
+}
+
+// "Make exercise": title, instructions, hints, the open fields (ticked below), save.
+void draftSection(ExerciseDraftView& d, const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
+    disabledWrapped("The scene when you pressed Make exercise is the target. Tick the fields students may change "
+                    "(the boxes before them below), set those fields to where students start, then save.");
+    ImGui::InputText("title", d.title);
+    mark("draft.title");
+    ImGui::InputTextMultiline("instructions", d.instructions, ImVec2(-1, ImGui::GetTextLineHeight() * 3.5f));
+    mark("draft.instructions");
+    ImGui::InputTextMultiline("hints", d.hints, ImVec2(-1, ImGui::GetTextLineHeight() * 2.5f));
+    mark("draft.hints");
+    helpMarker("One hint a line; students reveal them one at a time.");
+    std::string open;
+    for (const std::string& o : *d.open) {
+        open += (open.empty() ? "" : ", ") + o;
+    }
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("open: %s", open.empty() ? "(none ticked yet)" : open.c_str());
+    if (!d.problem.empty()) {
+        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%s", d.problem.c_str());
+    }
+    ImGui::PopTextWrapPos();
+    if (info.browser) {
+        commandButton(Command::SaveExercise, requests, d.problem.empty());
+    } else {
+        pathField("##exercise-path", "path/to/exercise.json", state.exercisePath, Command::SaveExercise, requests);
+    }
+    mark("draft.save");
+    commandButton(Command::MakeExercise, requests); // again: stop making it
+    ImGui::SameLine();
+    ImGui::TextDisabled("(stop)");
+}
+
 void toolButtons(PanelState& state, std::vector<Request>& requests) {
     commandButton(Command::ToggleShaderEditor, requests);
     sameLineIfFits(commandRow(Command::ToggleSweep).label);
@@ -488,6 +670,12 @@ void toolButtons(PanelState& state, std::vector<Request>& requests) {
     mark("figures.scale");
     sameLineIfFits(commandRow(Command::ToggleHelp).label);
     commandButton(Command::ToggleHelp, requests);
+    sameLineIfFits(commandRow(Command::MakeExercise).label);
+    commandButton(Command::MakeExercise, requests);
+    mark("exercise.make");
+    sameLineIfFits(commandRow(Command::ToggleShareCode).label);
+    commandButton(Command::ToggleShareCode, requests);
+    mark("share.code");
 }
 
 } // namespace
@@ -496,6 +684,14 @@ void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, Pan
                   std::vector<Request>& requests, PanelPart part) {
     const bool all = part == PanelPart::All, model = all || part == PanelPart::Model,
                material = all || part == PanelPart::Material, lights = all || part == PanelPart::Lights;
+    gExercise = info.exercise;
+    gDraft = info.exercise ? nullptr : info.draft;
+    if (gExercise && ImGui::CollapsingHeader("Exercise", ImGuiTreeNodeFlags_DefaultOpen)) {
+        exerciseSection(*gExercise, requests);
+    }
+    if (gDraft && model && ImGui::CollapsingHeader("Make exercise", ImGuiTreeNodeFlags_DefaultOpen)) {
+        draftSection(*gDraft, info, state, requests);
+    }
     if (model && ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) {
         filesSection(info, state, requests);
     }
@@ -504,22 +700,25 @@ void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, Pan
         presetsSection(info, state, requests);
     }
     if (model) {
-        compareRow(view, info, requests);
+        if (!gExercise) {
+            compareRow(view, info, requests);
+        }
         toolButtons(state, requests);
     }
-    if (material && ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (material && anyField({"material"}) && ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
         materialSection(preset);
     }
-    if (material && ImGui::CollapsingHeader("Reflection model (BRDF)", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (material && anyField({"brdf", "cook_torrance"}) &&
+        ImGui::CollapsingHeader("Reflection model (BRDF)", ImGuiTreeNodeFlags_DefaultOpen)) {
         brdfSection(preset);
     }
     if (material && ImGui::CollapsingHeader("Shading and terms", ImGuiTreeNodeFlags_DefaultOpen)) {
         shadingSection(preset, view);
     }
-    if (lights && ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (lights && anyField({"lights"}) && ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) {
         lightsSection(preset, state);
     }
-    if (model && ImGui::CollapsingHeader("Model", all ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (model && anyField({"model"}) && ImGui::CollapsingHeader("Model", all ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
         modelSection(preset, info, state, requests);
     }
     if (model && ImGui::CollapsingHeader("Camera")) {

@@ -17,6 +17,27 @@
 
 namespace lab::ui {
 
+// An exercise being solved (core/exercise/exercise.h), as the panel shows it: only its open
+// fields can be edited, and its own section says what to do and how close the attempt is.
+struct ExerciseView {
+    std::string title, instructions;
+    std::vector<std::string> hints; // those shown so far
+    int hintsLeft = 0;
+    std::vector<std::string> open; // JSON paths (core/exercise/preset_fields.h)
+    std::string score;             // "87% of the model's pixels match ...", empty before the first score
+    double closeness = 0.0;        // 0..1
+    bool solved = false;
+};
+
+// "Make exercise": the author's draft, edited in place (a checkbox beside every field opens it).
+struct ExerciseDraftView {
+    std::vector<std::string>* open = nullptr;
+    std::string* title = nullptr;
+    std::string* instructions = nullptr;
+    std::string* hints = nullptr;
+    std::string problem; // why the draft is not an exercise yet (the first reason), empty when it is
+};
+
 // What the panel shows about the workspace (read-only for the panel).
 struct PanelInfo {
     const std::vector<std::filesystem::path>* presetFiles = nullptr; // the preset list
@@ -26,6 +47,8 @@ struct PanelInfo {
     bool canUndo = false, canRedo = false;
     bool compareStacked = false; // A above B rather than beside it
     bool browser = false;        // files by download and the page's picker, not by path
+    const ExerciseView* exercise = nullptr; // an exercise is being solved
+    ExerciseDraftView* draft = nullptr;     // an exercise is being made
 };
 
 // What the panel keeps between frames, and the workspace settings it edits in place.
@@ -36,6 +59,7 @@ struct PanelState {
     bool focusOpenPath = false; // Ctrl+O: the open field takes the keyboard this frame
     int listScrolledTo = -1;    // the preset the list last scrolled to: it follows the current one
     float figureScale = 2.0f;   // Export figures' PNGs: 1 is 720 pixels wide (kFigureScales)
+    std::string exercisePath;   // "Make exercise": where it is saved
 };
 
 // The PNG scales Export figures offers: 720, 1440 (a projector, the default) and 2880 pixels wide.

@@ -107,7 +107,7 @@ void panels(const Layout& layout, ScreenModel& m, ScreenEvents& events) {
     }
     if (layout.plots.w > 0.0f) {
         beginFixed("Reflected intensity###plots", layout.plots, extra);
-        plotsPanel(*m.a, m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr, m.probeLobe);
+        plotsPanel(*m.a, m.overlay.exercise ? nullptr : m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr, m.probeLobe);
         ImGui::End();
         widgets().set("plots", layout.plots);
     }
@@ -143,6 +143,9 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
         probeWindow(*m.probe, *m.a, *m.view, *m.probeOpen, beside.x + 10.0f, beside.y + ImGui::GetFontSize() * 2.0f);
     }
     shaderEditorWindow(*m.shaderEditor, events.requests, m.lightingSource);
+    if (m.shareCode) {
+        shareCodeWindow(*m.shareCode, events.requests);
+    }
     sweepWindow(*m.sweep, *m.a, events.requests);
     dialogs(m, events);
     const Rect& active = m.b ? layout.halves[0] : layout.viewport;

@@ -12,6 +12,7 @@
 #include "ui/actions.h"
 #include "ui/layout.h"
 #include "ui/panel.h"
+#include "ui/share_code.h"
 #include "ui/plots.h"
 #include "ui/shader_editor.h"
 #include "ui/small_windows.h"
@@ -47,6 +48,7 @@ struct ScreenModel {
     const Problem* problem = nullptr;           // shown until closed
     const std::string* unsavedQuestion = nullptr; // "open x.json": discard unsaved changes to do it?
     OverlayModel overlay;
+    const ShareCodeModel* shareCode = nullptr; // the scene's link as a QR code, while shown (Q)
 };
 
 struct ScreenEvents {

@@ -73,6 +73,7 @@ struct OverlayModel {
     const ProbeLobe* probeLobe = nullptr;      // plots at the probe: the point's lobe, drawn there
     std::optional<LegendModel> legend;         // a value view's legend (ui/view_legend.h), in its strip
     std::optional<float> wipeAt;               // the wipe's divider, while the wipe is on
+    bool exercise = false;                     // compare mode's halves are an exercise's attempt and target: their labels say so, not the target's settings
     bool wipeDragged = false;
 };
 

@@ -1,0 +1,27 @@
+// settings.h — the desktop lab's small settings file: $XDG_CONFIG_HOME/lighting-lab/settings.json
+// (else ~/.config/lighting-lab/settings.json). It holds what a course sets once, today the course
+// page's address for the QR codes (`lab --share-base URL`, remembered). Written atomically; a
+// file that does not read is reported and ignored, never overwritten unasked.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace lab {
+
+struct Settings {
+    std::string shareBase; // "https://course.example.org/lab/", empty when never given
+};
+
+std::filesystem::path settingsFile();
+
+// The settings, or the defaults (with `warning` saying why, when the file exists but does not read).
+Settings readSettings(const std::filesystem::path& file, std::string& warning);
+bool writeSettings(const Settings& settings, const std::filesystem::path& file, std::string& error);
+
+// Empty when `url` can be a course page's address (http:// or https://, no spaces or quotes, at
+// most 2000 characters), else why not.
+std::string shareBaseProblem(const std::string& url);
+
+} // namespace lab

@@ -1,0 +1,26 @@
+// share_code.h — the scene's link as a large QR code, for the students' phones (Q, presenter mode).
+//
+// The code fills most of the window's smaller side, black on white with its quiet zone, the link
+// printed under it; or, when there is no code, why (no course address yet, a link too long).
+#pragma once
+
+#include "core/share/qr_code.h"
+#include "ui/actions.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lab::ui {
+
+struct ShareCodeModel {
+    const QrCode* code = nullptr; // null: `problem` says why
+    std::string link;
+    std::string problem;
+    std::string title; // the scene's or the exercise's name
+};
+
+// A window over everything, centred; Q or its Close button asks to close it.
+void shareCodeWindow(const ShareCodeModel& model, std::vector<Request>& requests);
+
+} // namespace lab::ui
