@@ -189,6 +189,8 @@ void Workspace::openExercise(LoadedExercise loaded, std::optional<std::string> b
                        [this, loaded = std::move(loaded), bundledName = std::move(bundledName)]() {
         fs::path folder = loaded.file.empty() ? bundledFolder() : loaded.folder();
         Preset start = loaded.exercise.start;
+        start.name = loaded.exercise.title; // (free fields) the header and the caption say what the exercise is
+        start.description = loaded.exercise.instructions;
         adopt(start, {}, folder);
         exercise_ = ExerciseSession{loaded.exercise, loaded.file, bundledName, 0, ++exercisesOpened_};
         kept_ = doc_.preset;

@@ -285,7 +285,7 @@ inline std::string runParsedCommand(CommandLine line) {
         case CommandLine::Command::Plot: status = runPlot(line.presets.front(), line.out, line.incidentDeg); break;
         case CommandLine::Command::Check: status = runCheck(line.presets, line.check); break;
         case CommandLine::Command::ExerciseCheck: status = runExerciseCheck(line.exercise, line.attempt, line.diffOut); break;
-        case CommandLine::Command::Share: status = runShare(line.shared, line.shareBase, line.qrOut, {}); break;
+        case CommandLine::Command::Share: status = runShare(line.shared, line.base, line.qrOut, {}); break;
         case CommandLine::Command::Lab: break;
         }
         text = output.text();
