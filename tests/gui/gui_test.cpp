@@ -388,5 +388,39 @@ TEST(Gui, AFactorButtonShowsItOnTheModelWithItsLegendAndTheWipeSplitsIt) {
         << "D right of the moved divider: the camera did not turn";
 }
 
+// An exercise (presets/exercises/02-shininess.json): only its open field is on the panel, the
+// target is beside the attempt, and typing the exponent that matches it shows "Solved".
+TEST(Gui, AnExerciseShowsOnlyItsOpenFieldsAndReachingTheTargetSaysSolved) {
+    START_LAB(lab, "--preset", std::string(LAB_SOURCE_DIR "/presets/exercises/02-shininess.json"));
+    ASSERT_TRUE(lab.has("exercise.title"));
+    EXPECT_TRUE(lab.has("exercise.score")) << "the start is scored";
+    EXPECT_FALSE(lab.has("exercise.solved")) << "the start does not solve it";
+    EXPECT_TRUE(lab.has("view.b")) << "the target is drawn beside the attempt";
+    EXPECT_TRUE(lab.has("material.shininess")) << "the open field";
+    for (const char* locked : {"material.diffuse", "material.specular", "lights.add", "shading.Flat", "brdf.Phong",
+                               "ambient_light", "background", "compare"}) {
+        EXPECT_FALSE(lab.has(locked)) << locked << " is not open in this exercise";
+    }
+    Image target = lab.capture(lab.widget("view.b"));
+    Rect shininess = lab.widget("material.shininess");
+    lab.moveTo(shininess.x + 20, shininess.cy());
+    lab.x().key("Control_L", true);
+    lab.click(shininess.x + 20, shininess.cy());
+    lab.x().key("Control_L", false);
+    lab.type("78");
+    lab.press("Return");
+    Rect view = lab.widget("view");
+    lab.moveTo(view.cx(), view.cy());
+    ASSERT_TRUE(lab.has("exercise.solved")) << "78 for the target's 80 is within the tolerance";
+    EXPECT_LT(changedShare(target, lab.capture(lab.widget("view.b"))), 0.001) << "the target does not change";
+    // Start again: back to the exponent 8, not solved; Undo brings the attempt back.
+    Rect reset = lab.widget("exercise.reset");
+    lab.click(reset.cx(), reset.cy());
+    lab.moveTo(view.cx(), view.cy());
+    EXPECT_FALSE(lab.has("exercise.solved"));
+    lab.press("z", "Control_L");
+    EXPECT_TRUE(lab.has("exercise.solved")) << "undo brings the solved attempt back";
+}
+
 } // namespace
 } // namespace lab::test
