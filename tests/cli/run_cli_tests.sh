@@ -426,5 +426,114 @@ cp "$tmp/views/g/13-cook-torrance-beckmann-schlick.png" "$tmp/views/g/13-cook-to
 expect check-views-fail 1 'FAIL +13-cook-torrance-beckmann-schlick\.d ' -- \
     "$lab" check "$ct" --golden "$tmp/views/g" --report "$tmp/views/r" --size 64x64
 
+# --- exercises (presets/exercises/, tests/exercises/) and lab share --------------------------
+# Every bundled exercise: its worked solution (tests/exercises/<name>.solution.json) solves it,
+# its start does not, and it is linked by name. json_start writes an exercise's start as a preset.
+json_start() {
+    python3 -c 'import json, sys
+e = json.load(open(sys.argv[1], encoding="utf-8"))
+p = {"format": "lighting-lab-preset", "version": 1}
+p.update({k: v for k, v in e["start"].items() if k not in ("format", "version")})
+json.dump(p, open(sys.argv[2], "w", encoding="utf-8"))' "$@"
+}
+# uedit FILE OUT 'python': edit (above) for files with non-ASCII text (the exercises' hints).
+uedit() { python3 -c 'import json, sys; p = json.load(open(sys.argv[1], encoding="utf-8")); exec(sys.argv[3]); json.dump(p, open(sys.argv[2], "w", encoding="utf-8"))' "$@"; }
+exercises=$src/presets/exercises
+solutions=$src/tests/exercises
+base=https://example.org/lab/
+count=0
+for ex in "$exercises"/*.json; do
+    [[ -e $ex ]] || continue
+    n=$(basename "$ex" .json)
+    count=$((count + 1))
+    if [[ -f $solutions/$n.solution.json ]]; then
+        expect "exercise-$n-solved" 0 "$n\.solution\.json: Solved" -- "$lab" exercise check "$ex" "$solutions/$n.solution.json"
+    else
+        echo "FAIL exercise-$n-has-a-solution: no tests/exercises/$n.solution.json"; failed=$((failed + 1))
+    fi
+    json_start "$ex" "$tmp/$n.start.json"
+    expect "exercise-$n-start-not-solved" 1 "$n\.start\.json: [0-9]+% of the model.s pixels match" -- \
+        "$lab" exercise check "$ex" "$tmp/$n.start.json"
+    link=$("$lab" share "$ex" --base "$base" 2>/dev/null)
+    check "exercise-$n-linked-by-name" test "$link" = "$base#exercise=$n"
+done
+check exercises-at-least-8 test "$count" -ge 8
+for sol in "$solutions"/*.solution.json; do
+    [[ -e $sol ]] || continue
+    n=$(basename "$sol" .solution.json)
+    check "exercise-solution-$n-has-its-exercise" test -f "$exercises/$n.json"
+done
+
+# Near misses stay unsolved: the exercises' own tolerances are not so loose that a visibly
+# different answer passes (the image, or a field tolerance where the image cannot tell).
+near() { # near NAME PATTERN EXERCISE PYTHON: the exercise's solution edited by PYTHON scores exit 1
+    uedit "$solutions/$3.solution.json" "$tmp/near.json" "$4"
+    expect "exercise-near-miss-$1" 1 "$2" -- "$lab" exercise check "$exercises/$3.json" "$tmp/near.json"
+}
+near shininess-50 'pixels match' 02-shininess 'p["material"]["shininess"] = 50'
+near attenuation-field 'lights\[0\]\.attenuation is 0\.1 away \(within 0\.05 counts\)' 05-attenuation \
+    'p["lights"][0]["attenuation"] = [0, 0.1, 0.9]'
+near spot-cutoff-32 'pixels match' 06-spot-light 'p["lights"][0]["cutoff_deg"] = 32'
+near roughness-0.2 'pixels match' 07-cook-torrance-roughness 'p["cook_torrance"]["roughness"] = 0.2'
+near ior-1.8 'pixels match' 08-fresnel 'p["cook_torrance"]["ior"] = 1.8'
+
+# A field the exercise does not open, changed: refused with its JSON path. The camera is always free.
+shin=$exercises/02-shininess.json
+shin_sol=$solutions/02-shininess.solution.json
+uedit "$shin_sol" "$tmp/locked.json" 'p["background"] = [1, 1, 1]'
+expect exercise-locked-field 2 'locked\.json: background: changed from the exercise.s start, but the exercise does not open this field \(open: material\.shininess\)' -- \
+    "$lab" exercise check "$shin" "$tmp/locked.json"
+uedit "$shin_sol" "$tmp/camera.json" 'p["camera"] = {"eye": [1.5, 0.5, 6], "fovy_deg": 30}'
+expect exercise-camera-is-free 0 'camera\.json: Solved' -- "$lab" exercise check "$shin" "$tmp/camera.json"
+
+# Bad exercise files: refused with the JSON path of the problem.
+uedit "$shin" "$tmp/open.json" 'p["open"] = ["material.shinyness"]'
+expect exercise-unknown-open 2 'open\.json: open\[0\]: no field "material\.shinyness" in a preset \(did you mean "material\.shininess"\?\)' -- \
+    "$lab" exercise check "$tmp/open.json" "$shin_sol"
+uedit "$shin" "$tmp/locked-target.json" 'p["target"]["material"]["diffuse"] = [1, 0, 0]'
+expect exercise-target-differs-in-locked-field 2 'locked-target\.json: target\.material\.diffuse: differs from start, but the field is not open' -- \
+    "$lab" exercise check "$tmp/locked-target.json" "$shin_sol"
+uedit "$shin" "$tmp/tolerance.json" 'p["tolerance"] = {"max_failing": 2}'
+expect exercise-bad-tolerance 2 'tolerance\.json: tolerance\.max_failing: expected a share from 0 to 1' -- \
+    "$lab" exercise check "$tmp/tolerance.json" "$shin_sol"
+expect exercise-preset-as-exercise 2 '05-full-phong\.json: format: .*\(this is a preset, not an exercise\)' -- \
+    "$lab" exercise check "$phong" "$shin_sol"
+uedit "$shin" "$tmp/untitled.json" 'del p["title"]'
+expect exercise-missing-title 2 'untitled\.json: title: missing' -- "$lab" exercise check "$tmp/untitled.json" "$shin_sol"
+
+# lab share: the printed link, and the same text in its QR code (zbarimg reads it back; CI installs
+# zbar-tools). Bundled files are linked by name, others carry the scene (z=, x=).
+has_zbarimg() { command -v zbarimg >/dev/null; }
+check zbarimg-installed has_zbarimg
+qr_text() { zbarimg --raw -q "$1" 2>/dev/null; }
+matches() { [[ $1 =~ ^($2)$ ]]; } # matches TEXT REGEX: the whole of TEXT
+is_png() { test "$(od -An -tx1 -N8 "$1" | tr -d ' \n')" = 89504e470d0a1a0a; }
+share_case() { # share_case NAME FILE EXPECTED_LINK_REGEX: link printed, QR written and read back
+    local link
+    link=$("$lab" share "$2" --base "$base" --qr "$tmp/$1.png" 2>/dev/null)
+    check "share-$1-status" test $? -eq 0
+    check "share-$1-link" matches "$link" "$3"
+    check "share-$1-qr-png" is_png "$tmp/$1.png"
+    check "share-$1-qr-reads-back" test "$(qr_text "$tmp/$1.png")" = "$link"
+}
+share_case exercise "$shin" 'https://example\.org/lab/#exercise=02-shininess'
+share_case preset "$phong" 'https://example\.org/lab/#preset=05-full-phong'
+cp "$phong" "$tmp/mine.json"
+share_case own-preset "$tmp/mine.json" 'https://example\.org/lab/#z=[A-Za-z0-9_-]+'
+cp "$shin" "$tmp/own-exercise.json"
+expect share-own-exercise 0 '^https://example\.org/lab/#x=[A-Za-z0-9_-]+$' -- "$lab" share "$tmp/own-exercise.json" --base "$base"
+expect share-bad-base 2 '^lab share: --base: expected the course page.s address' -- \
+    "$lab" share "$phong" --base ftp://x --qr "$tmp/ftp.png"
+check share-bad-base-no-png test ! -e "$tmp/ftp.png"
+# 3000 characters of varied text do not deflate away: too long for a QR code, and no PNG.
+python3 -c 'import json, random, sys
+r = random.Random(7)
+words = ["".join(r.choice("abcdefghijklmnopqrstuvwxyz") for _ in range(r.randint(2, 9))) for _ in range(400)]
+text = " ".join(r.choice(words) for _ in range(600))[:3000]
+p = json.load(open(sys.argv[1])); p["description"] = text; json.dump(p, open(sys.argv[2], "w"))' "$phong" "$tmp/long.json"
+check share-long-description-is-3000 python3 -c 'import json, sys; assert len(json.load(open(sys.argv[1]))["description"]) == 3000' "$tmp/long.json"
+expect share-too-long 2 'long\.json: the link is too long for a QR code' -- "$lab" share "$tmp/long.json" --base "$base" --qr "$tmp/long.png"
+check share-too-long-no-png test ! -e "$tmp/long.png"
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
