@@ -424,10 +424,61 @@ std::vector<std::string> lockedChanges(const Exercise& exercise, const Preset& a
     return locked;
 }
 
+namespace {
+
+// "lights[1].attenuation" as a JSON pointer ("/lights/1/attenuation"), for a path fieldAt found.
+PresetJson::json_pointer pointerOf(const std::string& path) {
+    PresetJson::json_pointer pointer;
+    std::size_t i = 0;
+    while (i < path.size()) {
+        std::size_t end = path.find_first_of(".[", i);
+        if (end != i) {
+            pointer /= path.substr(i, end == std::string::npos ? std::string::npos : end - i);
+        }
+        if (end == std::string::npos) {
+            break;
+        }
+        if (path[end] == '[') {
+            std::size_t close = path.find(']', end);
+            pointer /= static_cast<std::size_t>(std::stoul(path.substr(end + 1, close - end - 1)));
+            i = close + 1;
+            i += i < path.size() && path[i] == '.' ? 1 : 0;
+        } else {
+            i = end + 1;
+        }
+    }
+    return pointer;
+}
+
+// `value` at `pointer` in `json` (an array grows by one at its end), or the key or element there
+// removed when `value` is null.
+void putAt(PresetJson& json, const PresetJson::json_pointer& pointer, const PresetJson* value) {
+    PresetJson& parent = json[pointer.parent_pointer()];
+    const std::string& last = pointer.back();
+    if (parent.is_array()) {
+        std::size_t index = std::stoul(last);
+        if (!value) {
+            if (index < parent.size()) {
+                parent.erase(index);
+            }
+        } else if (index < parent.size()) {
+            parent[index] = *value;
+        } else {
+            parent.push_back(*value);
+        }
+    } else if (!value) {
+        parent.erase(last);
+    } else {
+        parent[last] = *value;
+    }
+}
+
+} // namespace
+
 Preset withLockedFieldsOfStart(const Exercise& exercise, const Preset& attempt) {
-    PresetJson start = presetValue(exercise.start), tried = presetValue(attempt);
+    PresetJson start = presetValue(exercise.start), kept = presetValue(attempt);
     std::vector<std::string> locked;
-    for (const std::string& field : changedFields(start, tried)) {
+    for (const std::string& field : changedFields(start, kept)) {
         if (!fieldIsOpen(exercise, field)) {
             locked.push_back(field);
         }
@@ -435,48 +486,27 @@ Preset withLockedFieldsOfStart(const Exercise& exercise, const Preset& attempt) 
     if (locked.empty()) {
         return attempt;
     }
-    // Field by field where a field is open below a locked object (lights[0].attenuation open,
-    // lights[0] locked): the attempt's open fields over the start's.
-    PresetJson kept = start;
-    for (const std::string& field : changedFields(start, tried)) {
-        if (fieldIsOpen(exercise, field)) {
-            const PresetJson* v = fieldAt(tried, field);
-            // Walk to the field's parent in `kept` and set it; a whole light the start lacks is added.
-            PresetJson::json_pointer pointer;
-            std::string path = field;
-            for (std::size_t i = 0; i < path.size();) {
-                std::size_t end = path.find_first_of(".[", i);
-                std::string key = path.substr(i, end == std::string::npos ? std::string::npos : end - i);
-                if (!key.empty()) {
-                    pointer /= key;
-                }
-                if (end == std::string::npos) {
-                    break;
-                }
-                if (path[end] == '[') {
-                    std::size_t close = path.find(']', end);
-                    pointer /= std::stoul(path.substr(end + 1, close - end - 1));
-                    i = close + 1;
-                    if (i < path.size() && path[i] == '.') ++i;
-                } else {
-                    i = end + 1;
-                }
-            }
-            if (v) {
-                kept[pointer] = *v;
-            }
-        }
+    // The attempt, each locked field back at the start's value (or gone where the start has none);
+    // from the last path to the first, so that removing lights[2] comes before lights[1].
+    for (auto it = locked.rbegin(); it != locked.rend(); ++it) {
+        putAt(kept, pointerOf(*it), fieldAt(start, *it));
+    }
+    // Read back as a preset without a folder: a glTF model (valid where it came from) is set
+    // aside for the reading and put back after.
+    std::optional<std::string> gltf;
+    if (const PresetJson* g = fieldAt(kept, "model.gltf"); g && g->is_string()) {
+        gltf = g->get<std::string>();
+        kept["model"].erase("gltf");
     }
     Diagnostics ignored;
     std::optional<Preset> p = parseInlinePreset(kept.dump(), "attempt", "", std::nullopt, ignored);
     if (!p) {
-        // A glTF model needs its folder to be read again: keep the start's fields by hand there.
-        Preset keep = exercise.start;
-        keep.camera = attempt.camera;
-        keep.name = attempt.name;
-        keep.description = attempt.description;
-        keep.plotIncidentDeg = attempt.plotIncidentDeg;
-        return keep;
+        return exercise.start; // (cannot happen: every value came from a preset that read)
+    }
+    if (gltf) {
+        p->model.gltf = *gltf;
+        p->model.builtin = attempt.model.builtin;
+        p->model.subdivisions = attempt.model.subdivisions;
     }
     return *p;
 }
@@ -492,19 +522,27 @@ Preset targetAsScored(const Exercise& exercise) { return exercise.target; }
 std::string ExerciseScore::summary() const {
     char line[256];
     if (solved) {
-        std::snprintf(line, sizeof line, "Solved: %.0f%% of the model's pixels match", closeness * 100.0);
+        std::snprintf(line, sizeof line, "Solved: %.0f%% of the model's pixels match", std::floor(closeness * 100.0));
         return line;
     }
-    if (!image.passes(Tolerance{}) && closeness < 1.0) {
-        std::snprintf(line, sizeof line, "%.0f%% of the model's pixels match (mean difference %.1f levels)",
-                      std::floor(closeness * 100.0), image.meanDifference);
-    } else {
-        std::snprintf(line, sizeof line, "%.0f%% of the model's pixels match", std::floor(closeness * 100.0));
-    }
+    std::snprintf(line, sizeof line, "%.0f%% of the model's pixels match", std::floor(closeness * 100.0));
     std::string s = line;
+    if (!image.sameSize) {
+        return s + "; the renders differ in size";
+    }
+    if (image.failingShare > tolerance.maxFailingShare) {
+        std::snprintf(line, sizeof line, "; %.1f%% of the image differs by more than %d levels (at most %.1f%%)",
+                      image.failingShare * 100.0, tolerance.pixelTolerance, tolerance.maxFailingShare * 100.0);
+        s += line;
+    }
+    if (image.meanDifference > tolerance.maxMeanDifference) {
+        std::snprintf(line, sizeof line, "; the mean difference is %.2f levels (at most %.2f)", image.meanDifference,
+                      tolerance.maxMeanDifference);
+        s += line;
+    }
     for (const FieldMiss& m : misses) {
-        char miss[160];
-        std::snprintf(miss, sizeof miss, "; %s is %.3g away (within %.3g counts)", m.field.c_str(), double(m.difference),
+        char miss[200];
+        std::snprintf(miss, sizeof miss, "; %s is %.3g away (at most %.3g)", m.field.c_str(), double(m.difference),
                       double(m.within));
         s += miss;
     }
@@ -515,6 +553,7 @@ ExerciseScore scoreExercise(const Exercise& exercise, const Preset& attempt, con
                             const Image& targetImage) {
     ExerciseScore score;
     const Tolerance tolerance = exercise.tolerance.image();
+    score.tolerance = tolerance;
     score.image = compareImages(attemptImage, targetImage, tolerance);
     if (score.image.sameSize) {
         auto background = [](const glm::vec3& c) {
@@ -556,7 +595,8 @@ ExerciseScore scoreExercise(const Exercise& exercise, const Preset& attempt, con
                 worst = std::max(worst, std::abs((*a)[i].get<float>() - (*t)[i].get<float>()));
             }
         }
-        if (!(worst <= f.within)) {
+        // Within float rounding of the edge counts (0.95 against 1 within 0.05 is 0.0500001 in float).
+        if (!(worst <= f.within + 1e-5f * std::max(1.0f, f.within))) {
             score.misses.push_back({f.field, worst, f.within});
         }
     }

@@ -114,10 +114,12 @@ struct FieldMiss {
 
 struct ExerciseScore {
     Comparison image;          // attempt against target (image.h)
+    Tolerance tolerance;       // what it was held to (ExerciseTolerance::image)
     double closeness = 0.0;    // the share of the model's pixels within the pixel tolerance, 0..1
     std::vector<FieldMiss> misses; // field tolerances not met
     bool solved = false;
-    // One line: "Solved" or "83% of the model's pixels match; mean difference 4.2 levels (at most 1)".
+    // One line: "Solved: ..." or how close, and what is still too far: "83% of the model's pixels match;
+    // 1.2% of the image differs by more than 6 levels (at most 0.2%)".
     std::string summary() const;
 };
 

@@ -192,7 +192,9 @@ PresetJson mergePreset(PresetJson base, const PresetJson& patch) {
     }
     for (const auto& [key, value] : patch.items()) {
         auto at = base.find(key);
-        if (at == base.end()) {
+        if (value.is_null()) {
+            base.erase(key); // a key the patch removes (RFC 7386)
+        } else if (at == base.end()) {
             base[key] = value;
         } else if (key == "model" && value.is_object() && at->is_object()) {
             if (value.contains("gltf")) {
@@ -255,7 +257,7 @@ PresetJson presetPatch(const PresetJson& base, const PresetJson& full) {
     }
     for (const auto& [key, value] : base.items()) {
         if (!full.contains(key)) {
-            return whole(full); // a key `full` lacks (a check block, say) cannot be removed by a patch
+            patch[key] = nullptr; // removed (a light's orbit switched off, a check block's tolerance)
         }
     }
     return patch;

@@ -42,14 +42,15 @@ bool knownFieldPath(std::string_view path, const std::vector<const PresetJson*>&
 // The value at `path` in `json`, or nullptr.
 const PresetJson* fieldAt(const PresetJson& json, std::string_view path);
 
-// `patch` applied to `base`: a patch with "format" is a whole preset and replaces it; otherwise objects merge key by key, the lights element by element (a light the
+// `patch` applied to `base`: a patch with "format" is a whole preset and replaces it; otherwise objects merge key by key
+// (a key whose value is null is removed, as in RFC 7386), the lights element by element (a light the
 // base lacks is added), anything else is replaced. A model given as "gltf" drops the base's
 // built-in and the other way round.
 PresetJson mergePreset(PresetJson base, const PresetJson& patch);
 
-// What `mergePreset(base, ·)` needs to turn `base` into `full`: only the keys that differ. Where
-// `full` has fewer lights than `base` or lacks a key it has (a patch cannot remove either), the whole of `full`
-// with "format" and "version".
+// What `mergePreset(base, ·)` needs to turn `base` into `full`: only the keys that differ, null for
+// a key `full` lacks. Where `full` has fewer lights than `base` (a patch does not remove elements),
+// the whole of `full` with "format" and "version".
 PresetJson presetPatch(const PresetJson& base, const PresetJson& full);
 
 } // namespace lab

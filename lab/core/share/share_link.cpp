@@ -113,7 +113,14 @@ std::string exerciseLink(const Exercise& exercise, const std::optional<std::stri
     if (bundledName) {
         return "exercise=" + *bundledName;
     }
-    PresetJson j = PresetJson::parse(exerciseToJson(exercise));
+    // The scenes' names and descriptions are free fields the exercise's title and instructions
+    // stand for (the lab shows those): left out, they leave room for the text that matters.
+    Exercise shared = exercise;
+    for (Preset* p : {&shared.start, &shared.target}) {
+        p->name = Preset{}.name;
+        p->description.clear();
+    }
+    PresetJson j = PresetJson::parse(exerciseToJson(shared));
     j["start"] = presetPatch(presetValue(Preset{}), j["start"]);
     return "x=" + base64UrlEncode(deflateBytes(j.dump()));
 }
