@@ -13,8 +13,6 @@
 #include "core/io/file_io.h"
 #include "core/io/safe_text.h"
 #include "core/scene/light_orbit.h"
-#include "core/share/qr_code.h"
-#include "core/share/share_link.h"
 #include "render/renderer.h"
 #include "render/shader.h"
 #include "ui/screen.h"
@@ -97,17 +95,11 @@ struct App::Impl {
 
     OrbitClock orbits; // the moving lights (app/orbit_clock.h)
 
-    // Exercises: the live score, what the panel shows of the exercise and of a draft.
+    // Exercises: the live score, what the panel shows of the exercise and of a draft (app/exercise_score.h).
     ExerciseScorer scorer;
     ui::ExerciseView exerciseView;
     ui::ExerciseDraftView draftView;
-    bool wasSolved = false;
-    // The scene's link as a QR code (Q): made again only when the link changes.
-    bool shareCode = false;
-    std::string shareCodeFor;
-    std::optional<QrCode> qr;
-    ui::ShareCodeModel shareModel;
-    void updateShareCode();
+    ShareCode shareCode; // the scene's link as a QR code (Q)
 
     // A side of the comparison as this frame shows it: A, and B in compare mode.
     struct ShownSide {
@@ -191,65 +183,17 @@ ui::ScreenModel App::Impl::screenModel() {
     m.lightShapes = lightShapes;
     m.motion = anyOrbit(workspace.a()) ? &orbits.motion(0) : nullptr;
     if (const std::optional<ExerciseSession>& ex = workspace.exercise()) {
-        const Exercise& e = ex->exercise;
-        const std::optional<ExerciseScore>& score = scorer.score();
-        exerciseView = {printable(e.title, true), printable(e.instructions, true), {},
-                        static_cast<int>(e.hints.size()) - ex->hintsShown, e.open,
-                        score ? score->summary() : std::string{}, score ? score->closeness : 0.0,
-                        score && score->solved};
-        for (int i = 0; i < ex->hintsShown; ++i) {
-            exerciseView.hints.push_back(printable(e.hints[static_cast<std::size_t>(i)], true));
-        }
+        exerciseView = exerciseViewOf(*ex, scorer.score());
         m.panelInfo.exercise = &exerciseView;
         m.overlay.exercise = true;
-    } else if (std::optional<ExerciseDraft>& draft = workspace.draft()) {
-        Diagnostics d;
-        workspace.draftExercise(d);
-        draftView = {&draft->open, &draft->title, &draft->instructions, &draft->hints,
-                     d.empty() ? std::string{} : printable(d.front().where.empty() ? d.front().message
-                                                                                     : d.front().where + ": " + d.front().message,
-                                                           true)};
+    } else if (workspace.draft()) {
+        draftView = draftViewOf(workspace);
         m.panelInfo.draft = &draftView;
     }
-    if (shareCode) {
-        updateShareCode();
-        m.shareCode = &shareModel;
+    if (shareCode.shown) {
+        m.shareCode = &shareCode.update(options.shareBase, workspace);
     }
     return m;
-}
-
-// The QR code of the scene's link on the course page (AppOptions::shareBase), made when the link changed.
-void App::Impl::updateShareCode() {
-    const std::string& fragment = workspace.link();
-    std::string url = options.shareBase.empty() ? std::string{} : shareUrl(options.shareBase, fragment);
-    shareModel.title = workspace.exercise() ? "Exercise: " + printable(workspace.exercise()->exercise.title, true)
-                                            : printable(workspace.document().displayName(), true);
-    if (!shareModel.problem.empty() && url == shareCodeFor && !url.empty()) {
-        return;
-    }
-    if (qr && url == shareCodeFor) {
-        return;
-    }
-    shareCodeFor = url;
-    qr.reset();
-    shareModel.code = nullptr;
-    shareModel.link = url;
-    shareModel.problem.clear();
-    if (url.empty()) {
-        shareModel.problem = "The QR code needs the course page's address. Start the lab once with\n"
-                             "  lab --share-base https://your-course.example.org/lab/\n"
-                             "(it is remembered), or use the page's Copy link.";
-        return;
-    }
-    std::string error;
-    qr = encodeQr(url, error);
-    if (qr) {
-        shareModel.code = &*qr;
-    } else {
-        shareModel.problem = "This scene's link is too long for a QR code that can be read across a room: " + error +
-                             ". Shorten the description, or publish the exercise with the course page and link it by "
-                             "name (lab share prints such links).";
-    }
 }
 
 // What the platform and the UI asked for this frame, in order, then one undo step if a gesture ended.
@@ -308,7 +252,7 @@ void App::Impl::carryOut(const Request& r) {
     case Command::FocusOpenPath: panel.focusOpenPath = true; break;
     case Command::PickFile: pickFile = true; break;
     case Command::CopyLink: copyLink = true; break; // the page says whether the browser allowed it
-    case Command::ToggleShareCode: shareCode = !shareCode; break;
+    case Command::ToggleShareCode: shareCode.shown = !shareCode.shown; break;
     case Command::ToggleShaderEditor: shaderEditor.open = !shaderEditor.open; break;
     case Command::CompileShaders:
         if (shaderEditor.open) {
@@ -596,17 +540,7 @@ FrameOutput App::frame(const FrameInput& in) {
     m.viewportDrawn = m.updateViewports(layout, in, scale);
     bool legendOwed = m.updateReadout(in, model.overlay.legend);
     bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);
-    bool scoreOwed = false;
-    if (const std::optional<ExerciseSession>& ex = ws.exercise()) {
-        scoreOwed = m.scorer.update(m.renderer, ex->exercise, ex->opened, ws.a(), ws.mesh(Side::A), ws.mesh(Side::B),
-                                    events.gesture || events.dragging, m.clock, in.targetFramebuffer);
-        bool solved = m.scorer.score() && m.scorer.score()->solved;
-        if (solved && !m.wasSolved) {
-            m.toast = "Solved! Your attempt matches the target.";
-            m.toastLeft = kToastSeconds;
-        }
-        m.wasSolved = solved;
-    }
+    bool scoreOwed = m.scorer.update(m.renderer, ws, events.gesture || events.dragging, m.clock, in.targetFramebuffer);
     bindFramebuffer(in.targetFramebuffer);
     // A toast is removed when its time is up; nothing else on screen changes by itself (a
     // reduced view is drawn at full size by the frame that ends the drag).

@@ -1,5 +1,8 @@
-// exercise_score.cpp — the attempt and the target drawn at 256 x 256 and compared.
+// exercise_score.cpp — the live score, the panel's views of exercises, the QR code of the link.
 #include "app/exercise_score.h"
+
+#include "core/io/safe_text.h"
+#include "core/share/share_link.h"
 
 namespace lab {
 
@@ -20,32 +23,93 @@ std::optional<Image> renderScored(Renderer& renderer, const Preset& preset, cons
 
 } // namespace
 
-bool ExerciseScorer::update(Renderer& renderer, const Exercise& exercise, unsigned opened, const Preset& attempt,
-                            const std::shared_ptr<const Mesh>& attemptMesh, const std::shared_ptr<const Mesh>& targetMesh,
-                            bool gestureInProgress, double clock, unsigned framebuffer) {
-    if (opened != opened_) {
-        reset();
-        opened_ = opened;
-    }
-    Preset scored = attemptAsScored(exercise, attempt);
-    if (scored_ && *scored_ == scored) {
+bool ExerciseScorer::update(Renderer& renderer, Workspace& workspace, bool gestureInProgress, double clock,
+                            unsigned framebuffer) {
+    const std::optional<ExerciseSession>& session = workspace.exercise();
+    if (!session) {
+        *this = ExerciseScorer{};
         return false;
     }
-    if (gestureInProgress && clock - scoredAt_ < kDragInterval) {
+    if (session->opened != opened_) {
+        *this = ExerciseScorer{};
+        opened_ = session->opened;
+    }
+    const Exercise& exercise = session->exercise;
+    Preset scored = attemptAsScored(exercise, workspace.a());
+    if ((scored_ && *scored_ == scored) || (gestureInProgress && clock - scoredAt_ < kDragInterval)) {
         return false;
     }
     if (!target_) {
-        target_ = renderScored(renderer, targetAsScored(exercise), targetMesh);
+        target_ = renderScored(renderer, targetAsScored(exercise), workspace.mesh(Side::B));
     }
-    std::optional<Image> tried = renderScored(renderer, scored, attemptMesh);
+    std::optional<Image> tried = renderScored(renderer, scored, workspace.mesh(Side::A));
     bindFramebuffer(framebuffer);
     if (!target_ || !tried) {
         return false;
     }
-    score_ = scoreExercise(exercise, attempt, *tried, *target_);
+    bool wasSolved = score_ && score_->solved;
+    score_ = scoreExercise(exercise, workspace.a(), *tried, *target_);
+    if (score_->solved && !wasSolved) {
+        workspace.note("Solved! Your attempt matches the target.");
+    }
     scored_ = scored;
     scoredAt_ = clock;
     return true;
+}
+
+ui::ExerciseView exerciseViewOf(const ExerciseSession& session, const std::optional<ExerciseScore>& score) {
+    const Exercise& e = session.exercise;
+    ui::ExerciseView view{printable(e.title, true), printable(e.instructions, true), {},
+                          static_cast<int>(e.hints.size()) - session.hintsShown, e.open,
+                          score ? score->summary() : std::string{}, score ? score->closeness : 0.0,
+                          score && score->solved};
+    for (int i = 0; i < session.hintsShown; ++i) {
+        view.hints.push_back(printable(e.hints[static_cast<std::size_t>(i)], true));
+    }
+    return view;
+}
+
+ui::ExerciseDraftView draftViewOf(Workspace& workspace) {
+    ExerciseDraft& draft = *workspace.draft();
+    Diagnostics d;
+    workspace.draftExercise(d);
+    std::string problem;
+    if (!d.empty()) {
+        problem = printable(d.front().where.empty() ? d.front().message : d.front().where + ": " + d.front().message, true);
+    }
+    return {&draft.open, &draft.title, &draft.instructions, &draft.hints, problem};
+}
+
+const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& workspace) {
+    const std::optional<ExerciseSession>& exercise = workspace.exercise();
+    model_.title = exercise ? "Exercise: " + printable(exercise->exercise.title, true)
+                            : printable(workspace.document().displayName(), true);
+    std::string url = base.empty() ? std::string{} : shareUrl(base, workspace.link());
+    if (made_ && url == url_) {
+        return model_;
+    }
+    made_ = true;
+    url_ = url;
+    code_.reset();
+    model_.code = nullptr;
+    model_.link = url;
+    model_.problem.clear();
+    if (url.empty()) {
+        model_.problem = "The QR code needs the course page's address. Start the lab once with\n"
+                         "  lab --share-base https://your-course.example.org/lab/\n"
+                         "(it is remembered), or use the page's Copy link.";
+        return model_;
+    }
+    std::string error;
+    code_ = encodeQr(url, error);
+    if (code_) {
+        model_.code = &*code_;
+    } else {
+        model_.problem = "This scene's link is too long for a QR code that can be read across a room: " + error +
+                         ". Shorten the description or the exercise's text, or publish the exercise with the course "
+                         "page and link it by name (lab share prints such links).";
+    }
+    return model_;
 }
 
 } // namespace lab

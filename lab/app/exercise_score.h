@@ -1,15 +1,20 @@
-// exercise_score.h — the live "how close" of an exercise: the attempt and the target rendered as
-// `lab exercise check` renders them (256 x 256, the target's camera, the lit view) and compared
-// (core/exercise/exercise.h scoreExercise).
+// exercise_score.h — what the lab shows of exercises: the live "how close" of the attempt, the
+// panel's view of the exercise and of a draft, and the scene's link as a QR code (Q).
 //
-// The target's render is kept for the exercise; the attempt is rendered again when it changed,
-// at most every kDragInterval seconds while a gesture goes on (a slider drag) and at once when it
-// ends, so the score is exact within one frame of the release. Needs the GL context.
+// The score: the attempt and the target rendered as `lab exercise check` renders them (256 x 256,
+// the target's camera, the lit view) and compared (core/exercise/exercise.h scoreExercise). The
+// target's render is kept for the exercise; the attempt is rendered again when it changed, at most
+// every kDragInterval seconds while a gesture goes on (a slider drag) and at once when it ends, so
+// the score is exact within one frame of the release. Needs the GL context.
 #pragma once
 
+#include "app/workspace.h"
 #include "core/exercise/exercise.h"
 #include "core/scene/mesh.h"
+#include "core/share/qr_code.h"
 #include "render/renderer.h"
+#include "ui/panel.h"
+#include "ui/share_code.h"
 
 #include <memory>
 #include <optional>
@@ -20,13 +25,11 @@ class ExerciseScorer {
 public:
     static constexpr double kDragInterval = 0.25;
 
-    // Scores `attempt` when it changed; true when the score changed. `opened` names the exercise
-    // (a new one renders its target again). Restores `framebuffer` as the bound one.
-    bool update(Renderer& renderer, const Exercise& exercise, unsigned opened, const Preset& attempt,
-                const std::shared_ptr<const Mesh>& attemptMesh, const std::shared_ptr<const Mesh>& targetMesh,
-                bool gestureInProgress, double clock, unsigned framebuffer);
+    // Scores the workspace's attempt when it changed; true when the score changed (the frame
+    // that showed the old one is owed a new one). The first solved score leaves a note ("Solved!").
+    // Binds `framebuffer` again after drawing.
+    bool update(Renderer& renderer, Workspace& workspace, bool gestureInProgress, double clock, unsigned framebuffer);
     const std::optional<ExerciseScore>& score() const { return score_; }
-    void reset() { *this = ExerciseScorer{}; }
 
 private:
     unsigned opened_ = 0;
@@ -34,6 +37,25 @@ private:
     std::optional<Preset> scored_;
     std::optional<ExerciseScore> score_;
     double scoredAt_ = -1e9;
+};
+
+// The panel's view of an exercise being solved, with its last score.
+ui::ExerciseView exerciseViewOf(const ExerciseSession& session, const std::optional<ExerciseScore>& score);
+// The panel's view of the workspace's draft (draft() must hold one), with why it is not an exercise yet.
+ui::ExerciseDraftView draftViewOf(Workspace& workspace);
+
+// The scene's link on the course page (AppOptions::shareBase) as a QR code, made again only when
+// the link changes; or why there is none (no address, a link too long for kMaxQrVersion).
+class ShareCode {
+public:
+    bool shown = false;
+    const ui::ShareCodeModel& update(const std::string& base, Workspace& workspace);
+
+private:
+    std::string url_;
+    bool made_ = false;
+    std::optional<QrCode> code_;
+    ui::ShareCodeModel model_;
 };
 
 } // namespace lab

@@ -49,6 +49,9 @@ struct WorkspaceOptions {
 // ~/.local/share/lighting-lab/presets, else ./lighting-lab-presets.
 std::filesystem::path defaultUserFolder();
 
+// A file name made of letters, digits, '-' and '_' only (downloads, numbered files).
+std::string safeStem(const std::string& stem);
+
 // An exercise being solved (core/exercise/exercise.h): A is the student's attempt, B the target,
 // drawn beside it with its parameters hidden; only the open fields of A can change.
 struct ExerciseSession {
@@ -142,6 +145,7 @@ public:
     //--- what the app shows ---------------------------------------------------------------
     std::vector<Problem> takeProblems() { return std::exchange(problems_, {}); }
     std::vector<std::string> takeNotes() { return std::exchange(notes_, {}); }
+    void note(std::string text) { notes_.push_back(std::move(text)); } // for the toast
     std::vector<Download> takeDownloads() { return std::exchange(downloads_, {}); }
 
     // The mesh of A's or B's model. A model edit that cannot load is undone with a problem.

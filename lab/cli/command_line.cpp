@@ -345,6 +345,24 @@ CLI::App* addShareCommand(CLI::App& app, ShareArguments& a) {
     return share;
 }
 
+void exerciseLine(const ExerciseArguments& a, CommandLine& line) {
+    line.command = CommandLine::Command::ExerciseCheck;
+    line.exercise = a.exercise;
+    line.attempt = a.attempt;
+    if (!a.diff.empty()) {
+        line.diffOut = a.diff;
+    }
+}
+
+void shareLine(const ShareArguments& a, CommandLine& line) {
+    line.command = CommandLine::Command::Share;
+    line.shared = a.file;
+    line.base = a.base;
+    if (!a.qr.empty()) {
+        line.qrOut = a.qr;
+    }
+}
+
 } // namespace
 
 std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* argv) {
@@ -413,20 +431,10 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
         checkLine(checkArguments, line);
     }
     if (*exerciseCheck) {
-        line.command = CommandLine::Command::ExerciseCheck;
-        line.exercise = exerciseArguments.exercise;
-        line.attempt = exerciseArguments.attempt;
-        if (!exerciseArguments.diff.empty()) {
-            line.diffOut = exerciseArguments.diff;
-        }
+        exerciseLine(exerciseArguments, line);
     }
     if (*share) {
-        line.command = CommandLine::Command::Share;
-        line.shared = shareArguments.file;
-        line.base = shareArguments.base;
-        if (!shareArguments.qr.empty()) {
-            line.qrOut = shareArguments.qr;
-        }
+        shareLine(shareArguments, line);
     }
     return line;
 }

@@ -1,13 +1,13 @@
 // panel.cpp — the control panel's sections.
 #include "ui/panel.h"
 
-#include "core/exercise/preset_fields.h"
 #include "core/io/safe_text.h"
 #include "core/lighting/lighting.h"
 #include "core/scene/camera.h"
 #include "core/scene/limits.h"
 #include "core/scene/preset_choices.h"
 #include "ui/equation_panel.h"
+#include "ui/exercise_panel.h"
 #include "ui/widgets.h"
 
 #include <glm/glm.hpp>
@@ -20,55 +20,6 @@
 namespace lab::ui {
 
 namespace {
-
-// The exercise being solved or made during this controlPanel call (set there): which fields show.
-const ExerciseView* gExercise = nullptr;
-ExerciseDraftView* gDraft = nullptr;
-
-// Whether the field at JSON path `path` (core/exercise/preset_fields.h) gets its widget: in an
-// exercise only the open ones (and the always free); while making one, every field, with a
-// checkbox before it that opens it to students.
-bool field(const std::string& path) {
-    if (gExercise) {
-        return alwaysFree(path) || std::any_of(gExercise->open.begin(), gExercise->open.end(),
-                                               [&](const std::string& o) { return covers(o, path); });
-    }
-    if (gDraft && gDraft->open) {
-        std::vector<std::string>& open = *gDraft->open;
-        auto at = std::find(open.begin(), open.end(), path);
-        bool on = at != open.end();
-        ImGui::PushID(path.c_str());
-        if (ImGui::Checkbox("##open", &on)) {
-            if (on) {
-                open.push_back(path);
-            } else {
-                open.erase(at);
-            }
-        }
-        if (ImGui::IsItemHovered()) {
-            ImGui::SetTooltip("Students may change %s", path.c_str());
-        }
-        mark("open." + path);
-        ImGui::PopID();
-        ImGui::SameLine();
-    }
-    return true;
-}
-
-// Whether a section holding the fields under these paths shows at all (in an exercise: some open).
-bool anyField(std::initializer_list<const char*> prefixes) {
-    if (!gExercise) {
-        return true;
-    }
-    for (const char* p : prefixes) {
-        for (const std::string& o : gExercise->open) {
-            if (covers(o, p) || covers(p, o)) {
-                return true;
-            }
-        }
-    }
-    return false;
-}
 
 // A combo over every value of an enumeration (core/scene/preset_choices.h), with one display name each.
 template <typename E, std::size_t N>
@@ -122,18 +73,6 @@ void browserFilesSection(const PanelInfo& info, std::vector<Request>& requests) 
     sameLineIfFits(commandRow(Command::Revert).label);
     historyButtons(info, requests);
     disabledWrapped("Drop a .json preset or a .glb model on the page.");
-}
-
-// A path field with a button after it; Enter in the field or the button sends `command`.
-void pathField(const char* id, const char* hint, std::string& text, Command command, std::vector<Request>& requests) {
-    const char* label = commandRow(command).label;
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize(label).x - ImGui::GetStyle().FramePadding.x * 2 -
-                            ImGui::GetStyle().ItemSpacing.x);
-    bool enter = ImGui::InputTextWithHint(id, hint, &text, ImGuiInputTextFlags_EnterReturnsTrue);
-    ImGui::SameLine();
-    if ((ImGui::Button(label) || enter) && !text.empty()) {
-        requests.push_back({command, text});
-    }
 }
 
 void filesSection(const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
@@ -331,7 +270,7 @@ void modelSection(Preset& p, const PanelInfo& info, PanelState& state, std::vect
             p.model.subdivisions = defaultSubdivisions(p.model.builtin);
         }
     }
-    if (!info.browser && !gExercise) {
+    if (!info.browser && !info.exercise) {
         pathField("##model", "model.glb (or drop one on the window)", state.modelPath, Command::LoadModel, requests);
         mark("model.path");
     }
@@ -489,7 +428,7 @@ void lightEditor(LightDesc& l, const std::string& prefix) {
 }
 
 void lightsSection(Preset& p, PanelState& state) {
-    if (gExercise && !anyField({"lights"})) {
+    if (!anyField({"lights"})) {
         return;
     }
     if (field("lights")) {
@@ -561,85 +500,6 @@ void compareRow(ViewSettings& view, const PanelInfo& info, std::vector<Request>&
     }
 }
 
-// The exercise being solved: what to do, how close the attempt is, hints, start again, leave.
-void exerciseSection(const ExerciseView& e, std::vector<Request>& requests) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(e.title.c_str());
-    mark("exercise.title");
-    if (!e.instructions.empty()) {
-        ImGui::TextDisabled("%s", e.instructions.c_str());
-    }
-    ImGui::PopTextWrapPos();
-    if (e.solved) {
-        ImGui::PushStyleColor(ImGuiCol_PlotHistogram, IM_COL32(40, 170, 70, 255));
-    }
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "%s%.0f%%", e.solved ? "Solved!  " : "", std::floor(e.closeness * 100.0));
-    ImGui::ProgressBar(static_cast<float>(e.closeness), ImVec2(-1, 0), e.score.empty() ? "..." : overlay);
-    mark(e.solved ? "exercise.solved" : "exercise.score");
-    if (e.solved) {
-        ImGui::PopStyleColor();
-    }
-    if (!e.score.empty()) {
-        ImGui::PushTextWrapPos(0.0f);
-        if (e.solved) {
-            ImGui::TextColored(ImVec4(0.45f, 0.9f, 0.5f, 1.0f), "%s", e.score.c_str());
-        } else {
-            ImGui::TextDisabled("%s", e.score.c_str());
-        }
-        ImGui::PopTextWrapPos();
-    }
-    for (std::size_t i = 0; i < e.hints.size(); ++i) {
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::Text("Hint %zu: %s", i + 1, e.hints[i].c_str());
-        ImGui::PopTextWrapPos();
-    }
-    commandButton(Command::ExerciseReset, requests);
-    mark("exercise.reset");
-    sameLineIfFits(commandRow(Command::ExerciseHint).label);
-    commandButton(Command::ExerciseHint, requests, e.hintsLeft > 0);
-    mark("exercise.hint");
-    sameLineIfFits(commandRow(Command::Undo).label);
-    commandButton(Command::Undo, requests);
-    sameLineIfFits(commandRow(Command::ExerciseLeave).label);
-    commandButton(Command::ExerciseLeave, requests);
-    mark("exercise.leave");
-    disabledWrapped("Only the fields the exercise opens are shown. The target is on the right (below on a phone); "
-                    "turn the camera freely.");
-}
-
-// "Make exercise": title, instructions, hints, the open fields (ticked below), save.
-void draftSection(ExerciseDraftView& d, const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
-    disabledWrapped("The scene when you pressed Make exercise is the target. Tick the fields students may change "
-                    "(the boxes before them below), set those fields to where students start, then save.");
-    ImGui::InputText("title", d.title);
-    mark("draft.title");
-    ImGui::InputTextMultiline("instructions", d.instructions, ImVec2(-1, ImGui::GetTextLineHeight() * 3.5f));
-    mark("draft.instructions");
-    ImGui::InputTextMultiline("hints", d.hints, ImVec2(-1, ImGui::GetTextLineHeight() * 2.5f));
-    mark("draft.hints");
-    helpMarker("One hint a line; students reveal them one at a time.");
-    std::string open;
-    for (const std::string& o : *d.open) {
-        open += (open.empty() ? "" : ", ") + o;
-    }
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("open: %s", open.empty() ? "(none ticked yet)" : open.c_str());
-    if (!d.problem.empty()) {
-        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%s", d.problem.c_str());
-    }
-    ImGui::PopTextWrapPos();
-    if (info.browser) {
-        commandButton(Command::SaveExercise, requests, d.problem.empty());
-    } else {
-        pathField("##exercise-path", "path/to/exercise.json", state.exercisePath, Command::SaveExercise, requests);
-    }
-    mark("draft.save");
-    commandButton(Command::MakeExercise, requests); // again: stop making it
-    ImGui::SameLine();
-    ImGui::TextDisabled("(stop)");
-}
-
 void toolButtons(PanelState& state, std::vector<Request>& requests) {
     commandButton(Command::ToggleShaderEditor, requests);
     sameLineIfFits(commandRow(Command::ToggleSweep).label);
@@ -684,13 +544,12 @@ void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, Pan
                   std::vector<Request>& requests, PanelPart part) {
     const bool all = part == PanelPart::All, model = all || part == PanelPart::Model,
                material = all || part == PanelPart::Material, lights = all || part == PanelPart::Lights;
-    gExercise = info.exercise;
-    gDraft = info.exercise ? nullptr : info.draft;
-    if (gExercise && ImGui::CollapsingHeader("Exercise", ImGuiTreeNodeFlags_DefaultOpen)) {
-        exerciseSection(*gExercise, requests);
+    setFieldGate(info.exercise, info.exercise ? nullptr : info.draft);
+    if (info.exercise && ImGui::CollapsingHeader("Exercise", ImGuiTreeNodeFlags_DefaultOpen)) {
+        exerciseSection(*info.exercise, requests);
     }
-    if (gDraft && model && ImGui::CollapsingHeader("Make exercise", ImGuiTreeNodeFlags_DefaultOpen)) {
-        draftSection(*gDraft, info, state, requests);
+    if (!info.exercise && info.draft && model && ImGui::CollapsingHeader("Make exercise", ImGuiTreeNodeFlags_DefaultOpen)) {
+        draftSection(*info.draft, info.browser, state.exercisePath, requests);
     }
     if (model && ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) {
         filesSection(info, state, requests);
@@ -700,7 +559,7 @@ void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, Pan
         presetsSection(info, state, requests);
     }
     if (model) {
-        if (!gExercise) {
+        if (!info.exercise) {
             compareRow(view, info, requests);
         }
         toolButtons(state, requests);

@@ -4,6 +4,7 @@
 #include "core/scene/limits.h"
 
 #include <glm/common.hpp>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -126,6 +127,18 @@ void nextToolWindow(float columns, float lines, float share) {
                              ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowBgAlpha(1.0f);
+}
+
+// A path field with a button after it; Enter in the field or the button sends `command`.
+void pathField(const char* id, const char* hint, std::string& text, Command command, std::vector<Request>& requests) {
+    const char* label = commandRow(command).label;
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize(label).x - ImGui::GetStyle().FramePadding.x * 2 -
+                            ImGui::GetStyle().ItemSpacing.x);
+    bool enter = ImGui::InputTextWithHint(id, hint, &text, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if ((ImGui::Button(label) || enter) && !text.empty()) {
+        requests.push_back({command, text});
+    }
 }
 
 } // namespace lab::ui

@@ -24,6 +24,9 @@ bool dragVec3(const char* label, glm::vec3& value, float speed, float min = 0.0f
 // A button for `command`, labelled from the command table (with its shortcut in the tooltip);
 // a click appends the command to `requests`. Disabled (greyed) when `enabled` is false.
 bool commandButton(Command command, std::vector<Request>& requests, bool enabled = true);
+// A path field with a button after it (`command`'s label); Enter in the field or the button asks
+// for `command` with the field's text.
+void pathField(const char* id, const char* hint, std::string& text, Command command, std::vector<Request>& requests);
 // SameLine() when an item `width` wide (a button labelled `label`) still fits on this line, so
 // rows of buttons wrap in a narrow panel (a phone) instead of running off its edge.
 void sameLineIfFits(float width);

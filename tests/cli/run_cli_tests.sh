@@ -471,7 +471,7 @@ near() { # near NAME PATTERN EXERCISE PYTHON: the exercise's solution edited by 
     expect "exercise-near-miss-$1" 1 "$2" -- "$lab" exercise check "$exercises/$3.json" "$tmp/near.json"
 }
 near shininess-50 'pixels match' 02-shininess 'p["material"]["shininess"] = 50'
-near attenuation-field 'lights\[0\]\.attenuation is 0\.1 away \(within 0\.05 counts\)' 05-attenuation \
+near attenuation-field 'lights\[0\]\.attenuation is 0\.1 away \(at most 0\.05\)' 05-attenuation \
     'p["lights"][0]["attenuation"] = [0, 0.1, 0.9]'
 near spot-cutoff-32 'pixels match' 06-spot-light 'p["lights"][0]["cutoff_deg"] = 32'
 near roughness-0.2 'pixels match' 07-cook-torrance-roughness 'p["cook_torrance"]["roughness"] = 0.2'
