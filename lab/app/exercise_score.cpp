@@ -74,7 +74,9 @@ ui::ExerciseDraftView draftViewOf(Workspace& workspace) {
     Diagnostics d;
     workspace.draftExercise(d);
     std::string problem;
-    if (!d.empty()) {
+    if (draft.open.empty()) {
+        problem = "Tick the fields students may change: the boxes before the fields below.";
+    } else if (!d.empty()) {
         problem = printable(d.front().where.empty() ? d.front().message : d.front().where + ": " + d.front().message, true);
     }
     return {&draft.open, &draft.title, &draft.instructions, &draft.hints, problem};

@@ -125,11 +125,12 @@ void draftSection(ExerciseDraftView& d, bool browser, std::string& path, std::ve
                     "(the boxes before them below), set those fields to where students start, then save.");
     ImGui::InputText("title", d.title);
     mark("draft.title");
-    ImGui::InputTextMultiline("instructions", d.instructions, ImVec2(-1, ImGui::GetTextLineHeight() * 3.5f));
+    ImGui::TextDisabled("instructions");
+    ImGui::InputTextMultiline("##instructions", d.instructions, ImVec2(-1, ImGui::GetTextLineHeight() * 3.5f));
     mark("draft.instructions");
-    ImGui::InputTextMultiline("hints", d.hints, ImVec2(-1, ImGui::GetTextLineHeight() * 2.5f));
+    ImGui::TextDisabled("hints, one a line (students reveal them one at a time)");
+    ImGui::InputTextMultiline("##hints", d.hints, ImVec2(-1, ImGui::GetTextLineHeight() * 2.5f));
     mark("draft.hints");
-    helpMarker("One hint a line; students reveal them one at a time.");
     std::string open;
     for (const std::string& o : *d.open) {
         open += (open.empty() ? "" : ", ") + o;

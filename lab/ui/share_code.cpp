@@ -17,6 +17,7 @@ void shareCodeWindow(const ShareCodeModel& m, std::vector<Request>& requests) {
     ImGui::SetNextWindowPos(ImVec2(screen->Pos.x + screen->Size.x * 0.5f, screen->Pos.y + screen->Size.y * 0.5f),
                             ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(screen->Size.x * 0.96f, std::max(side * 0.9f, 320.0f)), side * 0.96f));
+    ImGui::SetNextWindowBgAlpha(1.0f); // nothing shows through around the code
     ImGui::Begin("Open this scene on your phone###share-code", nullptr,
                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoResize |
                      ImGuiWindowFlags_NoMove);
@@ -54,7 +55,9 @@ void shareCodeWindow(const ShareCodeModel& m, std::vector<Request>& requests) {
         ImGui::PopTextWrapPos();
         mark("share.problem");
     }
-    commandButton(Command::ToggleShareCode, requests);
+    if (ImGui::Button("Close (Q)")) {
+        requests.push_back({Command::ToggleShareCode});
+    }
     mark("share.close");
     ImGui::End();
 }

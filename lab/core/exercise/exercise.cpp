@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cctype>
 #include <cstdio>
 
 #include <glm/common.hpp>
@@ -72,7 +73,27 @@ std::string exerciseToJson(const Exercise& e) {
     if (!e.hints.empty()) {
         j["hints"] = e.hints;
     }
-    return j.dump(2) + "\n";
+    // Indented, with each array of plain values (a colour, a position) on one line as in a preset file.
+    const std::string text = j.dump(2);
+    std::string out;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        std::size_t close = text[k] == '[' ? text.find_first_of("[]{\"", k + 1) : std::string::npos;
+        if (close == std::string::npos || text[close] != ']') {
+            out += text[k];
+            continue;
+        }
+        out += '[';
+        for (std::size_t m = k + 1; m < close; ++m) {
+            if (text[m] == ',') {
+                out += ", ";
+            } else if (!std::isspace(static_cast<unsigned char>(text[m]))) {
+                out += text[m];
+            }
+        }
+        out += ']';
+        k = close;
+    }
+    return out + "\n";
 }
 
 bool saveExercise(const Exercise& exercise, const fs::path& file, Diagnostics& diagnostics) {
