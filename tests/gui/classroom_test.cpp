@@ -5,6 +5,11 @@
 // for it); the others run on the GUI suite's screen.
 #include "gui_harness.h"
 
+#include "core/exercise/exercise.h"
+#include "core/io/image.h"
+
+#include <cstdio>
+
 #include <cstdlib>
 #include <string>
 #include <utility>
@@ -278,6 +283,76 @@ TEST(GuiClassroom, PlotsAtTheProbeFollowTheDraggedMarkerAndLeaveThePreset) {
     ASSERT_TRUE(saved && original) << toString(d);
     EXPECT_EQ(saved->preset.plotIncidentDeg, original->preset.plotIncidentDeg);
     EXPECT_TRUE(saved->preset == original->preset) << "plots at the probe changed the preset";
+}
+
+// Q: the scene's link on the course page (--share-base, remembered in the settings file) as a QR
+// code a phone reads: the code captured from the screen decodes, with a real decoder, to the link.
+TEST(GuiClassroom, TheQrCodeOnTheScreenDecodesToTheExercisesLinkOnTheCoursePage) {
+    TempFolder config;
+    ::setenv("XDG_CONFIG_HOME", config.path().c_str(), 1);
+    {
+        START_LAB(lab, "--preset", std::string(LAB_SOURCE_DIR "/presets/exercises/02-shininess.json"), "--share-base",
+                  "https://course.example.org/lab/");
+        ::unsetenv("XDG_CONFIG_HOME");
+        Rect view = lab.widget("view");
+        lab.moveTo(view.cx(), view.cy());
+        lab.press("q");
+        ASSERT_TRUE(lab.has("share.qr"));
+        Image code = lab.capture(lab.widget("share.qr"));
+        fs::path png = config.path() / "qr.png";
+        std::string error;
+        ASSERT_TRUE(writePng(code, png, error)) << error;
+        std::string command = std::string(LAB_ZBARIMG) + " --raw -q '" + png.string() + "' 2>/dev/null";
+        std::string decoded;
+        if (FILE* pipe = ::popen(command.c_str(), "r")) {
+            char buffer[1024];
+            while (std::fgets(buffer, sizeof buffer, pipe)) {
+                decoded += buffer;
+            }
+            ::pclose(pipe);
+        }
+        EXPECT_EQ(decoded, "https://course.example.org/lab/#exercise=02-shininess\n");
+        lab.press("q");
+        EXPECT_FALSE(lab.has("share.qr")) << "Q closes it again";
+    }
+    ::unsetenv("XDG_CONFIG_HOME");
+    EXPECT_NE(readText(config.path() / "lighting-lab" / "settings.json").find("https://course.example.org/lab/"),
+              std::string::npos)
+        << "--share-base is remembered";
+}
+
+// Make exercise: the scene is the target; tick the shininess, set its start, title, save: the file
+// is an exercise with that field open, and the lab shows it as a student sees it.
+TEST(GuiClassroom, MakeExerciseSavesAnExerciseWithTheTickedFieldOpen) {
+    TempFolder dir;
+    const fs::path file = dir.path() / "made.json";
+    START_LAB(lab, "--preset", preset("05-full-phong"));
+    Rect make = lab.widget("exercise.make");
+    lab.click(make.cx(), make.cy());
+    ASSERT_TRUE(lab.has("draft.title"));
+    Rect tick = scrolledTo(lab, "open.material.shininess");
+    lab.click(tick.cx(), tick.cy());
+    Rect shininess = lab.widget("material.shininess");
+    lab.moveTo(shininess.x + 20, shininess.cy());
+    lab.x().key("Control_L", true);
+    lab.click(shininess.x + 20, shininess.cy());
+    lab.x().key("Control_L", false);
+    lab.press("a", "Control_L");
+    lab.type("8");
+    lab.press("Return");
+    Rect save = scrolledTo(lab, "draft.save"); // the button; its path field is left of it
+    lab.click(save.x - 60, save.cy());
+    lab.type(file.string());
+    lab.press("Return");
+    lab.settle();
+    Diagnostics d;
+    std::optional<LoadedExercise> made = loadExercise(file, d);
+    ASSERT_TRUE(made) << toString(d);
+    EXPECT_EQ(made->exercise.open, std::vector<std::string>{"material.shininess"});
+    EXPECT_EQ(made->exercise.start.material.shininess, 8.0f);
+    EXPECT_EQ(made->exercise.target.material.shininess, 32.0f) << "the scene when Make exercise was pressed";
+    EXPECT_TRUE(lab.has("exercise.title")) << "the saved exercise opens as a student sees it";
+    EXPECT_FALSE(lab.has("material.diffuse"));
 }
 
 } // namespace

@@ -290,6 +290,22 @@ inline int reddishPixels(const Image& image) {
 
 inline std::string preset(const std::string& name) { return std::string(LAB_SOURCE_DIR) + "/presets/" + name + ".json"; }
 
+// Scrolls the control panel (the wheel over it) until `widget` is inside the window: down while it
+// is below the view's bottom, up while it is above its top.
+inline Rect scrolledTo(Lab& lab, const std::string& widget) {
+    Rect area = lab.widget("view.area"), w = lab.widget(widget);
+    for (int i = 0; i < 40 && (w.y + w.h > area.y + area.h - 4 || w.y < area.y); ++i) {
+        const int button = w.y < area.y ? 4 : 5;
+        lab.moveTo(w.x + 4, area.y + area.h / 2);
+        unsigned long long before = lab.frame();
+        lab.x().button(button, true);
+        lab.x().button(button, false);
+        lab.settle(before);
+        w = lab.widget(widget);
+    }
+    return w;
+}
+
 #define START_LAB(lab, ...)                                                                        \
     Lab lab({__VA_ARGS__});                                                                        \
     ASSERT_TRUE(lab.ready()) << "the lab did not open a window (is DISPLAY set? CTest runs this under xvfb-run)"

@@ -323,20 +323,6 @@ TEST(Gui, TheFrameTimeShowsWhileTheModelChangesAndNotWhenIdle) {
     EXPECT_TRUE(lab.has("view.frame-time")) << "... until asked (T)";
 }
 
-// Scrolls the control panel (the wheel over it) until `widget` is inside the window.
-Rect scrolledTo(Lab& lab, const std::string& widget) {
-    Rect area = lab.widget("view.area"), w = lab.widget(widget);
-    for (int i = 0; i < 40 && w.y + w.h > area.y + area.h - 4; ++i) {
-        lab.moveTo(w.x + 4, area.y + area.h / 2);
-        unsigned long long before = lab.frame();
-        lab.x().button(5, true);
-        lab.x().button(5, false);
-        lab.settle(before);
-        w = lab.widget(widget);
-    }
-    return w;
-}
-
 // The columns [x0, x1) of an image.
 Image columns(const Image& image, int x0, int x1) {
     Image out{x1 - x0, image.height, {}};
