@@ -567,13 +567,10 @@ TEST(PresetFields, APatchMergedOverItsBaseGivesTheFullPresetBack) {
     expectPatchRoundTrips(full, base, "a check block and a sweep removed");
 }
 
-// BUG (lab/core/exercise/preset_fields.cpp, presetPatch): where a key is missing below the top level —
-// a light whose orbit was turned off (saved without "orbit"), a check block that lost one of its
-// tolerances — the recursive presetPatch returns whole(full) for that *sub-object* (line 258), so the
-// light (or the check block) gets "format" and "version" keys. mergePreset then copies them into the
-// light, and the preset no longer reads ("lights[0].format: unknown key"); an exercise whose start light
-// orbits and whose target light does not is written by exerciseToJson as a file that does not load.
-TEST(PresetFields, DISABLED_APatchThatRemovesAKeyBelowTheTopGivesTheFullPresetBack) {
+// A key missing below the top level (a light whose orbit was switched off is saved without "orbit",
+// a check block lost a tolerance) is null in the patch, and the merge removes it. (Until 0b6c124 the
+// patch was the whole preset below the top, and the light got "format" and "version" keys.)
+TEST(PresetFields, APatchThatRemovesAKeyBelowTheTopRemovesIt) {
     Preset base;
     base.lights[0].orbit.on = true;
     expectPatchRoundTrips(base, Preset{}, "an orbit turned off");
@@ -695,11 +692,9 @@ TEST(Exercise, AnAddedLightIsKeptWhenTheLightsAreOpen) {
     EXPECT_EQ(kept.background, e.start.background);
 }
 
-// BUG (lab/core/exercise/exercise.cpp, withLockedFieldsOfStart, lines 441-469): a removed light is an
-// open change of "lights[1]" whose value in the attempt is absent (fieldAt gives nullptr), so `kept` keeps
-// start's light. With "lights" open and a locked field changed too, the attempt's removal is undone along
-// with the locked change: the result has the start's two lights, not the attempt's one.
-TEST(Exercise, DISABLED_ARemovedLightIsKeptRemovedWhenTheLightsAreOpen) {
+// With "lights" open and a locked field changed too, putting the locked field back keeps the
+// attempt's removal of a light.
+TEST(Exercise, ARemovedLightIsKeptRemovedWhenTheLightsAreOpen) {
     Exercise e = shininessExercise();
     e.start.lights.push_back(LightDesc{});
     e.target = e.start;
@@ -729,11 +724,9 @@ TEST(Exercise, TheSameModelFileNamedFromAnotherFolderIsNotAChange) {
     EXPECT_TRUE(lockedChanges(e, attempt, dir.path(), dir.path()).empty());
 }
 
-// BUG (lab/core/exercise/exercise.cpp, withLockedFieldsOfStart, lines 470-480): the merged preset is read
-// again with no folder, so a glTF start can never be read there; the fallback then returns the start with
-// only the camera, name, description and plot angle of the attempt — the attempt's open fields are lost
-// too. Here the shininess (open) goes back to 10 along with the background (locked).
-TEST(Exercise, DISABLED_LockedFieldsArePutBackAndTheOpenOnesKeptForAGltfModel) {
+// A glTF start: the attempt's open field is kept and the locked one put back, though no folder is
+// there to read the model path against.
+TEST(Exercise, LockedFieldsArePutBackAndTheOpenOnesKeptForAGltfModel) {
     Exercise e = shininessExercise();
     e.start.model.gltf = "models/m.glb";
     e.target.model.gltf = "models/m.glb";
