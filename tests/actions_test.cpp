@@ -17,7 +17,7 @@ TEST(Commands, EveryCommandHasARowAndTheRowsNameTheirCommand) {
         seen.insert(row.command);
         EXPECT_EQ(commandRow(row.command).command, row.command);
     }
-    EXPECT_EQ(seen.size(), static_cast<std::size_t>(Command::SaveSweep) + 1) << "a command without a row";
+    EXPECT_EQ(seen.size(), static_cast<std::size_t>(kLastCommand) + 1) << "a command without a row";
 }
 
 TEST(Commands, NoTwoRowsShareAKey) {

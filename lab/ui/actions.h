@@ -43,6 +43,7 @@ enum class Command {
     // Exercises (core/exercise/exercise.h): the workspace carries these out, the QR code the app
     ExerciseReset, ExerciseHint, ExerciseLeave, MakeExercise, SaveExercise, ToggleShareCode,
 };
+inline constexpr Command kLastCommand = Command::ToggleShareCode; // a new command goes before it, or becomes it
 
 struct CommandRow {
     Command command;

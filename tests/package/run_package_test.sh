@@ -60,6 +60,13 @@ check "usr/bin/lab is installed" test -x "$lab"
 check "the presets are installed" test -f "$presets/05-full-phong.json"
 check "the models are installed" test -f "$presets/models/trefoil.glb"
 check "the README is installed" test -f "$root/usr/share/doc/lighting-lab/README.md"
+check "the exercises are installed" test -f "$presets/exercises/02-shininess.json"
+# The installed program knows its shipped exercises: it links them by name, and checks an attempt.
+check "lab share links an installed exercise by name" test \
+    "$("$lab" share "$presets/exercises/02-shininess.json" --base https://course.example.org/lab/ 2>/dev/null)" \
+    = "https://course.example.org/lab/#exercise=02-shininess"
+check "lab exercise check solves an installed exercise with its solution" \
+    "$lab" exercise check "$presets/exercises/02-shininess.json" "$src/tests/exercises/02-shininess.solution.json"
 check "nothing outside /usr" test -z "$(cd "$root" && ls -A | grep -vx usr)"
 check "the program carries no debug information" bash -c "! readelf -S '$lab' | grep -q '\.debug_info'"
 check "lab --version runs" "$lab" --version

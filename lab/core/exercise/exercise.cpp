@@ -4,6 +4,7 @@
 #include "core/exercise/preset_fields.h"
 #include "core/io/file_io.h"
 #include "core/io/json_text.h"
+#include "core/io/number_format.h"
 #include "core/io/safe_text.h"
 #include "core/io/suggest.h"
 
@@ -59,12 +60,14 @@ std::string exerciseToJson(const Exercise& e) {
     if (!e.tolerance.empty()) {
         PresetJson t = PresetJson::object();
         if (e.tolerance.pixelTolerance) t["pixel_tolerance"] = *e.tolerance.pixelTolerance;
-        if (e.tolerance.maxFailing) t["max_failing"] = *e.tolerance.maxFailing;
-        if (e.tolerance.maxMean) t["max_mean"] = *e.tolerance.maxMean;
+        // Floats as they were typed (0.01, not 0.009999999776482582), as presets write them.
+        auto number = [](float v) { return PresetJson::parse(shortestFloat(v)); };
+        if (e.tolerance.maxFailing) t["max_failing"] = number(*e.tolerance.maxFailing);
+        if (e.tolerance.maxMean) t["max_mean"] = number(*e.tolerance.maxMean);
         if (!e.tolerance.fields.empty()) {
             PresetJson fields = PresetJson::object();
             for (const FieldTolerance& f : e.tolerance.fields) {
-                fields[f.field] = f.within;
+                fields[f.field] = number(f.within);
             }
             t["fields"] = fields;
         }

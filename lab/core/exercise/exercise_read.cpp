@@ -301,7 +301,8 @@ void readHints(const PresetJson& hints, Exercise& e, Reading& r) {
     for (std::size_t i = 0; i < hints.size(); ++i) {
         const PresetJson& h = hints[i];
         if (!h.is_string() || h.get<std::string>().empty() || hasNul(h.get<std::string>())) {
-            r.error("hints[" + std::to_string(i) + "]", "expected a non-empty string, got " + describe(h));
+            r.error("hints[" + std::to_string(i) + "]",
+                    "expected a non-empty string, got " + (h.is_string() ? std::string("an empty string") : describe(h)));
         } else {
             e.hints.push_back(h.get<std::string>());
         }

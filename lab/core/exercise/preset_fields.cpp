@@ -64,7 +64,8 @@ std::optional<std::vector<Part>> splitPath(std::string_view path) {
     while (i < path.size()) {
         if (path[i] == '[') {
             std::size_t close = path.find(']', i);
-            if (parts.empty() || needKey || close == std::string_view::npos || close == i + 1 || close - i > 4) {
+            if (parts.empty() || needKey || close == std::string_view::npos || close == i + 1 || close - i > 4 ||
+                (path[i + 1] == '0' && close > i + 2)) { // no leading zeros: "lights[00]" names nothing
                 return std::nullopt;
             }
             std::size_t index = 0;
