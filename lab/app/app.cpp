@@ -100,6 +100,7 @@ struct App::Impl {
     ui::ExerciseView exerciseView;
     ui::ExerciseDraftView draftView;
     ShareCode shareCode; // the scene's link as a QR code (Q)
+    unsigned exerciseShown = 0; // the last exercise whose section the panel was turned to
 
     // A side of the comparison as this frame shows it: A, and B in compare mode.
     struct ShownSide {
@@ -221,6 +222,11 @@ void App::Impl::carryOut(const FrameInput& in, const ui::ScreenEvents& events) {
     }
     collectMessages(in.deltaTime);
     workspace.endFrame(events.gesture);
+    // A newly opened exercise shows its section: on a phone's tabs, one of the panel's, not the plots.
+    if (const std::optional<ExerciseSession>& ex = workspace.exercise(); ex && ex->opened != exerciseShown) {
+        exerciseShown = ex->opened;
+        panel.tab = panel.tab == ui::PanelTab::Plots ? ui::PanelTab::Material : panel.tab;
+    }
 }
 
 // The window's own commands; everything else goes to the workspace.

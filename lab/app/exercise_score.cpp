@@ -85,7 +85,8 @@ ui::ExerciseDraftView draftViewOf(Workspace& workspace) {
 const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& workspace) {
     const std::optional<ExerciseSession>& exercise = workspace.exercise();
     model_.title = exercise ? "Exercise: " + printable(exercise->exercise.title, true)
-                            : printable(workspace.document().displayName(), true);
+                            : printable(workspace.document().displayName(), true) +
+                                  (workspace.document().dirty() ? " (modified)" : "");
     std::string url = base.empty() ? std::string{} : shareUrl(base, workspace.link());
     if (made_ && url == url_) {
         return model_;

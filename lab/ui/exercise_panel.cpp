@@ -115,8 +115,8 @@ void exerciseSection(const ExerciseView& e, std::vector<Request>& requests) {
     sameLineIfFits(commandRow(Command::ExerciseLeave).label);
     commandButton(Command::ExerciseLeave, requests);
     mark("exercise.leave");
-    disabledWrapped("Only the fields the exercise opens are shown. The target is on the right (below on a phone); "
-                    "turn the camera freely.");
+    disabledWrapped("Only the fields the exercise opens are shown. The target is beside or below your attempt; "
+                    "turn the camera freely (both follow).");
 }
 
 // "Make exercise": title, instructions, hints, the open fields (ticked below), save.

@@ -500,7 +500,7 @@ void compareRow(ViewSettings& view, const PanelInfo& info, std::vector<Request>&
     }
 }
 
-void toolButtons(PanelState& state, std::vector<Request>& requests) {
+void toolButtons(PanelState& state, std::vector<Request>& requests, bool solving) {
     commandButton(Command::ToggleShaderEditor, requests);
     sameLineIfFits(commandRow(Command::ToggleSweep).label);
     commandButton(Command::ToggleSweep, requests);
@@ -530,9 +530,11 @@ void toolButtons(PanelState& state, std::vector<Request>& requests) {
     mark("figures.scale");
     sameLineIfFits(commandRow(Command::ToggleHelp).label);
     commandButton(Command::ToggleHelp, requests);
-    sameLineIfFits(commandRow(Command::MakeExercise).label);
-    commandButton(Command::MakeExercise, requests);
-    mark("exercise.make");
+    if (!solving) { // an exercise is not made from an exercise
+        sameLineIfFits(commandRow(Command::MakeExercise).label);
+        commandButton(Command::MakeExercise, requests);
+        mark("exercise.make");
+    }
     sameLineIfFits(commandRow(Command::ToggleShareCode).label);
     commandButton(Command::ToggleShareCode, requests);
     mark("share.code");
@@ -562,7 +564,7 @@ void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, Pan
         if (!info.exercise) {
             compareRow(view, info, requests);
         }
-        toolButtons(state, requests);
+        toolButtons(state, requests, info.exercise != nullptr);
     }
     if (material && anyField({"material"}) && ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
         materialSection(preset);
