@@ -15,7 +15,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { repo, withBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare } from './page.mjs';
+import { repo, withBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare, finger } from './page.mjs';
 
 const env = withBrowser();
 const lab = process.env.LAB_EXE || path.join(repo, 'build/lab');
@@ -102,22 +102,6 @@ async function scoreFill(page, touch) {
   return filled / png.width;
 }
 
-// One finger on a touch screen (Chrome DevTools Protocol touch events, as lab.test.mjs sends them).
-async function finger(page) {
-  const cdp = await page.context().newCDPSession(page);
-  const send = (type, points) => cdp.send('Input.dispatchTouchEvent', {
-    type, touchPoints: points.map(([x, y], id) => ({ x, y, id, radiusX: 4, radiusY: 4, force: 1 })) });
-  return {
-    down: (x, y) => send('touchStart', [[x, y]]),
-    move: async (x, y) => { await send('touchMove', [[x, y]]); await frames(page, 1); },
-    up: async () => { await send('touchEnd', []); await settle(page); },
-    async tap(x, y) {
-      await send('touchStart', [[x, y]]);
-      await send('touchEnd', []);
-      await settle(page);
-    },
-  };
-}
 
 // Scrolls the control panel by its scrollbar (dragged by the finger, as factor-views.test.mjs
 // does) until widget `name` is whole inside it, down or up. Returns the widget's rectangle.

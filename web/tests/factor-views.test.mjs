@@ -11,7 +11,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { withBrowser, newLabPage, settle, frames, widgets } from './page.mjs';
+import { withBrowser, newLabPage, settle, frames, widgets, finger } from './page.mjs';
 
 const env = withBrowser();
 const PRESET = '13-cook-torrance-beckmann-schlick';
@@ -34,22 +34,6 @@ function mouse(page) {
   };
 }
 
-// One finger on a touch screen (Chrome DevTools Protocol touch events, as lab.test.mjs sends them).
-async function finger(page) {
-  const cdp = await page.context().newCDPSession(page);
-  const send = (type, points) => cdp.send('Input.dispatchTouchEvent', {
-    type, touchPoints: points.map(([x, y], id) => ({ x, y, id, radiusX: 4, radiusY: 4, force: 1 })) });
-  return {
-    down: (x, y) => send('touchStart', [[x, y]]),
-    move: async (x, y) => { await send('touchMove', [[x, y]]); await frames(page, 1); },
-    up: async () => { await send('touchEnd', []); await settle(page); },
-    async tap(x, y) {
-      await send('touchStart', [[x, y]]);
-      await send('touchEnd', []);
-      await settle(page);
-    },
-  };
-}
 
 // From a to b in `steps` moves.
 async function drag(pointer, [ax, ay], [bx, by], steps = 8) {

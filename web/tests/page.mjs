@@ -134,3 +134,20 @@ export function compare(a, b, { pixel = 3, share = 0.001, mean = 0.5 } = {}) {
   result.passes = result.failingShare <= share && result.mean <= mean;
   return result;
 }
+
+// One finger on a touch screen (Chrome DevTools Protocol touch events): down, move, up, tap.
+export async function finger(page) {
+  const cdp = await page.context().newCDPSession(page);
+  const send = (type, points) => cdp.send('Input.dispatchTouchEvent', {
+    type, touchPoints: points.map(([x, y], id) => ({ x, y, id, radiusX: 4, radiusY: 4, force: 1 })) });
+  return {
+    down: (x, y) => send('touchStart', [[x, y]]),
+    move: async (x, y) => { await send('touchMove', [[x, y]]); await frames(page, 1); },
+    up: async () => { await send('touchEnd', []); await settle(page); },
+    async tap(x, y) {
+      await send('touchStart', [[x, y]]);
+      await send('touchEnd', []);
+      await settle(page);
+    },
+  };
+}

@@ -428,41 +428,22 @@ std::optional<fs::path> resolveModelPath(const std::string& gltf, const fs::path
     return full;
 }
 
-std::optional<Preset> parsePreset(std::string_view text, const std::string& displayName,
-                                  const std::optional<fs::path>& folder, Diagnostics& diagnostics,
-                                  OmittedKeys* omitted) {
-    std::optional<Json> json = parseObject(text, displayName, diagnostics);
-    if (!json) {
-        return std::nullopt;
-    }
-    Diagnostics out;
-    Reader r(*json, "", displayName, out);
-    Preset preset;
-    if (readFormatAndVersion(r)) {
-        readPresetKeys(r, preset, folder);
-    }
-    if (!out.empty()) {
-        diagnostics.insert(diagnostics.end(), out.begin(), out.end());
-        return std::nullopt;
-    }
-    if (omitted) {
-        *omitted = {!r.has("camera"), !r.has("lights")};
-    }
-    return preset;
-}
+namespace {
 
-std::optional<Preset> parseInlinePreset(std::string_view objectText, const std::string& displayName,
-                                        const std::string& where, const std::optional<fs::path>& folder,
-                                        Diagnostics& diagnostics, OmittedKeys* omitted) {
-    std::optional<Json> json = parseObject(objectText, displayName, diagnostics);
+// The preset in `text` (one JSON object found at `where`): a file's must say its format and
+// version; an inline one (`inlined`) may leave them to the file around it, and is checked when it
+// gives them.
+std::optional<Preset> readPreset(std::string_view text, const std::string& displayName, const std::string& where,
+                                 bool inlined, const std::optional<fs::path>& folder, Diagnostics& diagnostics,
+                                 OmittedKeys* omitted) {
+    std::optional<Json> json = parseObject(text, displayName, diagnostics);
     if (!json) {
         return std::nullopt;
     }
     Diagnostics out;
     Reader r(*json, where, displayName, out);
     Preset preset;
-    // The format and version are those of the file around it; given here, they must still be right.
-    if ((!r.has("format") && !r.has("version")) || readFormatAndVersion(r)) {
+    if ((inlined && !r.has("format") && !r.has("version")) || readFormatAndVersion(r)) {
         r.find("format");
         r.find("version");
         readPresetKeys(r, preset, folder);
@@ -475,6 +456,20 @@ std::optional<Preset> parseInlinePreset(std::string_view objectText, const std::
         *omitted = {!r.has("camera"), !r.has("lights")};
     }
     return preset;
+}
+
+} // namespace
+
+std::optional<Preset> parsePreset(std::string_view text, const std::string& displayName,
+                                  const std::optional<fs::path>& folder, Diagnostics& diagnostics,
+                                  OmittedKeys* omitted) {
+    return readPreset(text, displayName, "", false, folder, diagnostics, omitted);
+}
+
+std::optional<Preset> parseInlinePreset(std::string_view objectText, const std::string& displayName,
+                                        const std::string& where, const std::optional<fs::path>& folder,
+                                        Diagnostics& diagnostics, OmittedKeys* omitted) {
+    return readPreset(objectText, displayName, where, true, folder, diagnostics, omitted);
 }
 
 std::optional<LoadedPreset> loadPreset(const fs::path& file, Diagnostics& diagnostics) {
