@@ -165,6 +165,7 @@ ui::ScreenModel App::Impl::screenModel() {
     const std::string name = printable(doc.displayName(), true); // the file's name, shown in three places
     m.panelInfo = {&workspace.presetFiles(), workspace.currentPreset(), name, doc.dirty(),
                    doc.canUndo(), doc.canRedo(), false, options.saveByDownload};
+    m.panelInfo.exerciseFiles = &workspace.exerciseFiles();
     m.panel = &panel;
     m.plots = &plots;
     m.shaderEditor = &shaderEditor;

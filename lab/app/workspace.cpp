@@ -183,6 +183,9 @@ fs::path Workspace::bundledFolder() const {
 
 void Workspace::refreshPresetList() {
     presetFiles_.clear();
+    std::error_code missing;
+    exerciseFiles_ = fs::is_directory(bundledFolder() / "exercises", missing) ? listPresets(bundledFolder() / "exercises")
+                                                                             : std::vector<fs::path>{};
     std::vector<fs::path> folders;
     if (!doc_.file().empty()) {
         folders.push_back(doc_.folder());

@@ -94,6 +94,8 @@ public:
     ViewSettings view; // the per-term view and compare mode
 
     const std::vector<std::filesystem::path>& presetFiles() const { return presetFiles_; }
+    // The shipped exercises (the first preset folder's exercises/), for the panel's list.
+    const std::vector<std::filesystem::path>& exerciseFiles() const { return exerciseFiles_; }
     int currentPreset() const { return currentPreset_; } // index in presetFiles, -1 if none
 
     //--- commands -----------------------------------------------------------------------
@@ -181,6 +183,7 @@ private:
     MeshCache meshes_;
     std::array<Resolved, 2> resolved_; // A's and B's
     std::vector<std::filesystem::path> presetFiles_;
+    std::vector<std::filesystem::path> exerciseFiles_;
     int currentPreset_ = -1;
     std::optional<std::string> question_;
     std::function<void()> pending_;

@@ -119,6 +119,20 @@ void exerciseSection(const ExerciseView& e, std::vector<Request>& requests) {
                     "turn the camera freely (both follow).");
 }
 
+void exerciseList(const std::vector<std::filesystem::path>& files, std::vector<Request>& requests) {
+    ImGui::TextDisabled("Exercises: match a target");
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        std::string name = files[i].stem().string();
+        if (i > 0) {
+            sameLineIfFits(ImGui::CalcTextSize(name.c_str()).x + ImGui::GetStyle().FramePadding.x * 2.0f);
+        }
+        if (ImGui::SmallButton(name.c_str())) {
+            requests.push_back({Command::OpenPath, files[i].string()});
+        }
+        mark("exercises." + name);
+    }
+}
+
 // "Make exercise": title, instructions, hints, the open fields (ticked below), save.
 void draftSection(ExerciseDraftView& d, bool browser, std::string& path, std::vector<Request>& requests) {
     disabledWrapped("The scene when you pressed Make exercise is the target. Tick the fields students may change "

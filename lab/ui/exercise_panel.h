@@ -8,6 +8,7 @@
 #include "ui/actions.h"
 #include "ui/panel.h"
 
+#include <filesystem>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -24,6 +25,8 @@ bool field(const std::string& path);
 bool anyField(std::initializer_list<const char*> prefixes);
 
 void exerciseSection(const ExerciseView& exercise, std::vector<Request>& requests);
+// The shipped exercises, a button each ("exercises.<file stem>"): opens it like a file.
+void exerciseList(const std::vector<std::filesystem::path>& files, std::vector<Request>& requests);
 void draftSection(ExerciseDraftView& draft, bool browser, std::string& path, std::vector<Request>& requests);
 
 } // namespace lab::ui

@@ -121,6 +121,9 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
     }
     mark("presets.list");
     ImGui::TextDisabled("Left/Right: previous/next preset");
+    if (info.exerciseFiles && !info.exerciseFiles->empty()) {
+        exerciseList(*info.exerciseFiles, requests);
+    }
 }
 
 // A float slider over the range `r` allows (typed values too), clamped to what the validator accepts.

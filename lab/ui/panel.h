@@ -47,6 +47,7 @@ struct PanelInfo {
     bool canUndo = false, canRedo = false;
     bool compareStacked = false; // A above B rather than beside it
     bool browser = false;        // files by download and the page's picker, not by path
+    const std::vector<std::filesystem::path>* exerciseFiles = nullptr; // the shipped exercises
     const ExerciseView* exercise = nullptr; // an exercise is being solved
     ExerciseDraftView* draft = nullptr;     // an exercise is being made
 };
