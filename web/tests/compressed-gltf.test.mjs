@@ -17,6 +17,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
+import zlib from 'node:zlib';
 import { PNG } from 'pngjs';
 import { repo, startBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare } from './page.mjs';
 
@@ -78,8 +79,9 @@ async function openThroughPicker(page, name) {
 // The model file of the current scene, from the page's address (#p=<the preset, base64url>).
 async function sceneModel(page) {
   const hash = await page.evaluate(() => location.hash);
-  if (!hash.startsWith('#p=')) return hash;
-  return JSON.parse(Buffer.from(hash.substring(3), 'base64url').toString('utf8')).model?.gltf ?? '';
+  // '#z=': the scene as what differs from the defaults, zlib-deflated, base64url (core/share/share_link).
+  if (!hash.startsWith('#z=')) return hash;
+  return JSON.parse(zlib.inflateSync(Buffer.from(hash.substring(3), 'base64url')).toString('utf8')).model?.gltf ?? '';
 }
 
 

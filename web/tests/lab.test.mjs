@@ -233,7 +233,7 @@ test('the scene survives a reload', async () => {
   await press(page, '2'); // Gouraud shading
   await frames(page, 3);
   const link = await page.evaluate(() => location.hash);
-  assert.match(link, /^#p=/);
+  assert.match(link, /^#z=/);
   await page.goto(base); // no fragment: the state comes back from localStorage
   await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
   await frames(page, 3);
@@ -415,7 +415,7 @@ test('Copy link puts the scene\'s address on the clipboard, and the link opens t
   await settle(page);
   await page.waitForFunction(() => window.labCopiedLink !== undefined, null, { timeout: 10000 });
   const link = await page.evaluate(() => window.labCopiedLink);
-  assert.match(link ?? 'copy refused', /#preset=05-full-phong|#p=/);
+  assert.match(link ?? 'copy refused', /#preset=05-full-phong|#z=/);
   assert.match(await page.textContent('#notice'), /Link copied/);
   assert.equal(await page.evaluate(() => navigator.clipboard.readText()), link, 'the clipboard holds the link');
   const second = await openLab(link.substring(link.indexOf('#')));
