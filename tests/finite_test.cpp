@@ -170,8 +170,12 @@ TEST_P(Corners, EveryTermStaysFiniteOnTheCpu) {
         const float scale = std::max(1.0f, glm::length(glm::vec3(t.modelView[3])));
         std::vector<std::pair<glm::vec3, glm::vec3>> points; // (p, N) in eye space
         for (int k = 0; k < 3000; ++k) {
-            glm::vec3 p = glm::vec3(unit(random), unit(random), unit(random)) * scale;
-            glm::vec3 N = glm::normalize(glm::vec3(unit(random), unit(random), unit(random)) + glm::vec3(1e-3f));
+            // One by one, last first (as GCC evaluated the arguments): the points do not depend on
+            // the compiler's order of a call's arguments.
+            const float pz = unit(random), py = unit(random), px = unit(random);
+            const float nz = unit(random), ny = unit(random), nx = unit(random);
+            glm::vec3 p = glm::vec3(px, py, pz) * scale;
+            glm::vec3 N = glm::normalize(glm::vec3(nx, ny, nz) + glm::vec3(1e-3f));
             points.emplace_back(p, N);
         }
         for (int i = 0; i < in.lightCount; ++i) {

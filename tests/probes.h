@@ -74,7 +74,11 @@ inline Probes makeProbes(const Preset& preset, int size, std::mt19937& random, c
             float z = -eyeDepth();
             glm::vec2 ndc(2.0f * (px + 0.5f) / size - 1.0f, 2.0f * (py + 0.5f) / size - 1.0f);
             glm::vec3 eye(ndc.x * -z * tanHalf, ndc.y * -z * tanHalf, z);
-            glm::vec3 N = glm::normalize(glm::vec3(unit(random), unit(random), unit(random)) + 0.6f * glm::normalize(-eye));
+            // Drawn one by one: the order of a call's arguments is unspecified (GCC takes the last
+            // first, clang the first), and the probes must not depend on the compiler. Last first,
+            // as the tests' thresholds were set with GCC.
+            const float nz = unit(random), ny = unit(random), nx = unit(random);
+            glm::vec3 N = glm::normalize(glm::vec3(nx, ny, nz) + 0.6f * glm::normalize(-eye));
             glm::vec3 position = glm::vec3(toObject * glm::vec4(eye, 1.0f));
             glm::vec3 normal = normalToObject * N;
             probes.vertices.push_back({position, normal, position});
