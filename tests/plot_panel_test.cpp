@@ -4,6 +4,7 @@
 #include "cpu_imgui.h"
 #include "ui/layout.h"
 #include "ui/plots.h"
+#include "core/plots/energy.h"
 #include "ui/widget_map.h"
 
 #include <gtest/gtest.h>
@@ -34,10 +35,11 @@ bool sameDrawing(const Outcome& x, const Outcome& y) {
 }
 
 // A few frames of the plots window at r, as screen.cpp opens it; what the last one left.
-Outcome drawPlots(ui::Rect r, float displayW, float displayH, Preset& a, const Preset* b, ui::PlotSettings& settings) {
+Outcome drawPlots(ui::Rect r, float displayW, float displayH, Preset& a, const Preset* b, ui::PlotSettings& settings,
+                  int frames = 3) {
     ImGui::GetIO().DisplaySize = ImVec2(displayW, displayH);
     Outcome out;
-    for (int frame = 0; frame < 3; ++frame) {
+    for (int frame = 0; frame < frames; ++frame) {
         ui::widgets().clear();
         ImGui::NewFrame();
         ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
@@ -362,6 +364,99 @@ TEST(PlotPanel, RecentlyUsedReplacesTheOldestAndKeepsWhatWasHandedOut) {
     cache.get(4, make("four"));
     cache.get(5, make("five")); // 1 is long gone from the cache, but what was handed out stays valid
     EXPECT_EQ(*one, "one");
+}
+
+// Issue 28: the albedo and ρ(θi) lag while their inputs change frame after frame (a drag), and
+// are exact in the first frame after the change ends; meanwhile the cache is owed() a frame.
+TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
+    using Slot = ui::PlotCache::Slot;
+    ui::PlotCache cache;
+    Preset a;
+    a.brdf = BrdfModel::CookTorrance;
+    double now = 10.0;
+    auto frame = [&](float shininess) {
+        cache.beginFrame();
+        a.material.shininess = shininess;
+        a.cookTorrance.roughness = 0.1f + shininess / 1000.0f; // the BRDF in use changes too
+        return cache.laggingAlbedo(Slot::A, lobeInputs(a, 30.0f), now);
+    };
+    const ui::Lagged<std::optional<Albedo>> first = frame(10.0f);
+    EXPECT_FALSE(first.stale) << "nothing to show yet: computed at once";
+    EXPECT_FALSE(cache.owed());
+    // A drag: a new value every 1/60 s. The first frames show the first value and owe a frame.
+    int computedDuring = 0;
+    for (int i = 1; i <= 30; ++i) {
+        now += 1.0 / 60.0;
+        const ui::Lagged<std::optional<Albedo>> shown = frame(10.0f + float(i));
+        if (shown.stale) {
+            EXPECT_TRUE(cache.owed());
+        } else {
+            ++computedDuring;
+            EXPECT_EQ(shown.value->value().total(), lab::albedo(lobeInputs(a, 30.0f))->total());
+        }
+        if (i < 15) {
+            EXPECT_TRUE(shown.stale) << "frame " << i << " of the drag, " << i / 60.0 << " s after the last computation";
+            EXPECT_EQ(shown.value, first.value) << "the latest value computed is shown";
+        }
+    }
+    EXPECT_EQ(computedDuring, 2) << "at most every " << ui::PlotCache::kAlbedoLagSeconds << " s during the change";
+    // The change ends: the next frame has the same inputs and shows the exact value.
+    now += 1.0 / 60.0;
+    const ui::Lagged<std::optional<Albedo>> after = frame(40.0f);
+    EXPECT_FALSE(after.stale);
+    EXPECT_FALSE(cache.owed()) << "exact: no further frame is owed";
+    EXPECT_EQ(after.value->value().total(), lab::albedo(lobeInputs(a, 30.0f))->total());
+    // B's readout has its own slot: A's change does not keep it waiting.
+    const ui::Lagged<std::optional<Albedo>> b = cache.laggingAlbedo(Slot::B, lobeInputs(Preset{}, 30.0f), now);
+    EXPECT_FALSE(b.stale);
+
+    // ρ(θi) (90 albedos) is never computed during the change, only once it holds still.
+    ui::PlotCache curves;
+    auto curveFrame = [&](float shininess) {
+        curves.beginFrame();
+        a.material.shininess = shininess;
+        return curves.laggingAlbedoCurve(Slot::A, lobeInputs(a, 0.0f), now);
+    };
+    const auto firstCurve = curveFrame(10.0f);
+    EXPECT_FALSE(firstCurve.stale);
+    for (int i = 1; i <= 60; ++i) {
+        now += 1.0 / 60.0;
+        const auto shown = curveFrame(10.0f + float(i));
+        EXPECT_TRUE(shown.stale) << "frame " << i;
+        EXPECT_EQ(shown.value, firstCurve.value);
+        EXPECT_TRUE(curves.owed());
+    }
+    const auto exact = curveFrame(70.0f);
+    EXPECT_FALSE(exact.stale);
+    EXPECT_FALSE(curves.owed());
+    EXPECT_EQ(exact.value->size(), lab::albedoCurve(lobeInputs(a, 0.0f)).size());
+    EXPECT_EQ(exact.value->back().albedo.total(), lab::albedoCurve(lobeInputs(a, 0.0f)).back().albedo.total());
+}
+
+// The panel during a drag, one frame per change as the app draws it: the Plane and Energy views
+// owe a frame while their readouts lag, and the frame after the change ends draws exactly what
+// a cold cache draws.
+TEST(PlotPanel, AfterADragTheNextFrameDrawsWhatAColdCacheDraws) {
+    CpuImGui imgui(1.0f);
+    ui::Rect r{900, 0, 380, 800};
+    for (ui::PlotView view : {ui::PlotView::Plane, ui::PlotView::Energy}) {
+        Preset a;
+        ui::PlotSettings warm;
+        warm.view = view;
+        drawPlots(r, 1280, 800, a, nullptr, warm);
+        bool owed = false;
+        for (int i = 1; i <= 5; ++i) {
+            a.material.shininess = 20.0f + float(i);
+            drawPlots(r, 1280, 800, a, nullptr, warm, 1);
+            owed = owed || warm.cache.owed();
+        }
+        EXPECT_TRUE(owed) << "view " << int(view) << ": a drag's readouts lag, and ask for a frame";
+        Outcome next = drawPlots(r, 1280, 800, a, nullptr, warm, 1);
+        EXPECT_FALSE(warm.cache.owed()) << "view " << int(view);
+        ui::PlotSettings cold;
+        cold.view = view;
+        EXPECT_TRUE(sameDrawing(next, drawPlots(r, 1280, 800, a, nullptr, cold))) << "view " << int(view);
+    }
 }
 
 } // namespace

@@ -552,7 +552,9 @@ FrameOutput App::frame(const FrameInput& in) {
     // A toast is removed when its time is up; nothing else on screen changes by itself (a
     // reduced view is drawn at full size by the frame that ends the drag).
     m.interacting = events.gesture || events.dragging || orbiting;
-    float redrawIn = m.orbits.redrawIn(sweepDrawn || legendOwed || scoreOwed || (probeMoved && !orbiting) ? 0.0f : m.textGoesIn(),
+    // A plots readout that lagged behind a change this frame (ui/plot_cache.h) is exact in the next.
+    const bool plotsOwed = m.plots.cache.owed();
+    float redrawIn = m.orbits.redrawIn(sweepDrawn || legendOwed || scoreOwed || plotsOwed || (probeMoved && !orbiting) ? 0.0f : m.textGoesIn(),
                                        orbiting, in.deltaTime);
     if (m.options.layoutFile) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);

@@ -3,6 +3,8 @@
 
 #include "core/plots/plot_layout.h"
 
+#include <limits>
+
 namespace lab::ui {
 
 namespace {
@@ -43,6 +45,36 @@ PlotCache::Albedos PlotCache::albedo(const LobeInputs& inputs) {
 PlotCache::AlbedoCurve PlotCache::albedoCurve(LobeInputs inputs) {
     inputs.incidentDeg = 0.0f; // the curve covers every angle
     return albedoCurves_.get(inputs, [&] { return lab::albedoCurve(inputs); });
+}
+
+template <class Value, class Make>
+Lagged<Value> PlotCache::lagging(LagSlot<Value>& slot, RecentlyUsed<LobeInputs, Value>& kept, const LobeInputs& inputs,
+                                 double now, double interval, Make&& make) {
+    const bool still = slot.last && *slot.last == inputs; // unchanged since the slot's previous frame
+    slot.last = inputs;
+    if (std::shared_ptr<const Value> found = kept.find(inputs)) {
+        slot.shown = found;
+        return {found, false};
+    }
+    if (!slot.shown || still || now - slot.computedAt >= interval) {
+        slot.shown = kept.get(inputs, make);
+        slot.computedAt = now;
+        return {slot.shown, false};
+    }
+    owed_ = true;
+    return {slot.shown, true};
+}
+
+Lagged<std::optional<Albedo>> PlotCache::laggingAlbedo(Slot slot, const LobeInputs& inputs, double now) {
+    return lagging(albedoSlots_[static_cast<std::size_t>(slot)], albedo_, inputs, now, kAlbedoLagSeconds,
+                   [&] { return lab::albedo(inputs); });
+}
+
+Lagged<std::vector<AlbedoSample>> PlotCache::laggingAlbedoCurve(Slot slot, LobeInputs inputs, double now) {
+    inputs.incidentDeg = 0.0f; // the curve covers every angle
+    // ρ(θi) is 90 albedos: never during a change, only once it holds still.
+    return lagging(curveSlots_[static_cast<std::size_t>(slot)], albedoCurves_, inputs, now,
+                   std::numeric_limits<double>::infinity(), [&] { return lab::albedoCurve(inputs); });
 }
 
 PlotCache::Points PlotCache::lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,

@@ -17,7 +17,9 @@
 
 #include <glm/vec2.hpp>
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <memory>
 #include <vector>
 
@@ -64,6 +66,16 @@ public:
         }
         return value;
     }
+    // The value for `key` when it is kept, else null (nothing is made).
+    std::shared_ptr<const Value> find(const Key& key) {
+        for (Entry& e : entries_) {
+            if (e.key == key) {
+                e.used = ++clock_;
+                return e.value;
+            }
+        }
+        return nullptr;
+    }
     // How many values make() made: the look-ups that found nothing.
     std::size_t made() const { return made_; }
 
@@ -79,8 +91,29 @@ private:
     std::size_t made_ = 0;
 };
 
+// A readout that may lag: the value shown, and whether it is an earlier one than its inputs ask for.
+template <class Value> struct Lagged {
+    std::shared_ptr<const Value> value;
+    bool stale = false;
+};
+
 class PlotCache {
 public:
+    // The expensive readouts (the albedo, about 0.5 ms; ρ(θi), 90 albedos) lag while their inputs
+    // change frame after frame, as they do during a drag: the frame shows the latest value computed
+    // (stale), and the value is computed again once the inputs hold still for a frame — or, for the
+    // albedo at one angle, at most every kAlbedoLagSeconds during the change. A stale value makes
+    // the cache owed(): the app draws another frame, so the exact value is on screen within one
+    // frame of the end of the change, with no input to ask for it (the page has no threads: this is
+    // how it is done there too). Each readout has its own slot (A's, B's), so that A's changes do
+    // not keep B's waiting.
+    static constexpr double kAlbedoLagSeconds = 0.25;
+    enum class Slot { A, B };
+    // Clears owed(); plotsPanel calls it first each frame.
+    void beginFrame() { owed_ = false; }
+    // Some readout drawn since beginFrame() was stale: another frame is due.
+    bool owed() const { return owed_; }
+
     using Samples = std::shared_ptr<const std::vector<PlotSample>>;
     using Points = std::shared_ptr<const std::vector<glm::vec2>>;
 
@@ -97,6 +130,9 @@ public:
                 const CurvePlacement& at);
     // Att(d) for d in [0, maxDistance] (attenuationCurve, 200 samples), thinned.
     Points attenuation(const glm::vec3& coefficients, float maxDistance, const CurvePlacement& at);
+    // albedo() and albedoCurve() as readouts that lag during a change (above); `now` in seconds.
+    Lagged<std::optional<Albedo>> laggingAlbedo(Slot slot, const LobeInputs& inputs, double now);
+    Lagged<std::vector<AlbedoSample>> laggingAlbedoCurve(Slot slot, LobeInputs inputs, double now);
 
     // How many sample sets and curves were computed rather than found (for the tests).
     std::size_t computed() const { return samples_.made() + albedo_.made() + albedoCurves_.made() + lobes_.made() + attenuation_.made(); }
@@ -114,6 +150,16 @@ private:
         float maxDistance;
         CurvePlacement at;
     };
+    // What one readout showed last: its inputs in the latest frame and the value shown.
+    template <class Value> struct LagSlot {
+        std::optional<LobeInputs> last;
+        std::shared_ptr<const Value> shown;
+        double computedAt = 0.0;
+    };
+    template <class Value, class Make>
+    Lagged<Value> lagging(LagSlot<Value>& slot, RecentlyUsed<LobeInputs, Value>& kept, const LobeInputs& inputs,
+                          double now, double interval, Make&& make);
+
     friend bool operator==(const LobeKey& x, const LobeKey& y);
     friend bool operator==(const AttenuationKey& x, const AttenuationKey& y);
 
@@ -124,6 +170,9 @@ private:
     RecentlyUsed<LobeInputs, std::vector<AlbedoSample>> albedoCurves_{4}; // A and B, against θi
     RecentlyUsed<LobeKey, std::vector<glm::vec2>> lobes_{32};
     RecentlyUsed<AttenuationKey, std::vector<glm::vec2>> attenuation_{4};
+    std::array<LagSlot<std::optional<Albedo>>, 2> albedoSlots_;
+    std::array<LagSlot<std::vector<AlbedoSample>>, 2> curveSlots_;
+    bool owed_ = false;
 };
 
 } // namespace lab::ui

@@ -32,6 +32,7 @@ const ViewEntry kViews[] = {
 } // namespace
 
 void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe, const ProbeLobe* point) {
+    s.cache.beginFrame();
     // The selector's row as low as the text allows (a row less for the views below it): thinner
     // tabs, the views' own widgets at the usual padding.
     const ImVec2 padding = ImGui::GetStyle().FramePadding;

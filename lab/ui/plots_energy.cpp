@@ -33,7 +33,7 @@ void dashedLine(PlotCanvas& canvas, float x0, float x1, float y, Ink ink, float 
 // The readout: a legend, the numbers at the marker and what 1 means; `brief`, only the numbers
 // (a low region keeps its room for the curves).
 // `a` and `b` are the albedos at `incident` itself (none at 90°, where no light arrives).
-Readout readout(const std::optional<Albedo>& a, const std::optional<Albedo>* b, float incident, bool brief,
+Readout readout(const std::optional<Albedo>& a, const std::optional<Albedo>* b, float incident, bool brief, bool stale,
                 const Pens& p) {
     Readout r;
     if (!brief) {
@@ -46,12 +46,14 @@ Readout readout(const std::optional<Albedo>& a, const std::optional<Albedo>* b, 
         r.lineBreak();
     }
     r.add(format("at %s:", degrees(std::fabs(incident)).c_str()), Ink::Light);
+    // While they lag behind a change, the numbers are in the muted ink (the same text: nothing moves).
+    auto in = [&](Ink ink) { return stale ? Ink::Muted : ink; };
     if (a) {
-        r.add(format("%.3f", double(albedoOf(*a, PlotComponent::Diffuse))), Ink::Diffuse);
-        r.add(format("+ %.3f", double(albedoOf(*a, PlotComponent::Specular))), Ink::Specular);
-        r.add(format("= %.3f", double(albedoOf(*a, PlotComponent::Total))), Ink::Total);
+        r.add(format("%.3f", double(albedoOf(*a, PlotComponent::Diffuse))), in(Ink::Diffuse));
+        r.add(format("+ %.3f", double(albedoOf(*a, PlotComponent::Specular))), in(Ink::Specular));
+        r.add(format("= %.3f", double(albedoOf(*a, PlotComponent::Total))), in(Ink::Total));
         if (b && *b) {
-            r.add(format("B %.3f", double(albedoOf(**b, PlotComponent::Total))), Ink::Compare);
+            r.add(format("B %.3f", double(albedoOf(**b, PlotComponent::Total))), in(Ink::Compare));
         }
     } else {
         r.add("no light arrives", Ink::Text);
@@ -66,7 +68,8 @@ Readout readout(const std::optional<Albedo>& a, const std::optional<Albedo>* b, 
 }
 
 // The curves against θi and, on each, a dot at the preset's incident angle (atA, atB: the albedos
-// there, computed at that angle, not read off the curve's whole degrees).
+// there, computed at that angle, not read off the curve's whole degrees; none while the curves lag
+// behind a change, so that no dot sits off its curve).
 void energyCanvas(const Canvas& c, const std::vector<AlbedoSample>& a, const std::vector<AlbedoSample>* b,
                   const std::optional<Albedo>& atA, const std::optional<Albedo>* atB, Preset& preset) {
     float largest = 1.0f;
@@ -137,18 +140,24 @@ void energyCanvas(const Canvas& c, const std::vector<AlbedoSample>& a, const std
 
 void energyPanel(Preset& a, const Preset* b, PlotSettings& s) {
     const Pens p = pens();
-    const PlotCache::AlbedoCurve curveA = s.cache.albedoCurve(lobeInputs(a, 0.0f));
-    const PlotCache::AlbedoCurve curveB = b ? s.cache.albedoCurve(lobeInputs(*b, 0.0f)) : nullptr;
+    // The curves and the numbers lag while the material changes frame after frame (PlotCache).
+    const double now = ImGui::GetTime();
+    using Slot = PlotCache::Slot;
+    const Lagged<std::vector<AlbedoSample>> curveA = s.cache.laggingAlbedoCurve(Slot::A, lobeInputs(a, 0.0f), now);
+    const Lagged<std::vector<AlbedoSample>> curveB = b ? s.cache.laggingAlbedoCurve(Slot::B, lobeInputs(*b, 0.0f), now)
+                                                       : Lagged<std::vector<AlbedoSample>>{};
     // The numbers and the dots at the incident angle itself (the plane plots' readout has the same).
-    const PlotCache::Albedos atA = s.cache.albedo(lobeInputs(a, a.plotIncidentDeg));
-    const PlotCache::Albedos atB = b ? s.cache.albedo(lobeInputs(*b, a.plotIncidentDeg)) : nullptr;
+    const Lagged<std::optional<Albedo>> atA = s.cache.laggingAlbedo(Slot::A, lobeInputs(a, a.plotIncidentDeg), now);
+    const Lagged<std::optional<Albedo>> atB = b ? s.cache.laggingAlbedo(Slot::B, lobeInputs(*b, a.plotIncidentDeg), now)
+                                                : Lagged<std::optional<Albedo>>{};
+    const bool stale = curveA.stale || curveB.stale || atA.stale || atB.stale;
     const ImVec2 room = ImGui::GetContentRegionAvail();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     // The full readout where it leaves the curves at least 8 lines, else the numbers only; the
     // strip never takes the last 5 lines (what does not fit is clipped, never scrolled to).
-    Readout r = readout(*atA, atB.get(), a.plotIncidentDeg, false, p);
+    Readout r = readout(*atA.value, atB.value.get(), a.plotIncidentDeg, false, stale, p);
     if (room.y - r.height(p, room.x) < 8.0f * p.line) {
-        r = readout(*atA, atB.get(), a.plotIncidentDeg, true, p);
+        r = readout(*atA.value, atB.value.get(), a.plotIncidentDeg, true, stale, p);
     }
     const float stripH = std::clamp(std::min(r.height(p, room.x), room.y - 5.0f * p.line - p.gap), 1.0f, std::max(room.y, 1.0f));
     ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -164,7 +173,10 @@ void energyPanel(Preset& a, const Preset* b, PlotSettings& s) {
     ImGui::SetCursorScreenPos(ImVec2(origin.x, origin.y + stripH + p.gap));
     const Canvas canvas = beginCanvas("energy", "plot.energy", room.x, canvasH);
     if (canvas.shown()) {
-        energyCanvas(canvas, *curveA, curveB.get(), *atA, atB.get(), a);
+        const std::optional<Albedo> none;
+        const bool dots = !stale;
+        energyCanvas(canvas, *curveA.value, curveB.value.get(), dots ? *atA.value : none,
+                     dots && atB.value ? atB.value.get() : nullptr, a);
     }
 }
 

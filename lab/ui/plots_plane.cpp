@@ -84,17 +84,21 @@ float largestTotal(std::initializer_list<const std::vector<PlotSample>*> sets) {
 // reflected over the incident flux, a Lambertian Kd = 1 reflecting 1), as luminance: "diffuse +
 // specular = total" in the curves' colours, and B's total. Short tokens without labels, so that a
 // narrow column keeps room for the lobe.
-void albedoTokens(Readout& r, const std::optional<Albedo>& a, const std::optional<Albedo>* b, float incident) {
+// While the albedo lags behind a change (PlotCache), the numbers shown are the latest computed, in
+// the muted ink (the same text: nothing moves while a drag goes on).
+void albedoTokens(Readout& r, const Lagged<std::optional<Albedo>>& a, const Lagged<std::optional<Albedo>>* b, float incident) {
     r.add(format("albedo at %s:", degrees(std::fabs(incident)).c_str()), Ink::Text);
-    if (!a) {
+    const std::optional<Albedo>& at = *a.value;
+    if (!at) {
         r.add("none (no light arrives)", Ink::Text);
         return;
     }
-    r.add(format("%.3f", double(luminance(a->diffuse))), Ink::Diffuse);
-    r.add(format("+ %.3f", double(luminance(a->specular))), Ink::Specular);
-    r.add(format("= %.3f", double(luminance(a->total()))), Ink::Total);
-    if (b && *b) {
-        r.add(format("B %.3f", double(luminance((*b)->total()))), Ink::Compare);
+    auto in = [&](Ink ink) { return a.stale ? Ink::Muted : ink; };
+    r.add(format("%.3f", double(luminance(at->diffuse))), in(Ink::Diffuse));
+    r.add(format("+ %.3f", double(luminance(at->specular))), in(Ink::Specular));
+    r.add(format("= %.3f", double(luminance(at->total()))), in(Ink::Total));
+    if (b && *b->value) {
+        r.add(format("B %.3f", double(luminance((*b->value)->total()))), b->stale ? Ink::Muted : Ink::Compare);
     }
 }
 
@@ -128,7 +132,11 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p,
     l.readout.lineBreak();
     scaleTokens(l.readout, l.outer, l.largest, s.lockScale, b ? "max total of A and B" : "max total");
     l.readout.lineBreak();
-    albedoTokens(l.readout, *s.cache.albedo(l.inA), b ? s.cache.albedo(l.inB).get() : nullptr, l.incident);
+    const double now = ImGui::GetTime();
+    const Lagged<std::optional<Albedo>> albedoA = s.cache.laggingAlbedo(PlotCache::Slot::A, l.inA, now);
+    const Lagged<std::optional<Albedo>> albedoB = b ? s.cache.laggingAlbedo(PlotCache::Slot::B, l.inB, now)
+                                                    : Lagged<std::optional<Albedo>>{};
+    albedoTokens(l.readout, albedoA, b ? &albedoB : nullptr, l.incident);
     l.readout.measure(p);
     return l;
 }

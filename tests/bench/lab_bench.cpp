@@ -305,6 +305,7 @@ void Plots(benchmark::State& state) {
     Preset b = a;
     b.brdf = BrdfModel::BlinnPhong;
     ui::PlotSettings settings;
+    settings.view = static_cast<ui::PlotView>(state.range(2));
     bool compare = state.range(0) != 0, editing = state.range(1) != 0;
     int frame = 0;
     for (auto _ : state) {
@@ -457,10 +458,15 @@ void registerAll() {
         }
     }
     benchmark::RegisterBenchmark("GuiFrame", GuiFrame)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
-    benchmark::RegisterBenchmark("Plots/single", Plots)->Args({0, 0})->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark("Plots/compare", Plots)->Args({1, 0})->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark("Plots/single-editing", Plots)->Args({0, 1})->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark("Plots/compare-editing", Plots)->Args({1, 1})->Unit(benchmark::kMicrosecond);
+    const char* views[] = {"", "lobe3d-", "energy-"}; // ui::PlotView's order: Plane, 3D lobe, Energy
+    for (int v = 0; v < 3; ++v) {
+        for (int edit = 0; edit < 2; ++edit) {
+            for (int compare = 0; compare < 2; ++compare) {
+                std::string name = std::string("Plots/") + views[v] + (compare ? "compare" : "single") + (edit ? "-editing" : "");
+                benchmark::RegisterBenchmark(name.c_str(), Plots)->Args({compare, edit, v})->Unit(benchmark::kMicrosecond);
+            }
+        }
+    }
     benchmark::RegisterBenchmark("Process", Process)->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(kProcessPairs);
 }
 
