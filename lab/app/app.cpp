@@ -543,7 +543,9 @@ FrameOutput App::frame(const FrameInput& in) {
     if (std::exchange(m.screenshotRequested, false)) {
         m.screenshot(layout, in);
     }
-    float scale = m.resolution.update(events.dragging, in.lastFrameSeconds, m.options.frameBudgetSeconds);
+    // A moving light is drawn within the same frame budget as a drag (reduced resolution where a
+    // frame would take longer), and at full resolution by the frame in which it stops.
+    float scale = m.resolution.update(events.dragging || orbiting, in.lastFrameSeconds, m.options.frameBudgetSeconds);
     m.viewportDrawn = m.updateViewports(layout, in, scale);
     bool legendOwed = m.updateReadout(in, model.overlay.legend);
     bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);

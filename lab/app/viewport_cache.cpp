@@ -42,8 +42,8 @@ void CachedViewport::reset() {
     target_.reset();
 }
 
-float ViewportResolution::update(bool dragging, float lastFrameSeconds, float budgetSeconds) {
-    if (!dragging || budgetSeconds <= 0.0f) {
+float ViewportResolution::update(bool moving, float lastFrameSeconds, float budgetSeconds) {
+    if (!moving || budgetSeconds <= 0.0f) {
         scale_ = 1.0f;
     } else if (lastFrameSeconds > budgetSeconds) {
         // The shading cost goes with the pixels, the square of the scale; the UI's share does

@@ -48,14 +48,14 @@ private:
     std::unique_ptr<ViewportTarget> target_;
 };
 
-// The fraction of the view's width and height that is drawn: 1 unless the user is dragging
-// and the frames are over budget, then lowered (at most halving the pixels a frame, never below
-// a quarter of the width) until a frame fits, raised again when there is room, and back to 1 on
-// the first frame after the drag.
+// The fraction of the view's width and height that is drawn: 1 unless the view is moving (the user
+// drags, or a light moves by itself) and the frames are over budget, then lowered (at most halving
+// the pixels a frame, never below a quarter of the width) until a frame fits, raised again when
+// there is room, and back to 1 on the first frame after the motion.
 class ViewportResolution {
 public:
     static constexpr float kLowest = 0.25f;
-    float update(bool dragging, float lastFrameSeconds, float budgetSeconds);
+    float update(bool moving, float lastFrameSeconds, float budgetSeconds);
     float scale() const { return scale_; }
 
 private:

@@ -378,8 +378,8 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
         ->check(SizeValidator());
     app.add_option("--screenshot-dir", screenshotFolder, "Folder for screenshots (F12)")->capture_default_str();
     app.add_option("--frame-budget", line.frameBudgetMs,
-                   "While dragging, draw the 3D view at a lower resolution when a frame takes longer than this "
-                   "many milliseconds (0: always full resolution)")
+                   "While dragging or while a light moves, draw the 3D view at a lower resolution when a frame takes "
+                   "longer than this many milliseconds (0: always full resolution)")
         ->check(kFinite)
         ->check(CLI::Range(0.0f, 1000.0f))
         ->capture_default_str();

@@ -1,10 +1,14 @@
 // gui_bench.cpp — the interactive lab as a user on a machine without a GPU feels it: the real
 // program in a real window (run it under Xvfb: `tools/dev bench` does), real X input, Mesa's
-// llvmpipe. Three rows of the README's Performance table:
+// llvmpipe. Five rows of the README's Performance table:
 //   idle      the lab's CPU share over 5 s with no input (target: at most 2% of a core);
 //   orbit     the time per frame while orbiting at 1280x800, with the 50 ms frame budget (the
 //             view drawn smaller while dragging) against --frame-budget 0 (always full size);
 //             target: at most 60 ms;
+//   light     the time per frame while a light orbits by itself (preset 25) at 1280x800, with the
+//             50 ms budget against --frame-budget 0; target: at most 50 ms;
+//   slider    the time per frame while the shininess slider is dragged back and forth (the whole
+//             GUI frame: model, plots, readouts); target: at most 50 ms;
 //   key       from a key press (flat shading, and back) to the screen showing its effect: the
 //             median of 10, polling the screen through the X server.
 //
@@ -76,6 +80,50 @@ double orbitMs(const std::string& budget) {
     return frames ? 1000.0 * elapsed / static_cast<double>(frames) : -1;
 }
 
+// Milliseconds per frame during 4 s of a light orbiting by itself (preset 25), no input: the
+// orbit asks for a frame every 1/60 s, so this is the frame's cost where it is longer than that.
+double lightOrbitMs(const std::string& budget) {
+    Lab lab({"--size", "1280x800", "--preset", preset("25-moving-light"), "--frame-budget", budget});
+    if (!lab.ready()) {
+        return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(500)); // past the first full-size frames
+    unsigned long long first = lab.frame();
+    auto start = Clock::now();
+    std::this_thread::sleep_for(std::chrono::seconds(4));
+    double elapsed = seconds(Clock::now() - start);
+    unsigned long long frames = lab.frame() - first;
+    return frames ? 1000.0 * elapsed / static_cast<double>(frames) : -1;
+}
+
+// Milliseconds per frame during 4 s of dragging the shininess slider back and forth (the whole
+// GUI frame: the model drawn again, the plots, the readouts), with the 50 ms budget.
+double sliderDragMs() {
+    Lab lab(kArgs);
+    if (!lab.ready()) {
+        return -1;
+    }
+    Rect slider = lab.widget("material.shininess");
+    if (slider.w <= 0) {
+        return -1;
+    }
+    int sx = slider.x + slider.w / 2, sy = slider.cy();
+    lab.moveTo(sx, sy);
+    lab.x().toScreen(lab.window(), sx, sy);
+    lab.x().button(1, true);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    unsigned long long first = lab.frame();
+    auto start = Clock::now();
+    for (int i = 0; seconds(Clock::now() - start) < 4.0; ++i) {
+        lab.x().moveMouse(sx + static_cast<int>(0.4 * slider.w * std::sin(i * 0.05)), sy);
+        std::this_thread::sleep_for(std::chrono::milliseconds(4));
+    }
+    double elapsed = seconds(Clock::now() - start);
+    unsigned long long frames = lab.frame() - first;
+    lab.x().button(1, false);
+    return frames ? 1000.0 * elapsed / static_cast<double>(frames) : -1;
+}
+
 double keyToScreenMs() {
     Lab lab(kArgs);
     if (!lab.ready()) {
@@ -109,11 +157,19 @@ int main() {
     using namespace lab::test;
     double idle = idleShare();
     double orbitBudget = orbitMs("50"), orbitFull = orbitMs("0");
+    double lightBudget = lightOrbitMs("50"), lightFull = lightOrbitMs("0");
+    double slider = sliderDragMs();
     double key = keyToScreenMs();
+    auto met = [](double ms, double target) { return ms >= 0 && ms <= target ? "met" : "MISSED"; };
     std::printf("\n| row | lab | baseline | target |\n|---|---|---|---|\n");
-    std::printf("| idle CPU over 5 s, no input, 1280×800 | %.1f%% of a core | | ≤ 2%% |\n", 100.0 * idle);
-    std::printf("| a frame while orbiting at 1280×800 (50 ms budget) against full resolution | %.0f ms | %.0f ms | ≤ 60 ms |\n",
-                orbitBudget, orbitFull);
+    std::printf("| idle CPU over 5 s, no input, 1280×800 | %.1f%% of a core | | ≤ 2%% %s |\n", 100.0 * idle,
+                idle >= 0 && idle <= 0.02 ? "met" : "MISSED");
+    std::printf("| a frame while orbiting at 1280×800 (50 ms budget) against full resolution | %.0f ms | %.0f ms | ≤ 60 ms %s |\n",
+                orbitBudget, orbitFull, met(orbitBudget, 60));
+    std::printf("| a frame while a light orbits at 1280×800 (50 ms budget) against full resolution | %.0f ms | %.0f ms | ≤ 50 ms %s |\n",
+                lightBudget, lightFull, met(lightBudget, 50));
+    std::printf("| the whole GUI frame while dragging the shininess slider at 1280×800 | %.0f ms | | ≤ 50 ms %s |\n", slider,
+                met(slider, 50));
     std::printf("| key press to the screen showing it (median of 10) | %.0f ms | | |\n", key);
-    return idle < 0 || orbitBudget < 0 || orbitFull < 0 ? 1 : 0;
+    return idle < 0 || orbitBudget < 0 || orbitFull < 0 || lightBudget < 0 || lightFull < 0 || slider < 0 ? 1 : 0;
 }
