@@ -7,8 +7,8 @@
 //   1. Frame (lab_ms vs bare_ms): the renderer's frame (256x128-segment sphere, 4 point lights,
 //      1280x720, headless) against drawing the same vertex buffer with the same shader and
 //      uniforms and nothing else, for each shading mode and BRDF;
-//   2. GuiFrame (gui_ms vs model_ms): a whole App frame (panel, plots, model) offscreen against the model
-//      drawn alone at the view's size;
+//   2. GuiFrame (gui_ms vs model_ms): a whole App frame (panel, plots, the model drawn again: its
+//      light orbits) offscreen against the model drawn alone at the view's size;
 //   3. Plots: the CPU cost of one frame of the plots panel (samples, geometry, ImGui draw lists),
 //      alone and with a compare set, unchanged from the frame before (as while the mouse moves
 //      or nothing happens) and with the shininess changing every frame (as during a slider drag:
@@ -232,19 +232,25 @@ void Frame(benchmark::State& state) {
 // 2. A whole GUI frame against the model alone
 //----------------------------------------------------------------------------------------
 
+// The scene of comparison 2: comparison 1's, its first light orbiting, so that every frame draws
+// the model again (an unchanged view is not drawn again: its copy is put on screen).
 fs::path benchPresetFile(const TempFolder& dir) {
     fs::path file = dir.path() / "bench.json";
     Diagnostics d;
-    savePreset(benchPreset(Shading::Phong, BrdfModel::Phong), file, d);
+    Preset p = benchPreset(Shading::Phong, BrdfModel::Phong);
+    p.lights[0].orbit.on = true;
+    savePreset(p, file, d);
     return file;
 }
 
-// A whole App frame (panel, plots, model) and, alternately, the model alone drawn at the size
-// the view has in that frame (counters gui_ms and model_ms).
+// A whole App frame (panel, plots, model drawn again at full resolution) and, alternately, the
+// model alone drawn at the size the view has in that frame (counters gui_ms and model_ms): the
+// difference is what the UI costs on top of the model.
 void GuiFrame(benchmark::State& state) {
     context();
     TempFolder dir;
     AppOptions options;
+    options.frameBudgetSeconds = 0.0f; // always full resolution, as the model alone is drawn
     options.preset = benchPresetFile(dir);
     options.presetFolders = {fs::path(LAB_SOURCE_DIR) / "presets"};
     App app(options);
@@ -521,7 +527,7 @@ void table(const std::map<std::string, double>& ms) {
     double gui = counter("GuiFrame", "#gui_ms"), model = counter("GuiFrame", "#model_ms");
     if (gui > 0 && model > 0) {
         double share = (gui - model) / gui;
-        std::printf("%-44s %10.3f ms %9.3f ms %7.1f%% %10s %s\n", "2. UI share of a 1280x720 GUI frame", gui, model, share * 100,
+        std::printf("%-44s %10.3f ms %9.3f ms %7.1f%% %10s %s\n", "2. UI share of a 1280x720 frame (model drawn)", gui, model, share * 100,
                     "<= 15%", share <= 0.15 ? "met" : "MISSED");
     }
     for (const char* p : {"Plots/single/", "Plots/compare/"}) {
