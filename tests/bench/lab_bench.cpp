@@ -7,6 +7,8 @@
 //   1. Frame (lab_ms vs bare_ms): the renderer's frame (256x128-segment sphere, 4 point lights,
 //      1280x720, headless) against drawing the same vertex buffer with the same shader and
 //      uniforms and nothing else, for each shading mode and BRDF;
+//   1b. View (view_ms vs lit_ms): a factor view (its automatic range included) and the wipe against
+//      the lit view, drawn as the GUI draws a viewport (drawView);
 //   2. GuiFrame (gui_ms vs model_ms): a whole App frame (panel, plots, the model drawn again: its
 //      light orbits) offscreen against the model drawn alone at the view's size;
 //   3. Plots: the CPU cost of one frame of the plots panel (samples, geometry, ImGui draw lists),
@@ -226,6 +228,51 @@ void Frame(benchmark::State& state) {
     }
     state.counters["lab_ms"] = lab / double(state.iterations());
     state.counters["bare_ms"] = base / double(state.iterations());
+}
+
+//----------------------------------------------------------------------------------------
+// 1b. A factor view and the wipe against the lit view
+//----------------------------------------------------------------------------------------
+
+// drawView() as the GUI calls it, for the lit view and, alternately, a factor view (its automatic
+// range found as the GUI finds it: one extra draw at 256 px, read back) or the wipe (the lit
+// model left of the middle, the factor view right of it): counters view_ms and lit_ms. The
+// scene is comparison 1's with Cook-Torrance and Phong shading; the view is range(0)'s ViewMode,
+// wiped when range(1) is 1.
+void View(benchmark::State& state) {
+    context();
+    Preset preset = benchPreset(Shading::Phong, BrdfModel::CookTorrance);
+    Renderer renderer;
+    Diagnostics d;
+    renderer.init(d);
+    auto mesh = std::make_shared<const Mesh>(makeBuiltin(preset.model.builtin, preset.model.subdivisions));
+    Framebuffer target(kWidth, kHeight);
+    target.bind();
+    const Viewport viewport{0, 0, kWidth, kHeight};
+    ViewDraw lit;
+    ViewDraw view;
+    view.options.view = static_cast<ViewMode>(state.range(0));
+    view.automatic = true;
+    if (state.range(1) != 0) {
+        view.wipe = true;
+        view.options.fromX = 0.5f;
+    }
+    drawView(renderer, preset, mesh, viewport, lit); // warm up: the programs, the mesh's upload
+    drawView(renderer, preset, mesh, viewport, view);
+    glFinish();
+    double viewMs = 0, litMs = 0;
+    for (auto _ : state) {
+        Clock::time_point t0 = Clock::now();
+        drawView(renderer, preset, mesh, viewport, view);
+        glFinish();
+        viewMs += msSince(t0);
+        Clock::time_point t1 = Clock::now();
+        drawView(renderer, preset, mesh, viewport, lit);
+        glFinish();
+        litMs += msSince(t1);
+    }
+    state.counters["view_ms"] = viewMs / double(state.iterations());
+    state.counters["lit_ms"] = litMs / double(state.iterations());
 }
 
 //----------------------------------------------------------------------------------------
@@ -463,6 +510,16 @@ void registerAll() {
             benchmark::RegisterBenchmark(name.c_str(), Frame)->Args({s, b})->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
         }
     }
+    // 1b: a factor view of each kind (a dot product, D, the Gouraud error: the views' costliest)
+    // and the wipe.
+    const std::pair<const char*, ViewMode> factorViews[] = {
+        {"NdotL", ViewMode::NdotL}, {"D", ViewMode::D}, {"GouraudError", ViewMode::GouraudError}};
+    for (const auto& [name, mode] : factorViews) {
+        benchmark::RegisterBenchmark((std::string("View/") + name).c_str(), View)
+            ->Args({static_cast<int>(mode), 0})->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+    }
+    benchmark::RegisterBenchmark("View/wipe-D", View)
+        ->Args({static_cast<int>(ViewMode::D), 1})->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
     benchmark::RegisterBenchmark("GuiFrame", GuiFrame)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
     const char* views[] = {"", "lobe3d-", "energy-"}; // ui::PlotView's order: Plane, 3D lobe, Energy
     for (int v = 0; v < 3; ++v) {
@@ -523,6 +580,18 @@ void table(const std::map<std::string, double>& ms) {
                 row("1. frame " + std::string(s) + ", " + b, lab, bare, lab / bare, "<= 1.10", lab / bare <= 1.10);
             }
         }
+    }
+    for (const char* v : {"NdotL", "D", "GouraudError"}) {
+        std::string name = std::string("View/") + v + "/";
+        double view = counter(name, "#view_ms"), lit = counter(name, "#lit_ms");
+        if (view > 0 && lit > 0) {
+            row("1b. view " + std::string(v) + " (auto range) vs lit", view, lit, view / lit, "<= 1.10", view / lit <= 1.10);
+        }
+    }
+    double wipe = counter("View/wipe-D/", "#view_ms"), wipeLit = counter("View/wipe-D/", "#lit_ms");
+    if (wipe > 0 && wipeLit > 0) {
+        // One extra draw: the lit half and the view's half, each a draw of the whole mesh.
+        row("1b. wipe, lit | D (auto range) vs lit", wipe, wipeLit, wipe / wipeLit, "<= 2.00", wipe / wipeLit <= 2.0);
     }
     double gui = counter("GuiFrame", "#gui_ms"), model = counter("GuiFrame", "#model_ms");
     if (gui > 0 && model > 0) {
