@@ -83,6 +83,27 @@ TEST_F(ViewCacheTest, ADragOnASlowMachineIsDrawnSmallerAndTheFrameAfterItIsFullA
     EXPECT_TRUE(afterDrag.rgb == redrawn.rgb) << "the frame after the drag must be the full-resolution frame, pixel for pixel";
 }
 
+// Issue 28: a light that moves by itself uses the same frame budget as a drag.
+TEST_F(ViewCacheTest, AMovingLightOnASlowMachineIsDrawnSmallerAndFullOnceItStops) {
+    FrameInput open;
+    open.droppedFiles = {(fs::path(LAB_SOURCE_DIR) / "presets" / "25-moving-light.json").string()};
+    lab_.frame(open);
+    float lowest = 1.0f;
+    for (int i = 0; i < 8; ++i) {
+        FrameOutput out = frame({}, 0.3f);
+        EXPECT_TRUE(out.viewportDrawn) << "the light moves every frame";
+        lowest = std::min(lowest, out.viewportScale);
+    }
+    EXPECT_LT(lowest, 0.6f) << "slow frames while a light moves lower the view's resolution";
+    FrameInput still;
+    still.droppedFiles = {(fs::path(LAB_SOURCE_DIR) / "presets" / "05-full-phong.json").string()};
+    still.lastFrameSeconds = 0.3f;
+    FrameOutput stopped = lab_.frame(still);
+    EXPECT_TRUE(stopped.viewportDrawn);
+    EXPECT_EQ(stopped.viewportScale, 1.0f) << "the frame of a scene whose lights stand still is full resolution";
+    EXPECT_EQ(frame({}, 0.01f).viewportScale, 1.0f);
+}
+
 TEST_F(ViewCacheTest, FastFramesKeepFullResolutionWhileDragging) {
     float cx = view_.x + view_.w / 2, cy = view_.y + view_.h / 2;
     frame({InputEvent::move(cx, cy)});

@@ -19,7 +19,6 @@ import { withBrowser, newLabPage, settle, frames, widgets } from './page.mjs';
 
 const env = withBrowser();
 const PRESET = '13-cook-torrance-beckmann-schlick';
-const WHEEL_TODO = 'Emscripten 3.1.6 GLFW passes the raw deltaY: the wheel is reversed and 100x (emscripten#8281)';
 const containers = new Set(['window', 'view', 'view.area', 'view.a', 'view.b', 'panel', 'plots', 'plots.area', 'tabs']);
 
 // A point of the panel on no widget (not on the scrollbar, at most 24 px at its right edge), at
@@ -50,7 +49,7 @@ async function modelPixels(page) {
   return n;
 }
 
-test('laptop: one notch of the mouse wheel down scrolls the panel a little down, and zooms the model a little out', { todo: WHEEL_TODO }, async () => {
+test('laptop: one notch of the mouse wheel down scrolls the panel a little down, and zooms the model a little out', async () => {
   const { page, context, problems } = await newLabPage(env.browser, `${env.base}#preset=${PRESET}`, { width: 1280, height: 720 });
   let rects = await widgets(page);
   const before = rects['material.diffuse'];
