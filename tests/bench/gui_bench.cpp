@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 namespace lab::test {
 namespace {
@@ -52,8 +53,36 @@ double idleShare() {
     return (cpuSeconds(lab.pid()) - before) / 5.0;
 }
 
-// Milliseconds per frame during a 4 s orbit: the mouse moves on a circle every 4 ms, so input is
-// always queued and the lab draws frame after frame.
+// Milliseconds per frame over 4 s while `step(i)` is called every 4 ms (so that input, when it
+// gives any, is always queued and the lab draws frame after frame), after 300 ms of warming up.
+template <class Step> double msPerFrame(Lab& lab, Step&& step) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300)); // past the first full-size frames
+    unsigned long long first = lab.frame();
+    auto start = Clock::now();
+    for (int i = 0; seconds(Clock::now() - start) < 4.0; ++i) {
+        step(i);
+        std::this_thread::sleep_for(std::chrono::milliseconds(4));
+    }
+    double elapsed = seconds(Clock::now() - start);
+    unsigned long long frames = lab.frame() - first;
+    return frames ? 1000.0 * elapsed / static_cast<double>(frames) : -1;
+}
+
+// Milliseconds per frame while the left button drags from the view's or a widget's centre
+// (sx, sy in window pixels) along `path(i)` (offsets in pixels).
+template <class Path> double dragMs(Lab& lab, int sx, int sy, Path&& path) {
+    lab.moveTo(sx, sy);
+    lab.x().toScreen(lab.window(), sx, sy);
+    lab.x().button(1, true);
+    double ms = msPerFrame(lab, [&](int i) {
+        const auto [dx, dy] = path(i);
+        lab.x().moveMouse(sx + dx, sy + dy);
+    });
+    lab.x().button(1, false);
+    return ms;
+}
+
+// A 4 s orbit: the mouse moves on a circle.
 double orbitMs(const std::string& budget) {
     std::vector<std::string> args = kArgs;
     args.insert(args.end(), {"--frame-budget", budget});
@@ -62,42 +91,23 @@ double orbitMs(const std::string& budget) {
         return -1;
     }
     Rect view = lab.widget("view");
-    lab.moveTo(view.cx(), view.cy());
-    int sx = view.cx(), sy = view.cy();
-    lab.x().toScreen(lab.window(), sx, sy);
-    lab.x().button(1, true);
-    std::this_thread::sleep_for(std::chrono::milliseconds(300)); // past the first full-size frames
-    unsigned long long first = lab.frame();
-    auto start = Clock::now();
-    for (int i = 0; seconds(Clock::now() - start) < 4.0; ++i) {
-        double a = i * 0.02;
-        lab.x().moveMouse(sx + static_cast<int>(150 * std::cos(a)), sy + static_cast<int>(100 * std::sin(a)));
-        std::this_thread::sleep_for(std::chrono::milliseconds(4));
-    }
-    double elapsed = seconds(Clock::now() - start);
-    unsigned long long frames = lab.frame() - first;
-    lab.x().button(1, false);
-    return frames ? 1000.0 * elapsed / static_cast<double>(frames) : -1;
+    return dragMs(lab, view.cx(), view.cy(), [](int i) {
+        return std::pair(static_cast<int>(150 * std::cos(i * 0.02)), static_cast<int>(100 * std::sin(i * 0.02)));
+    });
 }
 
-// Milliseconds per frame during 4 s of a light orbiting by itself (preset 25), no input: the
-// orbit asks for a frame every 1/60 s, so this is the frame's cost where it is longer than that.
+// 4 s of a light orbiting by itself (preset 25), no input: the orbit asks for a frame every
+// 1/60 s, so this is the frame's cost where that is longer.
 double lightOrbitMs(const std::string& budget) {
     Lab lab({"--size", "1280x800", "--preset", preset("25-moving-light"), "--frame-budget", budget});
     if (!lab.ready()) {
         return -1;
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(500)); // past the first full-size frames
-    unsigned long long first = lab.frame();
-    auto start = Clock::now();
-    std::this_thread::sleep_for(std::chrono::seconds(4));
-    double elapsed = seconds(Clock::now() - start);
-    unsigned long long frames = lab.frame() - first;
-    return frames ? 1000.0 * elapsed / static_cast<double>(frames) : -1;
+    return msPerFrame(lab, [](int) {});
 }
 
-// Milliseconds per frame during 4 s of dragging the shininess slider back and forth (the whole
-// GUI frame: the model drawn again, the plots, the readouts), with the 50 ms budget.
+// 4 s of dragging the shininess slider back and forth (the whole GUI frame: the model drawn
+// again, the plots, the readouts), with the 50 ms budget.
 double sliderDragMs() {
     Lab lab(kArgs);
     if (!lab.ready()) {
@@ -107,21 +117,8 @@ double sliderDragMs() {
     if (slider.w <= 0) {
         return -1;
     }
-    int sx = slider.x + slider.w / 2, sy = slider.cy();
-    lab.moveTo(sx, sy);
-    lab.x().toScreen(lab.window(), sx, sy);
-    lab.x().button(1, true);
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    unsigned long long first = lab.frame();
-    auto start = Clock::now();
-    for (int i = 0; seconds(Clock::now() - start) < 4.0; ++i) {
-        lab.x().moveMouse(sx + static_cast<int>(0.4 * slider.w * std::sin(i * 0.05)), sy);
-        std::this_thread::sleep_for(std::chrono::milliseconds(4));
-    }
-    double elapsed = seconds(Clock::now() - start);
-    unsigned long long frames = lab.frame() - first;
-    lab.x().button(1, false);
-    return frames ? 1000.0 * elapsed / static_cast<double>(frames) : -1;
+    return dragMs(lab, slider.x + slider.w / 2, slider.cy(),
+                  [&](int i) { return std::pair(static_cast<int>(0.4 * slider.w * std::sin(i * 0.05)), 0); });
 }
 
 double keyToScreenMs() {
