@@ -385,7 +385,8 @@ TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
     EXPECT_FALSE(cache.owed());
     // A drag: a new value every 1/60 s. The first frames show the first value and owe a frame.
     int computedDuring = 0;
-    for (int i = 1; i <= 30; ++i) {
+    const int perLag = static_cast<int>(ui::PlotCache::kAlbedoLagSeconds * 60.0); // frames between two computations
+    for (int i = 1; i <= perLag * 5 / 2; ++i) {
         now += 1.0 / 60.0;
         const ui::Lagged<std::optional<Albedo>> shown = frame(10.0f + float(i));
         if (shown.stale) {
@@ -394,7 +395,7 @@ TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
             ++computedDuring;
             EXPECT_EQ(shown.value->value().total(), lab::albedo(lobeInputs(a, 30.0f))->total());
         }
-        if (i < 15) {
+        if (i < perLag) {
             EXPECT_TRUE(shown.stale) << "frame " << i << " of the drag, " << i / 60.0 << " s after the last computation";
             EXPECT_EQ(shown.value, first.value) << "the latest value computed is shown";
         }

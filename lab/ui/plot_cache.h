@@ -107,7 +107,7 @@ public:
     // frame of the end of the change, with no input to ask for it (the page has no threads: this is
     // how it is done there too). Each readout has its own slot (A's, B's), so that A's changes do
     // not keep B's waiting.
-    static constexpr double kAlbedoLagSeconds = 0.25;
+    static constexpr double kAlbedoLagSeconds = 0.5;
     enum class Slot { A, B };
     // Clears owed(); plotsPanel calls it first each frame.
     void beginFrame() { owed_ = false; }
