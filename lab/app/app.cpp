@@ -543,20 +543,18 @@ FrameOutput App::frame(const FrameInput& in) {
     if (std::exchange(m.screenshotRequested, false)) {
         m.screenshot(layout, in);
     }
-    // A moving light is drawn within the same frame budget as a drag (reduced resolution where a
-    // frame would take longer), and at full resolution by the frame in which it stops.
+    // A moving light is drawn within the frame budget as a drag is (ViewportResolution).
     float scale = m.resolution.update(events.dragging || orbiting, in.lastFrameSeconds, m.options.frameBudgetSeconds);
     m.viewportDrawn = m.updateViewports(layout, in, scale);
     bool legendOwed = m.updateReadout(in, model.overlay.legend);
     bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);
     bool scoreOwed = m.scorer.update(m.renderer, ws, events.gesture || events.dragging, m.clock, in.targetFramebuffer);
     bindFramebuffer(in.targetFramebuffer);
-    // A toast is removed when its time is up; nothing else on screen changes by itself (a
-    // reduced view is drawn at full size by the frame that ends the drag).
+    // Owed a frame: a toast whose time is up, a lagging plots readout (ui/plot_cache.h), the legend, the
+    // score. A reduced view is drawn full by the frame that ends the motion; nothing else changes by itself.
     m.interacting = events.gesture || events.dragging || orbiting;
-    // A plots readout that lagged behind a change this frame (ui/plot_cache.h) is exact in the next.
-    const bool plotsOwed = m.plots.cache.owed();
-    float redrawIn = m.orbits.redrawIn(sweepDrawn || legendOwed || scoreOwed || plotsOwed || (probeMoved && !orbiting) ? 0.0f : m.textGoesIn(),
+    bool owed = sweepDrawn || legendOwed || scoreOwed || m.plots.cache.owed();
+    float redrawIn = m.orbits.redrawIn(owed || (probeMoved && !orbiting) ? 0.0f : m.textGoesIn(),
                                        orbiting, in.deltaTime);
     if (m.options.layoutFile) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
