@@ -145,29 +145,7 @@ GLsizei uploadFlat(GLuint& vao, GLuint& vbo, const std::vector<FlatVertex>& vert
 struct Renderer::Impl {
     StageSources sources;
     unsigned generation = 0;
-    // The lighting program's three variants. setStageSources() builds all three at once (an edited
-    // shader's errors are the user's to see, whichever variant has them). Of the built-in sources,
-    // init() builds the per-pixel one (Phong shading, the default: the check that they compile on
-    // this driver) and the others are built when first drawn with, so that `lab render` of most
-    // presets compiles one program, not four (issue 28: its start-up time).
     Program perVertex, perPixel, gouraudError;
-    bool initialized = false;
-    bool overlayTried = false; // the overlay program, too, is built when first drawn
-
-    // Builds the built-in per-pixel variant (init()).
-    bool buildFirst(const StageSources& s, Diagnostics& diagnostics) {
-        std::optional<GLuint> p = buildProgram(s, {"LAB_PER_PIXEL 1"}, diagnostics);
-        if (!p) {
-            return false;
-        }
-        perVertex.reset(0);
-        perPixel.reset(*p);
-        gouraudError.reset(0);
-        sources = s;
-        ++generation;
-        initialized = true;
-        return true;
-    }
 
     bool build(const StageSources& s, Diagnostics& diagnostics) {
         std::optional<GLuint> v = buildProgram(s, {"LAB_PER_VERTEX 1"}, diagnostics);
@@ -190,23 +168,15 @@ struct Renderer::Impl {
         gouraudError.reset(*e);
         sources = s;
         ++generation;
-        initialized = true;
         return true;
     }
 
     // gouraud-error compares the two evaluation sites on the smooth mesh, whatever the shading.
-    // A variant not built yet is built from the current sources (which compiled as the per-pixel
-    // variant: a failure here would be the driver's; the program then stays 0 and draws nothing).
-    const Program& programFor(Shading shading, ViewMode view = ViewMode::Lit) {
-        Program& p = view == ViewMode::GouraudError ? gouraudError : shading == Shading::Phong ? perPixel : perVertex;
-        if (!p.id && initialized) {
-            const char* define = &p == &gouraudError ? "LAB_GOURAUD_ERROR 1" : &p == &perPixel ? "LAB_PER_PIXEL 1" : "LAB_PER_VERTEX 1";
-            Diagnostics ignored;
-            if (std::optional<GLuint> id = buildProgram(sources, {define}, ignored)) {
-                p.reset(*id);
-            }
+    const Program& programFor(Shading shading, ViewMode view = ViewMode::Lit) const {
+        if (view == ViewMode::GouraudError) {
+            return gouraudError;
         }
-        return p;
+        return shading == Shading::Phong ? perPixel : perVertex;
     }
 
     void drawView(const Preset& preset, GpuMesh& mesh, const Viewport& viewport, const DrawOptions& options, bool bits);
@@ -236,7 +206,10 @@ Renderer::~Renderer() {
     impl_->gouraudError.reset(0);
 }
 
-bool Renderer::init(Diagnostics& diagnostics) { return impl_->buildFirst(builtinStageSources(), diagnostics); }
+bool Renderer::init(Diagnostics& diagnostics) {
+    overlay_ = OverlayProgram::build(diagnostics);
+    return overlay_ && impl_->build(builtinStageSources(), diagnostics);
+}
 
 bool Renderer::setStageSources(const StageSources& sources, Diagnostics& diagnostics) {
     return impl_->build(sources, diagnostics);
@@ -366,13 +339,6 @@ void Renderer::draw(const Preset& preset, const std::shared_ptr<const Mesh>& mes
 
 void Renderer::drawOverlay(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const Viewport& viewport,
                            const OverlayOptions& options) {
-    if (!options.wireframe && !options.vertexNormals) {
-        return;
-    }
-    if (!overlay_ && impl_->initialized && !std::exchange(impl_->overlayTried, true)) {
-        Diagnostics ignored; // built-in shaders: a failure would be the driver's, and draws no overlay
-        overlay_ = OverlayProgram::build(ignored);
-    }
     if (overlay_) { // none before init()
         overlay_->draw(preset, impl_->upload(mesh), viewport, options);
     }

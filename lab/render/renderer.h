@@ -95,9 +95,7 @@ public:
     Renderer();
     ~Renderer();
 
-    // Compiles the built-in lighting program for Phong shading (the check that the built-in
-    // shaders compile here); the other variants and the overlays' program are compiled when first
-    // drawn with. Needs a current GL ES 3.0 context.
+    // Compiles the built-in shaders. Needs a current GL ES 3.0 context.
     bool init(Diagnostics& diagnostics);
 
     // Replaces the shader stage bodies and lighting.glsl (checked for non-ASCII text first); on
@@ -144,7 +142,7 @@ public:
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
-    std::unique_ptr<OverlayProgram> overlay_; // built when an overlay is first drawn
+    std::unique_ptr<OverlayProgram> overlay_; // built by init()
 };
 
 // Draws a viewport as `draw` says into the bound framebuffer; the value view's range, when it
