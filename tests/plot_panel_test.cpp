@@ -386,8 +386,9 @@ TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
     // A drag: a new value every 1/60 s. The first frames show the first value and owe a frame.
     int computedDuring = 0;
     const int perLag = static_cast<int>(ui::PlotCache::kAlbedoLagSeconds * 60.0); // frames between two computations
+    const double start = now;
     for (int i = 1; i <= perLag * 5 / 2; ++i) {
-        now += 1.0 / 60.0;
+        now = start + i / 60.0;
         const ui::Lagged<std::optional<Albedo>> shown = frame(10.0f + float(i));
         if (shown.stale) {
             EXPECT_TRUE(cache.owed());
@@ -401,9 +402,9 @@ TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
         }
     }
     EXPECT_EQ(computedDuring, 2) << "at most every " << ui::PlotCache::kAlbedoLagSeconds << " s during the change";
-    // The change ends: the next frame has the same inputs and shows the exact value.
+    // The change ends: the next frame has the last frame's inputs and shows their exact value.
     now += 1.0 / 60.0;
-    const ui::Lagged<std::optional<Albedo>> after = frame(40.0f);
+    const ui::Lagged<std::optional<Albedo>> after = frame(10.0f + float(perLag * 5 / 2));
     EXPECT_FALSE(after.stale);
     EXPECT_FALSE(cache.owed()) << "exact: no further frame is owed";
     EXPECT_EQ(after.value->value().total(), lab::albedo(lobeInputs(a, 30.0f))->total());

@@ -553,7 +553,7 @@ FrameOutput App::frame(const FrameInput& in) {
     // Owed a frame: a toast whose time is up, a lagging plots readout (ui/plot_cache.h), the legend, the
     // score. A reduced view is drawn full by the frame that ends the motion; nothing else changes by itself.
     m.interacting = events.gesture || events.dragging || orbiting;
-    bool owed = sweepDrawn || legendOwed || scoreOwed || m.plots.cache.owed();
+    bool owed = sweepDrawn || legendOwed || scoreOwed || (layout.plots.w > 0 && m.plots.cache.owed());
     float redrawIn = m.orbits.redrawIn(owed || (probeMoved && !orbiting) ? 0.0f : m.textGoesIn(),
                                        orbiting, in.deltaTime);
     if (m.options.layoutFile) {

@@ -141,7 +141,7 @@ struct WebState : PlatformInput {
 
 WebState* gState = nullptr;
 
-// One wheel event in notches, up and right positive, as desktop GLFW reports a mouse wheel. A
+// One wheel event in notches, signed as desktop GLFW reports a mouse wheel (up positive). A
 // notch is 100 pixels in Chromium (deltaMode 0) and 3 lines in Firefox (deltaMode 1); a touchpad
 // sends fractions of one.
 EM_BOOL onWheel(int, const EmscriptenWheelEvent* e, void* user) {

@@ -50,13 +50,15 @@ PlotCache::AlbedoCurve PlotCache::albedoCurve(LobeInputs inputs) {
 template <class Value, class Make>
 Lagged<Value> PlotCache::lagging(LagSlot<Value>& slot, RecentlyUsed<LobeInputs, Value>& kept, const LobeInputs& inputs,
                                  double now, double interval, Make&& make) {
-    const bool still = slot.last && *slot.last == inputs; // unchanged since the slot's previous frame
+    // A change in progress: the previous frame asked this slot for other inputs.
+    const bool changing = slot.last && slot.lastFrame + 1 == frame_ && !(*slot.last == inputs);
     slot.last = inputs;
+    slot.lastFrame = frame_;
     if (std::shared_ptr<const Value> found = kept.find(inputs)) {
         slot.shown = found;
         return {found, false};
     }
-    if (!slot.shown || still || now - slot.computedAt >= interval) {
+    if (!slot.shown || !changing || now - slot.computedAt >= interval) {
         slot.shown = kept.get(inputs, make);
         slot.computedAt = now;
         return {slot.shown, false};

@@ -100,9 +100,11 @@ template <class Value> struct Lagged {
 class PlotCache {
 public:
     // The expensive readouts (the albedo, about 0.5 ms; ρ(θi), 90 albedos) lag while their inputs
-    // change frame after frame, as they do during a drag: the frame shows the latest value computed
-    // (stale), and the value is computed again once the inputs hold still for a frame — or, for the
-    // albedo at one angle, at most every kAlbedoLagSeconds during the change. A stale value makes
+    // change frame after frame, as they do during a drag: while the inputs differ from the ones the
+    // previous frame asked for, the frame shows the latest value computed (stale); it is computed
+    // again once the inputs hold still for a frame (or at once when the previous frame did not ask:
+    // a view just opened) — or, for the albedo at one angle, at most every kAlbedoLagSeconds during
+    // the change. A stale value makes
     // the cache owed(): the app draws another frame, so the exact value is on screen within one
     // frame of the end of the change, with no input to ask for it (the page has no threads: this is
     // how it is done there too). Each readout has its own slot (A's, B's), so that A's changes do
@@ -110,7 +112,10 @@ public:
     static constexpr double kAlbedoLagSeconds = 0.5;
     enum class Slot { A, B };
     // Clears owed(); plotsPanel calls it first each frame.
-    void beginFrame() { owed_ = false; }
+    void beginFrame() {
+        owed_ = false;
+        ++frame_;
+    }
     // Some readout drawn since beginFrame() was stale: another frame is due.
     bool owed() const { return owed_; }
 
@@ -153,6 +158,7 @@ private:
     // What one readout showed last: its inputs in the latest frame and the value shown.
     template <class Value> struct LagSlot {
         std::optional<LobeInputs> last;
+        std::uint64_t lastFrame = 0; // the frame (beginFrame's count) that asked for `last`
         std::shared_ptr<const Value> shown;
         double computedAt = 0.0;
     };
@@ -173,6 +179,7 @@ private:
     std::array<LagSlot<std::optional<Albedo>>, 2> albedoSlots_;
     std::array<LagSlot<std::vector<AlbedoSample>>, 2> curveSlots_;
     bool owed_ = false;
+    std::uint64_t frame_ = 0;
 };
 
 } // namespace lab::ui

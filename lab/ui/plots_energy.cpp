@@ -56,7 +56,7 @@ Readout readout(const std::optional<Albedo>& a, const std::optional<Albedo>* b, 
             r.add(format("B %.3f", double(albedoOf(**b, PlotComponent::Total))), in(Ink::Compare));
         }
     } else {
-        r.add("no light arrives", Ink::Text);
+        r.add("no light arrives", in(Ink::Text));
     }
     if (!brief) {
         r.lineBreak();

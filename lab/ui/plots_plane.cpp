@@ -89,11 +89,11 @@ float largestTotal(std::initializer_list<const std::vector<PlotSample>*> sets) {
 void albedoTokens(Readout& r, const Lagged<std::optional<Albedo>>& a, const Lagged<std::optional<Albedo>>* b, float incident) {
     r.add(format("albedo at %s:", degrees(std::fabs(incident)).c_str()), Ink::Text);
     const std::optional<Albedo>& at = *a.value;
+    auto in = [&](Ink ink) { return a.stale ? Ink::Muted : ink; };
     if (!at) {
-        r.add("none (no light arrives)", Ink::Text);
+        r.add("none (no light arrives)", in(Ink::Text));
         return;
     }
-    auto in = [&](Ink ink) { return a.stale ? Ink::Muted : ink; };
     r.add(format("%.3f", double(luminance(at->diffuse))), in(Ink::Diffuse));
     r.add(format("+ %.3f", double(luminance(at->specular))), in(Ink::Specular));
     r.add(format("= %.3f", double(luminance(at->total()))), in(Ink::Total));
