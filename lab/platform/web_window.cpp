@@ -357,8 +357,9 @@ WindowResult runLab(const AppOptions& options, const WindowOptions&, std::string
     auto* s = new WebState(options);
     s->window = window;
     s->backend = std::make_unique<GlfwBackend>(window, s);
-    glfwSetScrollCallback(window, nullptr); // the wheel is read from the page's own event (onWheel)
-    emscripten_set_wheel_callback("#canvas", s, EM_FALSE, onWheel);
+    if (emscripten_set_wheel_callback("#canvas", s, EM_FALSE, onWheel) == EMSCRIPTEN_RESULT_SUCCESS) {
+        glfwSetScrollCallback(window, nullptr); // the wheel is read from the page's own event (onWheel)
+    }
     gState = s;
     labJsMark("context");
     if (!s->host.start(s->app, error)) {

@@ -117,7 +117,7 @@ double sliderDragMs() {
     if (slider.w <= 0) {
         return -1;
     }
-    return dragMs(lab, slider.x + slider.w / 2, slider.cy(),
+    return dragMs(lab, slider.cx(), slider.cy(),
                   [&](int i) { return std::pair(static_cast<int>(0.4 * slider.w * std::sin(i * 0.05)), 0); });
 }
 
