@@ -19,8 +19,8 @@
 
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace lab::ui {
@@ -45,16 +45,12 @@ public:
 
     // The value for `key`, made by make() (and kept) when there is none.
     template <class Make> std::shared_ptr<const Value> get(const Key& key, Make&& make) {
-        ++clock_;
-        for (Entry& e : entries_) {
-            if (e.key == key) {
-                e.used = clock_;
-                return e.value;
-            }
+        if (std::shared_ptr<const Value> found = find(key)) {
+            return found;
         }
         ++made_;
         std::shared_ptr<const Value> value = std::make_shared<const Value>(make());
-        Entry fresh{key, value, clock_};
+        Entry fresh{key, value, ++clock_};
         if (entries_.size() < capacity_) {
             entries_.push_back(std::move(fresh));
         } else {
@@ -104,11 +100,10 @@ public:
     // previous frame asked for, the frame shows the latest value computed (stale); it is computed
     // again once the inputs hold still for a frame (or at once when the previous frame did not ask:
     // a view just opened) — or, for the albedo at one angle, at most every kAlbedoLagSeconds during
-    // the change. A stale value makes
-    // the cache owed(): the app draws another frame, so the exact value is on screen within one
-    // frame of the end of the change, with no input to ask for it (the page has no threads: this is
-    // how it is done there too). Each readout has its own slot (A's, B's), so that A's changes do
-    // not keep B's waiting.
+    // the change. A stale value makes the cache owed(): the app draws another frame, so the exact
+    // value is on screen within one frame of the end of the change, with no input to ask for it (the
+    // page has no threads: this is how it is done there too). Each readout has its own slot (A's,
+    // B's), so that A's changes do not keep B's waiting.
     static constexpr double kAlbedoLagSeconds = 0.5;
     enum class Slot { A, B };
     // Clears owed(); plotsPanel calls it first each frame.

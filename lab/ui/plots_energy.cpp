@@ -174,9 +174,8 @@ void energyPanel(Preset& a, const Preset* b, PlotSettings& s) {
     const Canvas canvas = beginCanvas("energy", "plot.energy", room.x, canvasH);
     if (canvas.shown()) {
         const std::optional<Albedo> none;
-        const bool dots = !stale;
-        energyCanvas(canvas, *curveA.value, curveB.value.get(), dots ? *atA.value : none,
-                     dots && atB.value ? atB.value.get() : nullptr, a);
+        energyCanvas(canvas, *curveA.value, curveB.value.get(), stale ? none : *atA.value,
+                     stale ? nullptr : atB.value.get(), a);
     }
 }
 
