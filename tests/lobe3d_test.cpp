@@ -58,31 +58,57 @@ std::vector<std::pair<std::string, Preset>> variety() {
     return out;
 }
 
-// φ = 0 is the plot's θo > 0 half, φ = 180° its θo < 0 half: the same numbers, bit for bit.
+// φ = 0 is the plot's θo > 0 half, φ = 180° its θo < 0 half: the same numbers, bit for bit, for
+// the full grid (every plot sample) and for the draft (every fifth).
 TEST(Lobe3d, ThePlaneOfIncidenceIsThePlotsSamples) {
     ASSERT_EQ(kLobeThetaStepDeg, 1.0f); // one ring per plot sample
-    const int half = static_cast<int>(180.0f / kLobePhiStepDeg);
-    for (const auto& [name, preset] : variety()) {
-        for (float incident : {-70.0f, -15.0f, 0.0f, 30.0f, 45.0f, 89.0f}) {
-            const LobeInputs in = lobeInputs(preset, incident);
-            const std::vector<PlotSample> plot = reflectedIntensity(in);
-            const HemisphereGrid grid = sampleHemisphere(in);
-            for (int ring = 0; ring < kLobeRings; ++ring) {
-                for (int side : {1, -1}) {
-                    const int meridian = side > 0 ? 0 : half;
-                    const PlotSample& s = plot[static_cast<std::size_t>(90 + side * ring)];
-                    const std::size_t k = static_cast<std::size_t>(HemisphereGrid::index(ring, meridian));
-                    const std::string where = name + " at " + std::to_string(incident) + ", theta_o " + std::to_string(side * ring);
-                    ASSERT_EQ(grid.diffuse[k], s.diffuse) << where;
-                    ASSERT_EQ(grid.specular[k], s.specular) << where;
-                    ASSERT_EQ(grid.total[k], s.total) << where;
-                    ASSERT_EQ(grid.directions[k].z, 0.0f) << where;
+    for (GridSteps steps : {kLobeGrid, kLobeDraftGrid}) {
+        const int half = 180 / steps.phiDeg;
+        for (const auto& [name, preset] : variety()) {
+            for (float incident : {-70.0f, -15.0f, 0.0f, 30.0f, 45.0f, 89.0f}) {
+                const LobeInputs in = lobeInputs(preset, incident);
+                const std::vector<PlotSample> plot = reflectedIntensity(in);
+                const HemisphereGrid grid = sampleHemisphere(in, steps);
+                ASSERT_EQ(grid.total.size(), static_cast<std::size_t>(steps.rings() * steps.meridians()));
+                for (int ring = 0; ring < grid.rings(); ++ring) {
+                    for (int side : {1, -1}) {
+                        const int meridian = side > 0 ? 0 : half;
+                        const PlotSample& s = plot[static_cast<std::size_t>(90 + side * ring * steps.thetaDeg)];
+                        const std::size_t k = static_cast<std::size_t>(grid.index(ring, meridian));
+                        const std::string where = name + " at " + std::to_string(incident) + ", theta_o " +
+                                                  std::to_string(side * ring * steps.thetaDeg) + ", step " +
+                                                  std::to_string(steps.thetaDeg);
+                        ASSERT_EQ(grid.diffuse[k], s.diffuse) << where;
+                        ASSERT_EQ(grid.specular[k], s.specular) << where;
+                        ASSERT_EQ(grid.total[k], s.total) << where;
+                        ASSERT_EQ(grid.directions[k].z, 0.0f) << where;
+                    }
+                }
+                // The closing meridian repeats the first.
+                for (int ring = 0; ring < grid.rings(); ++ring) {
+                    ASSERT_EQ(grid.total[static_cast<std::size_t>(grid.index(ring, grid.meridians() - 1))],
+                              grid.total[static_cast<std::size_t>(grid.index(ring, 0))]);
                 }
             }
-            // The closing meridian repeats the first.
-            for (int ring = 0; ring < kLobeRings; ++ring) {
-                ASSERT_EQ(grid.total[static_cast<std::size_t>(HemisphereGrid::index(ring, kLobeMeridians - 1))],
-                          grid.total[static_cast<std::size_t>(HemisphereGrid::index(ring, 0))]);
+        }
+    }
+}
+
+// The draft is the full grid with rings and meridians left out: each of its samples is the full
+// grid's at the same θo and φ, bit for bit.
+TEST(Lobe3d, TheDraftIsTheFullGridThinned) {
+    for (const auto& [name, preset] : variety()) {
+        const LobeInputs in = lobeInputs(preset, 35.0f);
+        const HemisphereGrid full = sampleHemisphere(in), draft = sampleHemisphere(in, kLobeDraftGrid);
+        EXPECT_EQ(draft.rings(), 19);
+        EXPECT_EQ(draft.meridians(), 31);
+        const int ringStep = kLobeDraftGrid.thetaDeg / kLobeGrid.thetaDeg, meridianStep = kLobeDraftGrid.phiDeg / kLobeGrid.phiDeg;
+        for (int ring = 0; ring < draft.rings(); ++ring) {
+            for (int meridian = 0; meridian < draft.meridians(); ++meridian) {
+                const std::size_t d = static_cast<std::size_t>(draft.index(ring, meridian));
+                const std::size_t f = static_cast<std::size_t>(full.index(ring * ringStep, meridian * meridianStep));
+                ASSERT_EQ(draft.directions[d], full.directions[f]) << name << " ring " << ring << " meridian " << meridian;
+                ASSERT_EQ(draft.total[d], full.total[f]) << name << " ring " << ring << " meridian " << meridian;
             }
         }
     }
@@ -103,7 +129,7 @@ TEST(Lobe3d, TheSurfaceInThePlaneIsThePlotsCurve) {
                 const std::vector<glm::vec3> surface = lobeSurface(grid, c, outer, scale);
                 for (int ring = 0; ring < kLobeRings; ++ring) {
                     for (int side : {1, -1}) {
-                        const glm::vec3 p = surface[static_cast<std::size_t>(HemisphereGrid::index(ring, side > 0 ? 0 : half))];
+                        const glm::vec3 p = surface[static_cast<std::size_t>(grid.index(ring, side > 0 ? 0 : half))];
                         const glm::vec2 q = curve[static_cast<std::size_t>(90 + side * ring)];
                         ASSERT_EQ(p.x, q.x) << name << " ring " << ring << " side " << side;
                         ASSERT_EQ(p.y, q.y) << name << " ring " << ring << " side " << side;
@@ -131,7 +157,7 @@ TEST(Lobe3d, EverySampleIsTheModelAtItsDirection) {
     light.attenuation = glm::vec3(1.0f, 0.0f, 0.0f);
     for (int ring = 0; ring < kLobeRings; ring += 7) {
         for (int meridian = 0; meridian < kLobeMeridians; meridian += 5) {
-            const std::size_t k = static_cast<std::size_t>(HemisphereGrid::index(ring, meridian));
+            const std::size_t k = static_cast<std::size_t>(grid.index(ring, meridian));
             const float to = glm::radians(static_cast<float>(ring)), phi = glm::radians(static_cast<float>(meridian) * 4.0f);
             const glm::vec3 V(std::sin(to) * std::cos(phi), std::cos(to), std::sin(to) * std::sin(phi));
             EXPECT_LT(angleDeg(grid.directions[k], V), 1e-3f) << ring << " " << meridian;
@@ -177,36 +203,46 @@ glm::vec3 whereHIsN(const glm::vec3& N, const glm::vec3& L) {
 // sqrt(1.2e-7/n) rad, so the search can only find the peak to about 0.02° for n = 1.
 constexpr float kPeakToleranceDeg = 0.05f;
 
+// From the full grid and from the draft (the search starts a draft cell away and still ends at R).
 TEST(Lobe3d, PhongPeaksAtR) {
-    for (float n : {1.0f, 8.0f, 32.0f, 200.0f, 2000.0f}) {
-        for (float incident : {0.0f, 13.0f, 37.0f, -52.0f, 75.5f, 86.0f}) {
-            const LobeInputs in = lobeInputs(material(BrdfModel::Phong, n), incident);
-            const HemisphereGrid grid = sampleHemisphere(in);
-            const LobeVectors v = lobeVectors(in.incidentDeg);
-            const std::string where = "n " + std::to_string(n) + ", incident " + std::to_string(incident);
-            for (PlotComponent c : {PlotComponent::Specular, PlotComponent::Total}) {
-                const LobeMaximum m = lobeMaximum(in, grid, c);
-                EXPECT_LT(angleDeg(m.V, v.R), kPeakToleranceDeg) << where;
-                // The drawn surface's largest vertex is within one grid cell of R.
-                const glm::vec3 gridBest = grid.directions[static_cast<std::size_t>(m.gridIndex)];
-                EXPECT_LE(angleDeg(gridBest, v.R), kLobePhiStepDeg) << where;
-                EXPECT_GE(m.value, grid.component(c)[static_cast<std::size_t>(m.gridIndex)]) << where;
+    for (GridSteps steps : {kLobeGrid, kLobeDraftGrid}) {
+        for (float n : {1.0f, 8.0f, 32.0f, 200.0f, 2000.0f}) {
+            for (float incident : {0.0f, 13.0f, 37.0f, -52.0f, 75.5f, 86.0f}) {
+                const LobeInputs in = lobeInputs(material(BrdfModel::Phong, n), incident);
+                const HemisphereGrid grid = sampleHemisphere(in, steps);
+                const LobeVectors v = lobeVectors(in.incidentDeg);
+                const std::string where = "n " + std::to_string(n) + ", incident " + std::to_string(incident) +
+                                          ", grid step " + std::to_string(steps.phiDeg);
+                for (PlotComponent c : {PlotComponent::Specular, PlotComponent::Total}) {
+                    const LobeMaximum m = lobeMaximum(in, grid, c);
+                    EXPECT_LT(angleDeg(m.V, v.R), kPeakToleranceDeg) << where;
+                    // The drawn surface's largest vertex is within one grid cell of R.
+                    const glm::vec3 gridBest = grid.directions[static_cast<std::size_t>(m.gridIndex)];
+                    EXPECT_LE(angleDeg(gridBest, v.R), static_cast<float>(steps.phiDeg)) << where;
+                    EXPECT_GE(m.value, grid.component(c)[static_cast<std::size_t>(m.gridIndex)]) << where;
+                }
             }
         }
     }
 }
 
 TEST(Lobe3d, BlinnPhongPeaksWhereHIsN) {
-    for (float n : {1.0f, 8.0f, 64.0f, 500.0f}) {
-        for (float incident : {0.0f, 21.0f, 44.5f, -63.0f, 80.0f}) {
-            const LobeInputs in = lobeInputs(material(BrdfModel::BlinnPhong, n), incident);
-            const HemisphereGrid grid = sampleHemisphere(in);
-            const LobeVectors v = lobeVectors(in.incidentDeg);
-            const std::string where = "n " + std::to_string(n) + ", incident " + std::to_string(incident);
-            const LobeMaximum m = lobeMaximum(in, grid, PlotComponent::Total);
-            EXPECT_LT(angleDeg(m.V, whereHIsN(v.N, v.L)), kPeakToleranceDeg) << where;
-            // And H there is N.
-            EXPECT_LT(angleDeg(glsl::halfVector(v.L, m.V), v.N), kPeakToleranceDeg) << where;
+    for (GridSteps steps : {kLobeGrid, kLobeDraftGrid}) {
+        for (float n : {1.0f, 8.0f, 64.0f, 500.0f}) {
+            for (float incident : {0.0f, 21.0f, 44.5f, -63.0f, 80.0f}) {
+                const LobeInputs in = lobeInputs(material(BrdfModel::BlinnPhong, n), incident);
+                const HemisphereGrid grid = sampleHemisphere(in, steps);
+                const LobeVectors v = lobeVectors(in.incidentDeg);
+                const std::string where = "n " + std::to_string(n) + ", incident " + std::to_string(incident) +
+                                          ", grid step " + std::to_string(steps.phiDeg);
+                const LobeMaximum m = lobeMaximum(in, grid, PlotComponent::Total);
+                // From the draft the search takes another path over the flat top of n = 1's peak
+                // and stops where float rounding stops it: 0.056° from it at 21°.
+                const float tolerance = steps == kLobeGrid ? kPeakToleranceDeg : 2.0f * kPeakToleranceDeg;
+                EXPECT_LT(angleDeg(m.V, whereHIsN(v.N, v.L)), tolerance) << where;
+                // And H there is N.
+                EXPECT_LT(angleDeg(glsl::halfVector(v.L, m.V), v.N), tolerance) << where;
+            }
         }
     }
 }

@@ -435,13 +435,13 @@ TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
     EXPECT_EQ(exact.value->back().albedo.total(), lab::albedoCurve(lobeInputs(a, 0.0f)).back().albedo.total());
 }
 
-// The panel during a drag, one frame per change as the app draws it: the Plane and Energy views
-// owe a frame while their readouts lag, and the frame after the change ends draws exactly what
-// a cold cache draws.
+// The panel during a drag, one frame per change as the app draws it: each view owes a frame while
+// its readouts lag (the 3D lobe draws its draft grid), and the frame after the change ends draws
+// exactly what a cold cache draws.
 TEST(PlotPanel, AfterADragTheNextFrameDrawsWhatAColdCacheDraws) {
     CpuImGui imgui(1.0f);
     ui::Rect r{900, 0, 380, 800};
-    for (ui::PlotView view : {ui::PlotView::Plane, ui::PlotView::Energy}) {
+    for (ui::PlotView view : {ui::PlotView::Plane, ui::PlotView::Lobe3d, ui::PlotView::Energy}) {
         Preset a;
         ui::PlotSettings warm;
         warm.view = view;
@@ -449,12 +449,19 @@ TEST(PlotPanel, AfterADragTheNextFrameDrawsWhatAColdCacheDraws) {
         bool owed = false;
         for (int i = 1; i <= 5; ++i) {
             a.material.shininess = 20.0f + float(i);
-            drawPlots(r, 1280, 800, a, nullptr, warm, 1);
+            const Outcome during = drawPlots(r, 1280, 800, a, nullptr, warm, 1);
             owed = owed || warm.cache.owed();
+            if (view == ui::PlotView::Lobe3d && i > 1) {
+                // The draft grid: fewer vertices than the full grid's surface alone.
+                EXPECT_LT(during.vertices.size(), std::size_t(kLobeRings * kLobeMeridians)) << "frame " << i << " of the drag";
+            }
         }
         EXPECT_TRUE(owed) << "view " << int(view) << ": a drag's readouts lag, and ask for a frame";
         Outcome next = drawPlots(r, 1280, 800, a, nullptr, warm, 1);
         EXPECT_FALSE(warm.cache.owed()) << "view " << int(view);
+        if (view == ui::PlotView::Lobe3d) {
+            EXPECT_GT(next.vertices.size(), std::size_t(2 * kLobeRings * kLobeMeridians)) << "the full surface and map";
+        }
         ui::PlotSettings cold;
         cold.view = view;
         EXPECT_TRUE(sameDrawing(next, drawPlots(r, 1280, 800, a, nullptr, cold))) << "view " << int(view);

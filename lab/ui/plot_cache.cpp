@@ -50,10 +50,7 @@ PlotCache::AlbedoCurve PlotCache::albedoCurve(LobeInputs inputs) {
 template <class Value, class Make>
 Lagged<Value> PlotCache::lagging(LagSlot<Value>& slot, RecentlyUsed<LobeInputs, Value>& kept, const LobeInputs& inputs,
                                  double now, double interval, Make&& make) {
-    // A change in progress: the previous frame asked this slot for other inputs.
-    const bool changing = slot.last && slot.lastFrame + 1 == frame_ && !(*slot.last == inputs);
-    slot.last = inputs;
-    slot.lastFrame = frame_;
+    const bool changing = slot.watch.changing(inputs, frame_);
     if (std::shared_ptr<const Value> found = kept.find(inputs)) {
         slot.shown = found;
         return {found, false};

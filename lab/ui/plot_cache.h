@@ -93,6 +93,23 @@ template <class Value> struct Lagged {
     bool stale = false;
 };
 
+// Whether one plot's inputs change frame after frame, as they do during a drag: they differ from the
+// ones the previous frame asked for (a view just opened, or back after frames without it, is not
+// changing: it computes at once).
+class ChangeWatch {
+public:
+    bool changing(const LobeInputs& inputs, std::uint64_t frame) {
+        const bool changed = last_ && lastFrame_ + 1 == frame && !(*last_ == inputs);
+        last_ = inputs;
+        lastFrame_ = frame;
+        return changed;
+    }
+
+private:
+    std::optional<LobeInputs> last_;
+    std::uint64_t lastFrame_ = 0;
+};
+
 class PlotCache {
 public:
     // The expensive readouts (the albedo, about 0.5 ms; ρ(θi), 90 albedos) lag while their inputs
@@ -113,6 +130,9 @@ public:
     }
     // Some readout drawn since beginFrame() was stale: another frame is due.
     bool owed() const { return owed_; }
+    // For views that keep their own drafts (the 3D lobe): this frame's number, and a frame owed.
+    std::uint64_t frame() const { return frame_; }
+    void owe() { owed_ = true; }
 
     using Samples = std::shared_ptr<const std::vector<PlotSample>>;
     using Points = std::shared_ptr<const std::vector<glm::vec2>>;
@@ -152,8 +172,7 @@ private:
     };
     // What one readout showed last: its inputs in the latest frame and the value shown.
     template <class Value> struct LagSlot {
-        std::optional<LobeInputs> last;
-        std::uint64_t lastFrame = 0; // the frame (beginFrame's count) that asked for `last`
+        ChangeWatch watch;
         std::shared_ptr<const Value> shown;
         double computedAt = 0.0;
     };

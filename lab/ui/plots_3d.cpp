@@ -25,7 +25,8 @@ namespace lab::ui {
 
 bool operator==(const Lobe3dKey& x, const Lobe3dKey& y) {
     auto same = [](const ImVec4& p, const ImVec4& q) { return p.x == q.x && p.y == q.y && p.z == q.z && p.w == q.w; };
-    return x.a == y.a && x.hasB == y.hasB && (!x.hasB || x.b == y.b) && x.component == y.component &&
+    return x.a == y.a && x.hasB == y.hasB && (!x.hasB || (x.b == y.b && x.draftB == y.draftB)) && x.draftA == y.draftA &&
+           x.component == y.component &&
            x.scale == y.scale && x.outer == y.outer && x.yawDeg == y.yawDeg && x.pitchDeg == y.pitchDeg &&
            same(x.lobeRect, y.lobeRect) && same(x.mapRect, y.mapRect);
 }
@@ -90,8 +91,6 @@ float valueAt(float t, float outer, RadialScale scale) {
 // The meshes, made once per view
 //----------------------------------------------------------------------------------------
 
-int at(int ring, int meridian) { return HemisphereGrid::index(ring, meridian); }
-
 void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
     const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
     const std::vector<float>& values = grid.component(key.component);
@@ -103,11 +102,13 @@ void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m
     // differences over the grid (sign-free: the lobe's inside shows where a surface folds).
     const glm::vec3 light = glm::normalize(cam.toEye + 0.6f * cam.up + 0.3f * cam.right);
     std::vector<float> depth(n);
-    for (int i = 0; i < kLobeRings; ++i) {
-        for (int j = 0; j < kLobeMeridians; ++j) {
+    const int rings = grid.rings(), meridians = grid.meridians();
+    auto at = [&](int ring, int meridian) { return grid.index(ring, meridian); };
+    for (int i = 0; i < rings; ++i) {
+        for (int j = 0; j < meridians; ++j) {
             const std::size_t k = static_cast<std::size_t>(at(i, j));
-            const int jm = j == 0 ? kLobeMeridians - 2 : j - 1, jp = j == kLobeMeridians - 1 ? 1 : j + 1;
-            const glm::vec3 alongTheta = points[static_cast<std::size_t>(at(std::min(i + 1, kLobeRings - 1), j))] -
+            const int jm = j == 0 ? meridians - 2 : j - 1, jp = j == meridians - 1 ? 1 : j + 1;
+            const glm::vec3 alongTheta = points[static_cast<std::size_t>(at(std::min(i + 1, rings - 1), j))] -
                                          points[static_cast<std::size_t>(at(std::max(i - 1, 0), j))];
             const glm::vec3 alongPhi = points[static_cast<std::size_t>(at(i, jp))] - points[static_cast<std::size_t>(at(i, jm))];
             glm::vec3 normal = glm::cross(alongTheta, alongPhi);
@@ -128,12 +129,12 @@ void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m
         int k;
     };
     std::vector<Cell> cells;
-    cells.reserve(static_cast<std::size_t>((kLobeRings - 1) * (kLobeMeridians - 1)));
-    for (int i = 0; i + 1 < kLobeRings; ++i) {
-        for (int j = 0; j + 1 < kLobeMeridians; ++j) {
+    cells.reserve(static_cast<std::size_t>((rings - 1) * (meridians - 1)));
+    for (int i = 0; i + 1 < rings; ++i) {
+        for (int j = 0; j + 1 < meridians; ++j) {
             const int k = at(i, j);
             const float d = depth[static_cast<std::size_t>(k)] + depth[static_cast<std::size_t>(k + 1)] +
-                            depth[static_cast<std::size_t>(k + kLobeMeridians)] + depth[static_cast<std::size_t>(k + kLobeMeridians + 1)];
+                            depth[static_cast<std::size_t>(k + meridians)] + depth[static_cast<std::size_t>(k + meridians + 1)];
             cells.push_back({d, k});
         }
     }
@@ -141,31 +142,39 @@ void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m
     m.indices.clear();
     m.indices.reserve(cells.size() * 6);
     for (const Cell& c : cells) {
-        const unsigned k = static_cast<unsigned>(c.k), w = static_cast<unsigned>(kLobeMeridians);
+        const unsigned k = static_cast<unsigned>(c.k), w = static_cast<unsigned>(meridians);
         for (unsigned v : {k, k + 1, k + w + 1, k, k + w + 1, k + w}) {
             m.indices.push_back(v);
         }
     }
 }
 
-// The map: each grid direction at mapPoint(V) on the disc, coloured by its value.
+// The map: each grid direction at mapPoint(V) on the disc, coloured by its value. A grid direction's
+// θo is its ring's, so the projection needs no arc tangent: radius θo/90° along (x, z)/sin θo.
 void mapMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
     const ImVec4& r = key.mapRect;
     const glm::vec2 centre(r.x + r.z * 0.5f, r.y + r.w * 0.5f);
     const float radius = std::min(r.z, r.w) * 0.5f;
     const std::vector<float>& values = grid.component(key.component);
+    const int rings = grid.rings(), meridians = grid.meridians();
     m.mapPositions.resize(values.size());
     m.mapColors.resize(values.size());
-    for (std::size_t k = 0; k < values.size(); ++k) {
-        const glm::vec2 q = mapPoint(grid.directions[k]);
-        m.mapPositions[k] = ImVec2(centre.x + radius * q.x, centre.y + radius * q.y);
-        m.mapColors[k] = rgb(ramp(plotRadius(values[k], key.outer, key.scale)));
+    for (int i = 0; i < rings; ++i) {
+        const float thetaDeg = static_cast<float>(i * grid.steps.thetaDeg);
+        const float sinTheta = outgoingDirections()[static_cast<std::size_t>(90 + i * grid.steps.thetaDeg)].x;
+        const float along = i == 0 ? 0.0f : radius * (thetaDeg / 90.0f) / sinTheta;
+        for (int j = 0; j < meridians; ++j) {
+            const std::size_t k = static_cast<std::size_t>(grid.index(i, j));
+            const glm::vec3& V = grid.directions[k];
+            m.mapPositions[k] = ImVec2(centre.x + along * V.x, centre.y + along * V.z);
+            m.mapColors[k] = rgb(ramp(plotRadius(values[k], key.outer, key.scale)));
+        }
     }
     m.mapIndices.clear();
-    m.mapIndices.reserve(static_cast<std::size_t>((kLobeRings - 1) * (kLobeMeridians - 1) * 6));
-    for (int i = 0; i + 1 < kLobeRings; ++i) {
-        for (int j = 0; j + 1 < kLobeMeridians; ++j) {
-            const unsigned k = static_cast<unsigned>(at(i, j)), w = static_cast<unsigned>(kLobeMeridians);
+    m.mapIndices.reserve(static_cast<std::size_t>((rings - 1) * (meridians - 1) * 6));
+    for (int i = 0; i + 1 < rings; ++i) {
+        for (int j = 0; j + 1 < meridians; ++j) {
+            const unsigned k = static_cast<unsigned>(grid.index(i, j)), w = static_cast<unsigned>(meridians);
             for (unsigned v : {k, k + 1, k + w + 1, k, k + w + 1, k + w}) {
                 m.mapIndices.push_back(v);
             }
@@ -173,21 +182,30 @@ void mapMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
     }
 }
 
-// B as rings every 15° of θo and meridians every 24° of φ.
+// B as rings every 15° of θo and meridians every 24° of φ (both grids' steps divide them).
 void wireframe(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
+    static_assert(15 % kLobeGrid.thetaDeg == 0 && 15 % kLobeDraftGrid.thetaDeg == 0 && 24 % kLobeGrid.phiDeg == 0 &&
+                  24 % kLobeDraftGrid.phiDeg == 0);
     const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
-    const std::vector<glm::vec3> points = lobeSurface(grid, key.component, key.outer, key.scale);
+    const std::vector<float>& values = grid.component(key.component);
+    // lobeSurface's point, for the grid points on the lines only.
+    auto point = [&](int i, int j) {
+        const std::size_t k = static_cast<std::size_t>(grid.index(i, j));
+        return cam.at(plotRadius(values[k], key.outer, key.scale) * grid.directions[k]);
+    };
+    const int rings = grid.rings(), meridians = grid.meridians();
+    const int ringStep = 15 / grid.steps.thetaDeg, meridianStep = 24 / grid.steps.phiDeg;
     m.wireframe.clear();
-    for (int i = 15; i < kLobeRings; i += 15) {
+    for (int i = ringStep; i < rings; i += ringStep) {
         std::vector<ImVec2>& line = m.wireframe.emplace_back();
-        for (int j = 0; j < kLobeMeridians; ++j) {
-            line.push_back(cam.at(points[static_cast<std::size_t>(at(i, j))]));
+        for (int j = 0; j < meridians; ++j) {
+            line.push_back(point(i, j));
         }
     }
-    for (int j = 0; j + 1 < kLobeMeridians; j += 6) {
+    for (int j = 0; j + 1 < meridians; j += meridianStep) {
         std::vector<ImVec2>& line = m.wireframe.emplace_back();
-        for (int i = 0; i < kLobeRings; ++i) {
-            line.push_back(cam.at(points[static_cast<std::size_t>(at(i, j))]));
+        for (int i = 0; i < rings; ++i) {
+            line.push_back(point(i, j));
         }
     }
 }
@@ -223,6 +241,7 @@ struct View {
     const Preset* a = nullptr;
     LobeInputs inA, inB;
     std::shared_ptr<const HemisphereGrid> gridA, gridB;
+    bool draftA = false, draftB = false; // drawn from the draft grid while the inputs change
     LobeMaximum peak;
     LobeVectors vectors;
     glm::vec3 viewer{0.0f, 1.0f, 0.0f}; // V: the plane plot's, or a probed point's (out of the plane too)
@@ -412,15 +431,30 @@ void pointTokens(Readout& r, const ProbeLobe& at) {
     r.lineBreak();
 }
 
+// The grid for `inputs`: the full one, or the draft while they change frame after frame and the full
+// one is not kept (the frame after owes the full one).
+std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, const LobeInputs& inputs, bool& draft) {
+    Lobe3dState& st = s.lobe3d;
+    draft = false;
+    if (watch.changing(inputs, s.cache.frame())) {
+        if (std::shared_ptr<const HemisphereGrid> full = st.grids.find({inputs, false})) {
+            return full;
+        }
+        draft = true;
+        s.cache.owe();
+    }
+    return st.grids.get({inputs, draft}, [&] { return sampleHemisphere(inputs, draft ? kLobeDraftGrid : kLobeGrid); });
+}
+
 View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, const ProbeLobe* point) {
     View v;
     v.a = &a;
     Lobe3dState& st = s.lobe3d;
     v.inA = point ? probeLobeInputs(a, *point) : lobeInputs(a, a.plotIncidentDeg);
-    v.gridA = st.grids.get(v.inA, [&] { return sampleHemisphere(v.inA); });
+    v.gridA = grid(s, st.changingA, v.inA, v.draftA);
     if (b) {
         v.inB = point ? probeLobeInputs(*b, *point) : lobeInputs(*b, a.plotIncidentDeg);
-        v.gridB = st.grids.get(v.inB, [&] { return sampleHemisphere(v.inB); });
+        v.gridB = grid(s, st.changingB, v.inB, v.draftB);
     }
     v.viewer = point ? point->viewer : outgoingDirection(std::fabs(s.viewerDeg), s.viewerDeg >= 0.0f ? 0.0f : 180.0f);
     v.atPoint = point != nullptr;
@@ -433,8 +467,9 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
         v.largest = std::max(v.largest, v.gridB->largest(st.component));
     }
     v.outer = outerRing(v.largest);
-    v.peak = *st.peaks.get({v.inA, st.component}, [&] { return lobeMaximum(v.inA, *v.gridA, st.component); });
-    const Ink color = componentInk(st.component);
+    v.peak = *st.peaks.get({{v.inA, v.draftA}, st.component}, [&] { return lobeMaximum(v.inA, *v.gridA, st.component); });
+    // The draft's peak is found from the draft grid: muted, like a lagging number, until the full grid's.
+    const Ink color = v.draftA ? Ink::Muted : componentInk(st.component);
     if (!(v.largest > kNothingLit)) {
         v.readout.add(format("%s: 0 everywhere (term switched off?)", componentName(st.component)), Ink::Text);
     } else if (st.component == PlotComponent::Diffuse) {
@@ -445,7 +480,7 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
                              double(v.peak.phiDeg), kDeg),
                       color);
         const float offR = glm::degrees(std::acos(glm::clamp(glm::dot(v.peak.V, v.vectors.R), -1.0f, 1.0f)));
-        v.readout.add(format("(%.1f%s from R)", double(offR), kDeg), Ink::Mirror);
+        v.readout.add(format("(%.1f%s from R)", double(offR), kDeg), v.draftA ? Ink::Muted : Ink::Mirror);
     }
     if (b && v.largest > kNothingLit) {
         v.readout.add("B: wireframe", Ink::Compare, true);
@@ -466,6 +501,8 @@ Lobe3dKey keyFor(const View& v, const PlotSettings& s, const ImVec4& lobeBox, co
     key.a = v.inA;
     key.hasB = v.gridB != nullptr;
     key.b = v.inB;
+    key.draftA = v.draftA;
+    key.draftB = v.draftB;
     key.component = s.lobe3d.component;
     key.scale = s.scale;
     key.outer = v.outer;

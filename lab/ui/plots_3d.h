@@ -14,8 +14,11 @@
 // samples it reproduces in the plane of incidence). The grid is computed once per LobeInputs and
 // the projected, sorted mesh once per view (inputs, component, scale, camera and canvas), both
 // kept in Lobe3dState's cache with the peak: a frame in which nothing changed copies the kept
-// mesh (the surface and the map are 8,281 vertices each: ImGui's 16-bit indices have room). What it does
-// not do: call GL (ImGui draw lists only), or scroll (it fits the region it is given).
+// mesh (the surface and the map are 8,281 vertices each: ImGui's 16-bit indices have room). While
+// the inputs change frame after frame (a drag: ui/plot_cache.h's ChangeWatch), the view draws the
+// draft grid (kLobeDraftGrid, 589 samples) and its peak, the numbers muted, and owes the app a
+// frame: the next frame whose inputs held still draws the full grid. What it does not do: call GL
+// (ImGui draw lists only), or scroll (it fits the region it is given).
 #pragma once
 
 #include "core/plots/lobe3d.h"
@@ -48,6 +51,7 @@ struct Lobe3dMesh {
 struct Lobe3dKey {
     LobeInputs a, b;
     bool hasB = false;
+    bool draftA = false, draftB = false; // drawn from the draft grids
     PlotComponent component = PlotComponent::Total;
     RadialScale scale = RadialScale::Linear;
     float outer = 1.0f;
@@ -60,9 +64,12 @@ struct Lobe3dState {
     float yawDeg = -35.0f;  // about N, from the plane plot's view (camera on +z)
     float pitchDeg = 25.0f; // above the surface, 0 to 90
     PlotComponent component = PlotComponent::Total;
-    RecentlyUsed<LobeInputs, HemisphereGrid> grids{4}; // A and B
+    // A grid by its inputs and whether it is the draft: A's and B's, full and draft.
+    using GridKey = std::pair<LobeInputs, bool>;
+    RecentlyUsed<GridKey, HemisphereGrid> grids{6};
     RecentlyUsed<Lobe3dKey, Lobe3dMesh> meshes{2};
-    RecentlyUsed<std::pair<LobeInputs, PlotComponent>, LobeMaximum> peaks{2}; // A's, for the readout
+    RecentlyUsed<std::pair<GridKey, PlotComponent>, LobeMaximum> peaks{2}; // A's, for the readout
+    ChangeWatch changingA, changingB;
     // How many grids, meshes and peaks were computed rather than found (for the tests).
     std::size_t computed() const { return grids.made() + meshes.made() + peaks.made(); }
 };

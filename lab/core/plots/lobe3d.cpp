@@ -69,25 +69,27 @@ float HemisphereGrid::largest(PlotComponent c) const {
     return values.empty() ? 0.0f : *std::max_element(values.begin(), values.end());
 }
 
-HemisphereGrid sampleHemisphere(const LobeInputs& inputs) {
+HemisphereGrid sampleHemisphere(const LobeInputs& inputs, GridSteps steps) {
     const Evaluator e(inputs);
     HemisphereGrid g;
-    const std::size_t n = static_cast<std::size_t>(kLobeRings * kLobeMeridians);
+    g.steps = steps;
+    const int rings = g.rings(), meridians = g.meridians();
+    const std::size_t n = static_cast<std::size_t>(rings * meridians);
     g.directions.reserve(n);
     g.diffuse.reserve(n);
     g.specular.reserve(n);
     g.total.reserve(n);
-    // The azimuths once: 91 meridians, each ring the same.
-    glm::vec2 phis[kLobeMeridians];
-    for (int j = 0; j < kLobeMeridians; ++j) {
-        phis[j] = azimuth(static_cast<float>(j) * kLobePhiStepDeg);
+    // The azimuths once: each ring has the same.
+    std::vector<glm::vec2> phis(static_cast<std::size_t>(meridians));
+    for (int j = 0; j < meridians; ++j) {
+        phis[static_cast<std::size_t>(j)] = azimuth(static_cast<float>(j * steps.phiDeg));
     }
-    for (int i = 0; i < kLobeRings; ++i) {
-        static_assert(kLobeThetaStepDeg == 1.0f, "the rings are the plot's directions");
-        const glm::vec2 sc = outgoingDirections()[static_cast<std::size_t>(90 + i)];
+    for (int i = 0; i < rings; ++i) {
+        // θo in whole degrees: the rings are the plot's directions.
+        const glm::vec2 sc = outgoingDirections()[static_cast<std::size_t>(90 + i * steps.thetaDeg)];
         const float s = sc.x, c = sc.y;
-        for (int j = 0; j < kLobeMeridians; ++j) {
-            const glm::vec3 V(s * phis[j].x, c, s * phis[j].y);
+        for (const glm::vec2& phi : phis) {
+            const glm::vec3 V(s * phi.x, c, s * phi.y);
             const glsl::LightTerms t = e.at(V);
             const float diffuse = luminance(t.diffuse), specular = luminance(t.specular);
             g.directions.push_back(V);
@@ -132,8 +134,8 @@ LobeMaximum lobeMaximum(const LobeInputs& inputs, const HemisphereGrid& grid, Pl
         return m;
     }
     m.gridIndex = static_cast<int>(std::max_element(values.begin(), values.end()) - values.begin());
-    m.thetaDeg = static_cast<float>(m.gridIndex / kLobeMeridians) * kLobeThetaStepDeg;
-    m.phiDeg = static_cast<float>(m.gridIndex % kLobeMeridians) * kLobePhiStepDeg;
+    m.thetaDeg = static_cast<float>(m.gridIndex / grid.meridians() * grid.steps.thetaDeg);
+    m.phiDeg = static_cast<float>(m.gridIndex % grid.meridians() * grid.steps.phiDeg);
     m.V = grid.directions[static_cast<std::size_t>(m.gridIndex)];
     m.value = values[static_cast<std::size_t>(m.gridIndex)];
     // A compass search from the grid's best: try a step either way in θo and in φ, move to a
@@ -144,7 +146,7 @@ LobeMaximum lobeMaximum(const LobeInputs& inputs, const HemisphereGrid& grid, Pl
         const glsl::LightTerms t = e.at(outgoingDirection(theta, phi));
         return componentOf(luminance(t.diffuse), luminance(t.specular), component);
     };
-    for (float step = kLobePhiStepDeg; step > 1e-4f;) {
+    for (float step = static_cast<float>(grid.steps.phiDeg); step > 1e-4f;) {
         bool moved = false;
         const float tries[4][2] = {{step, 0.0f}, {-step, 0.0f}, {0.0f, step}, {0.0f, -step}};
         for (const auto& t : tries) {

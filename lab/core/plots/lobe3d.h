@@ -9,8 +9,11 @@
 // (sin φ and cos φ are exact at multiples of 90°, θo in whole degrees as the plot has them).
 //
 // The grid: θo = 0 … 90° in 1° steps (91 rings, the plot's resolution), φ = 0 … 360° in 4° steps
-// (91 meridians, the last one repeating the first so that the mesh closes without wrapping). What
-// it does not do: draw, project or cache (ui/plots_3d.cpp does; the UI keeps grids by LobeInputs).
+// (91 meridians, the last one repeating the first so that the mesh closes without wrapping); and a
+// draft of it (θo by 5°, φ by 12°: 19 × 31, 8% of the samples) that the 3D lobe draws while its
+// inputs change frame after frame (a drag), whose in-plane meridians are the plot's samples too.
+// What it does not do: draw, project or cache (ui/plots_3d.cpp does; the UI keeps grids by
+// LobeInputs).
 #pragma once
 
 #include "core/plots/plot_data.h"
@@ -21,29 +24,43 @@
 
 namespace lab {
 
-inline constexpr int kLobeRings = 91;        // θo = 0, 1, …, 90°
-inline constexpr int kLobeMeridians = 91;    // φ = 0, 4, …, 360° (the last is the first again)
+// A grid's spacing in whole degrees: θo's step divides 90 and φ's divides 180 (so that φ = 0 and
+// 180°, the plane of incidence, are meridians).
+struct GridSteps {
+    int thetaDeg = 1, phiDeg = 4;
+    constexpr int rings() const { return 90 / thetaDeg + 1; }      // θo = 0, step, …, 90°
+    constexpr int meridians() const { return 360 / phiDeg + 1; }   // φ = 0, step, …, 360° (the first again)
+};
+constexpr bool operator==(const GridSteps& x, const GridSteps& y) { return x.thetaDeg == y.thetaDeg && x.phiDeg == y.phiDeg; }
+inline constexpr GridSteps kLobeGrid{1, 4};
+inline constexpr GridSteps kLobeDraftGrid{5, 12};
+inline constexpr int kLobeRings = kLobeGrid.rings();         // 91
+inline constexpr int kLobeMeridians = kLobeGrid.meridians(); // 91
 inline constexpr float kLobeThetaStepDeg = 1.0f;
 inline constexpr float kLobePhiStepDeg = 4.0f;
+static_assert(kLobeDraftGrid.rings() * kLobeDraftGrid.meridians() < kLobeRings * kLobeMeridians / 10);
 
 // V for θo, φ in degrees; exact (0 and ±1) at φ a multiple of 90°.
 glm::vec3 outgoingDirection(float thetaDeg, float phiDeg);
 
 struct HemisphereGrid {
-    // Ring i (θo = i·1°), meridian j (φ = j·4°): index i·kLobeMeridians + j.
+    GridSteps steps = kLobeGrid;
+    // Ring i (θo = i·steps.thetaDeg), meridian j (φ = j·steps.phiDeg): index i·meridians() + j.
     std::vector<glm::vec3> directions;
     std::vector<float> diffuse, specular, total;
     float largestTotal = 0.0f; // over the grid
 
-    static int index(int ring, int meridian) { return ring * kLobeMeridians + meridian; }
+    int rings() const { return steps.rings(); }
+    int meridians() const { return steps.meridians(); }
+    int index(int ring, int meridian) const { return ring * meridians() + meridian; }
     const std::vector<float>& component(PlotComponent c) const {
         return c == PlotComponent::Diffuse ? diffuse : c == PlotComponent::Specular ? specular : total;
     }
     float largest(PlotComponent c) const;
 };
 
-// The grid for `inputs` (kLobeRings × kLobeMeridians evaluations of lightContribution).
-HemisphereGrid sampleHemisphere(const LobeInputs& inputs);
+// The grid for `inputs` (rings × meridians evaluations of lightContribution).
+HemisphereGrid sampleHemisphere(const LobeInputs& inputs, GridSteps steps = kLobeGrid);
 
 // One component at direction V (unit, any direction: 0 where the model gives 0).
 float intensityAt(const LobeInputs& inputs, const glm::vec3& V, PlotComponent component);
@@ -58,7 +75,7 @@ std::vector<glm::vec3> lobeSurface(const HemisphereGrid& grid, PlotComponent com
 glm::vec2 mapPoint(const glm::vec3& V);
 
 // Where one component is largest: the grid's largest sample, then refined by a compass search in
-// (θo, φ) down to 1e-4°. A component that does not depend on V (the diffuse term) or is 0
+// (θo, φ) from the grid's φ step down to 1e-4°. A component that does not depend on V (the diffuse term) or is 0
 // everywhere has its maximum everywhere: the search then stays at the first largest sample.
 struct LobeMaximum {
     glm::vec3 V{0.0f, 1.0f, 0.0f};
