@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -341,6 +342,22 @@ TEST(PlotPanel, TheEnergyViewKeepsItsCurveAndAClickSetsTheIncidentAngle) {
     EXPECT_GT(-left, 10.0f);
     EXPECT_LE(-right, 90.0f);
     EXPECT_EQ(std::round(right), right) << "whole degrees, as dragging L gives";
+}
+
+// A change is inputs other than the previous frame's; inputs with a NaN (equal to nothing) are
+// never a change, so that a lagging readout does not owe frames for ever.
+TEST(PlotPanel, AChangeIsOtherInputsThanThePreviousFrames) {
+    ui::ChangeWatch watch;
+    LobeInputs in = lobeInputs(Preset{}, 30.0f);
+    EXPECT_FALSE(watch.changing(in, 1)) << "the first frame";
+    EXPECT_FALSE(watch.changing(in, 2)) << "the same inputs";
+    in.material.shininess += 1.0f;
+    EXPECT_TRUE(watch.changing(in, 3));
+    in.material.shininess += 1.0f;
+    EXPECT_FALSE(watch.changing(in, 5)) << "a frame without the view in between";
+    in.incidentDeg = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_FALSE(watch.changing(in, 6));
+    EXPECT_FALSE(watch.changing(in, 7));
 }
 
 TEST(PlotPanel, RecentlyUsedReplacesTheOldestAndKeepsWhatWasHandedOut) {

@@ -98,8 +98,10 @@ template <class Value> struct Lagged {
 // changing: it computes at once).
 class ChangeWatch {
 public:
+    // Inputs with a NaN equal nothing, not even themselves: they are never "changing" (a readout
+    // computes at once rather than owing frames for ever).
     bool changing(const LobeInputs& inputs, std::uint64_t frame) {
-        const bool changed = last_ && lastFrame_ + 1 == frame && !(*last_ == inputs);
+        const bool changed = last_ && lastFrame_ + 1 == frame && !(*last_ == inputs) && inputs == inputs;
         last_ = inputs;
         lastFrame_ = frame;
         return changed;
