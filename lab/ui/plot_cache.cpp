@@ -34,7 +34,10 @@ bool operator==(const PlotCache::AttenuationKey& x, const PlotCache::Attenuation
     return x.coefficients == y.coefficients && x.maxDistance == y.maxDistance && x.at == y.at;
 }
 
-PlotCache::Samples PlotCache::samples(const LobeInputs& inputs) {
+PlotCache::Samples PlotCache::samples(const LobeInputs& inputs, bool draft) {
+    if (draft) {
+        return drafts_.get(inputs, [&] { return reflectedIntensity(inputs, kDraftStepDeg); });
+    }
     return samples_.get(inputs, [&] { return reflectedIntensity(inputs); });
 }
 
@@ -77,9 +80,9 @@ Lagged<std::vector<AlbedoSample>> PlotCache::laggingAlbedoCurve(Slot slot, LobeI
 }
 
 PlotCache::Points PlotCache::lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
-                                  const CurvePlacement& at) {
-    return lobes_.get(LobeKey{inputs, component, outer, scale, at}, [&] {
-        const std::vector<PlotSample>& set = *samples(inputs);
+                                  const CurvePlacement& at, bool draft) {
+    return (draft ? draftLobes_ : lobes_).get(LobeKey{inputs, component, outer, scale, at}, [&] {
+        const std::vector<PlotSample>& set = *samples(inputs, draft);
         std::vector<glm::vec2> unit;
         if (at.polar) {
             unit = lobePoints(set, component, outer, scale);

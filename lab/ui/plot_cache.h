@@ -139,8 +139,12 @@ public:
     using Samples = std::shared_ptr<const std::vector<PlotSample>>;
     using Points = std::shared_ptr<const std::vector<glm::vec2>>;
 
-    // reflectedIntensity(inputs).
-    Samples samples(const LobeInputs& inputs);
+    // reflectedIntensity(inputs), or a draft of it: every kDraftStepDeg degrees (kept apart, so that
+    // drafts never push out what the plots keep).
+    static constexpr int kDraftStepDeg = 3;
+    Samples samples(const LobeInputs& inputs, bool draft = false);
+    // Whether the samples for `inputs` (every degree) are kept: a draft is not needed then.
+    bool hasSamples(const LobeInputs& inputs) { return samples_.find(inputs) != nullptr; }
     // albedo(inputs): the energy readout's numbers (nullopt at ±90°).
     using Albedos = std::shared_ptr<const std::optional<Albedo>>;
     Albedos albedo(const LobeInputs& inputs);
@@ -149,7 +153,7 @@ public:
     AlbedoCurve albedoCurve(LobeInputs inputs);
     // The screen points of one component of the lobe `inputs`, the outer ring at `outer`, thinned.
     Points lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
-                const CurvePlacement& at);
+                const CurvePlacement& at, bool draft = false);
     // Att(d) for d in [0, maxDistance] (attenuationCurve, 200 samples), thinned.
     Points attenuation(const glm::vec3& coefficients, float maxDistance, const CurvePlacement& at);
     // albedo() and albedoCurve() as readouts that lag during a change (above); `now` in seconds.
@@ -157,7 +161,7 @@ public:
     Lagged<std::vector<AlbedoSample>> laggingAlbedoCurve(Slot slot, LobeInputs inputs, double now);
 
     // How many sample sets and curves were computed rather than found (for the tests).
-    std::size_t computed() const { return samples_.made() + albedo_.made() + albedoCurves_.made() + lobes_.made() + attenuation_.made(); }
+    std::size_t computed() const { return samples_.made() + drafts_.made() + draftLobes_.made() + albedo_.made() + albedoCurves_.made() + lobes_.made() + attenuation_.made(); }
 
 private:
     struct LobeKey {
@@ -188,6 +192,8 @@ private:
     // A frame uses at most 5 sample sets (A, B, three incident angles) and 7 curves; room for
     // more, so that switching back and forth (A and B, polar and Cartesian) finds them again.
     RecentlyUsed<LobeInputs, std::vector<PlotSample>> samples_{16};
+    RecentlyUsed<LobeInputs, std::vector<PlotSample>> drafts_{3};     // the overlay's three, while they change
+    RecentlyUsed<LobeKey, std::vector<glm::vec2>> draftLobes_{3};
     RecentlyUsed<LobeInputs, std::optional<Albedo>> albedo_{8}; // A and B at the lobe's angle
     RecentlyUsed<LobeInputs, std::vector<AlbedoSample>> albedoCurves_{4}; // A and B, against θi
     RecentlyUsed<LobeKey, std::vector<glm::vec2>> lobes_{32};

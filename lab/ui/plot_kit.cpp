@@ -132,19 +132,19 @@ void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const 
     }
 }
 
-void scaleTokens(Readout& r, float outer, float largest, bool locked, const char* what) {
+void scaleTokens(Readout& r, float outer, float largest, bool locked, const char* what, Ink ink) {
     if (!locked && !(largest > kNothingLit)) {
-        r.add("all 0 (terms switched off?)", Ink::Text);
+        r.add("all 0 (terms switched off?)", ink);
         return;
     }
-    r.add(format("outer ring %s", tickText(outer).c_str()), Ink::Text);
+    r.add(format("outer ring %s", tickText(outer).c_str()), ink);
     if (locked) {
-        r.add("(locked)", Ink::Text);
+        r.add("(locked)", ink);
         if (largest > outer * 1.001f) {
             r.add(format("peak %s beyond it", tickText(largest).c_str()), Ink::Warning);
         }
     } else {
-        r.add(format("= %s", what), Ink::Text);
+        r.add(format("= %s", what), ink);
     }
 }
 

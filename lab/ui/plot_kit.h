@@ -92,7 +92,7 @@ struct Readout {
 
 // What the outer circle stands for, in words (in tokens that can wrap), with a warning when a
 // locked scale cuts a lobe.
-void scaleTokens(Readout& r, float outer, float largest, bool locked, const char* what);
+void scaleTokens(Readout& r, float outer, float largest, bool locked, const char* what, Ink ink = Ink::Text);
 
 //----------------------------------------------------------------------------------------
 // Canvases

@@ -29,6 +29,7 @@
 #include "ui/plot_cache.h"
 #include "ui/plots_3d.h"
 
+#include <array>
 #include <optional>
 
 namespace lab::ui {
@@ -45,6 +46,7 @@ struct PlotSettings {
     float lobeScale = 0.0f, overlayScale = 0.0f; // the outer circles' intensities (held while locked)
     float viewerDeg = 20.0f;                   // V in the lobe plot
     glm::vec3 overlayDeg{60.0f, 25.0f, 10.0f}; // the overlaid incident angles
+    std::array<ChangeWatch, 3> overlayChanges; // the overlay draws drafts while its lobes change
     int attenuationLight = 0;
     int dragging = 0; // 0 none, 1 L, 2 V
     PlotCache cache;  // samples and curves of earlier frames, found again by their inputs

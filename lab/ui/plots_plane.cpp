@@ -53,6 +53,7 @@ struct Lobes {
 
 struct Overlay {
     std::array<LobeInputs, 3> inputs;
+    bool draft = false; // every PlotCache::kDraftStepDeg degrees, while the lobes change frame after frame
     std::array<PlotCache::Samples, 3> sets;
     float largest = 0, outer = 0;
     Readout readout;
@@ -143,14 +144,26 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p,
 
 Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
     Overlay o;
+    // While the lobes change frame after frame (a drag), a draft of them (every 3rd degree), its
+    // readout muted; the frame after the change (owed) draws them from every degree.
+    bool changing = false, kept = true;
     for (std::size_t i = 0; i < 3; ++i) {
         o.inputs[i] = lobeInputs(a, s.overlayDeg[static_cast<int>(i)]);
-        o.sets[i] = s.cache.samples(o.inputs[i]);
+        changing = s.overlayChanges[i].changing(o.inputs[i], s.cache.frame()) || changing;
+        kept = kept && s.cache.hasSamples(o.inputs[i]);
+    }
+    o.draft = changing && !kept;
+    if (o.draft) {
+        s.cache.owe();
+    }
+    for (std::size_t i = 0; i < 3; ++i) {
+        o.sets[i] = s.cache.samples(o.inputs[i], o.draft);
     }
     o.largest = largestTotal({o.sets[0].get(), o.sets[1].get(), o.sets[2].get()});
     o.outer = scaleMaximum(outerRing(o.largest), s.lockScale, s.overlayScale);
+    const Ink ink = o.draft ? Ink::Muted : Ink::Text;
     o.readout.add("total for each incident angle;", Ink::Text);
-    scaleTokens(o.readout, o.outer, o.largest, s.lockScale, "max of the three");
+    scaleTokens(o.readout, o.outer, o.largest, s.lockScale, "max of the three", ink);
     o.readout.measure(p);
     return o;
 }
@@ -380,7 +393,7 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
         const Polar f = polarFrame(canvas.origin(), canvas.width, canvas.height, plot.style, false);
         polarGrid(plot.canvas, f, o.outer, s.scale, false);
         for (std::size_t i = 0; i < 3; ++i) {
-            const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, placementOf(f));
+            const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, placementOf(f), o.draft);
             plot.canvas.line(*curve, plot.style.stroke(), overlayInk(i));
         }
         for (std::size_t i = 0; i < 3; ++i) {

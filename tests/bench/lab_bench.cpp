@@ -359,12 +359,13 @@ void Plots(benchmark::State& state) {
     b.brdf = BrdfModel::BlinnPhong;
     ui::PlotSettings settings;
     settings.view = static_cast<ui::PlotView>(state.range(2));
-    bool compare = state.range(0) != 0, editing = state.range(1) != 0;
+    // range(1): 0 unchanged, 1 editing (a new shininess every frame), 2 the frame after a change
+    // ends (timed: a new value drawn untimed, then the same value again: what was lagging or drafted
+    // is computed exactly).
+    const bool compare = state.range(0) != 0;
+    const int editing = static_cast<int>(state.range(1));
     int frame = 0;
-    for (auto _ : state) {
-        if (editing) {
-            a.material.shininess = 20.0f + 0.01f * static_cast<float>(frame++ % 1000); // never one the cache holds
-        }
+    auto draw = [&] {
         ImGui::NewFrame();
         ImGui::SetNextWindowPos(ImVec2(0, 0));
         ImGui::SetNextWindowSize(io.DisplaySize);
@@ -373,6 +374,17 @@ void Plots(benchmark::State& state) {
         ImGui::End();
         ImGui::Render();
         benchmark::DoNotOptimize(ImGui::GetDrawData()->TotalVtxCount);
+    };
+    for (auto _ : state) {
+        if (editing != 0) {
+            a.material.shininess = 20.0f + 0.01f * static_cast<float>(frame++ % 1000); // never one the cache holds
+        }
+        if (editing == 2) {
+            state.PauseTiming();
+            draw();
+            state.ResumeTiming();
+        }
+        draw();
     }
     ImGui::DestroyContext(cpu);
     ImGui::SetCurrentContext(previous);
@@ -523,9 +535,10 @@ void registerAll() {
     benchmark::RegisterBenchmark("GuiFrame", GuiFrame)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
     const char* views[] = {"", "lobe3d-", "energy-"}; // ui::PlotView's order: Plane, 3D lobe, Energy
     for (int v = 0; v < 3; ++v) {
-        for (int edit = 0; edit < 2; ++edit) {
+        for (int edit = 0; edit < 3; ++edit) {
             for (int compare = 0; compare < 2; ++compare) {
-                std::string name = std::string("Plots/") + views[v] + (compare ? "compare" : "single") + (edit ? "-editing" : "");
+                static const char* const suffix[3] = {"", "-editing", "-release"};
+                std::string name = std::string("Plots/") + views[v] + (compare ? "compare" : "single") + suffix[edit];
                 benchmark::RegisterBenchmark(name.c_str(), Plots)->Args({compare, edit, v})->Unit(benchmark::kMicrosecond);
             }
         }
@@ -581,12 +594,18 @@ void table(const std::map<std::string, double>& ms) {
             }
         }
     }
-    for (const char* v : {"NdotL", "D", "GouraudError"}) {
+    for (const char* v : {"NdotL", "D"}) {
         std::string name = std::string("View/") + v + "/";
         double view = counter(name, "#view_ms"), lit = counter(name, "#lit_ms");
         if (view > 0 && lit > 0) {
-            row("1b. view " + std::string(v) + " (auto range) vs lit", view, lit, view / lit, "<= 1.10", view / lit <= 1.10);
+            row("1b. factor view " + std::string(v) + " (auto range) vs lit", view, lit, view / lit, "<= 1.10", view / lit <= 1.10);
         }
+    }
+    // Not a factor: the difference of two lightings (per vertex and per pixel) at each pixel, so two
+    // lightings' work, as the wipe's two halves are.
+    double gouraud = counter("View/GouraudError/", "#view_ms"), gouraudLit = counter("View/GouraudError/", "#lit_ms");
+    if (gouraud > 0 && gouraudLit > 0) {
+        row("1c. Gouraud error (two lightings) vs lit", gouraud, gouraudLit, gouraud / gouraudLit, "<= 2.00", gouraud / gouraudLit <= 2.0);
     }
     double wipe = counter("View/wipe-D/", "#view_ms"), wipeLit = counter("View/wipe-D/", "#lit_ms");
     if (wipe > 0 && wipeLit > 0) {
@@ -599,7 +618,16 @@ void table(const std::map<std::string, double>& ms) {
         std::printf("%-44s %10.3f ms %9.3f ms %7.1f%% %10s %s\n", "2. UI share of a 1280x720 frame (model drawn)", gui, model, share * 100,
                     "<= 15%", share <= 0.15 ? "met" : "MISSED");
     }
-    // Every view of the plots, unchanged (target 50 us) and while a value changes every frame (100 us).
+    // Every view of the plots, unchanged (target 50 us) and while a value changes every frame (100 us);
+    // the frame after a change ends computes what lagged (no target: one frame, once).
+    for (const char* view : {"", "lobe3d-", "energy-"}) {
+        for (const char* set : {"single", "compare"}) {
+            const std::string name = std::string("Plots/") + view + set + "-release/";
+            if (const double plots = get(name); plots > 0) {
+                std::printf("%-44s %10.1f us\n", ("3b. " + name).c_str(), plots * 1000);
+            }
+        }
+    }
     for (const char* view : {"", "lobe3d-", "energy-"}) {
         for (const char* edit : {"", "-editing"}) {
             for (const char* set : {"single", "compare"}) {
@@ -614,8 +642,8 @@ void table(const std::map<std::string, double>& ms) {
     }
     double labRender = counter("Process", "#lab_ms"), bareRender = counter("Process", "#bare_ms");
     if (labRender > 0 && bareRender > 0) {
-        row("4. lab render vs bare EGL program (medians)", labRender, bareRender, labRender / bareRender, "<= 1.2",
-            labRender / bareRender <= 1.2);
+        row("4. lab render vs bare EGL program (medians)", labRender, bareRender, labRender / bareRender, "<= 1.05",
+            labRender / bareRender <= 1.05);
     }
     double load = counter("Gltf", "#load_ms"), read = counter("Gltf", "#read_ms");
     if (load > 0 && read > 0) {

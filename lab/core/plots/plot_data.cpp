@@ -62,7 +62,7 @@ LobeVectors lobeVectors(float incidentDeg) {
     return v;
 }
 
-std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs) {
+std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs, int stepDeg) {
     // The material, BRDF and term switches as the shaders get them, and a directional light from
     // L (unit white, or the inputs' colours): lightContribution() then gives each sample's diffuse
     // and specular parts, 0 where the preset switches the term off, exactly as the renderer sums them.
@@ -74,9 +74,10 @@ std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs) {
     const glsl::Light light = lobeLightFrom(inputs, v.L);
     const glm::vec3 p(0.0f);
     std::vector<PlotSample> samples;
-    samples.reserve(181);
+    stepDeg = stepDeg > 0 && 90 % stepDeg == 0 ? stepDeg : 1;
+    samples.reserve(static_cast<std::size_t>(180 / stepDeg + 1));
     const std::array<glm::vec2, 181>& directions = outgoingDirections();
-    for (int deg = -90; deg <= 90; ++deg) {
+    for (int deg = -90; deg <= 90; deg += stepDeg) {
         const glm::vec2& d = directions[static_cast<std::size_t>(deg + 90)];
         const glsl::LightTerms c = glsl::lightContribution(material, brdf, terms, light, p, N, glm::vec3(d.x, d.y, 0.0f));
         float diffuse = luminance(c.diffuse);

@@ -59,8 +59,9 @@ LobeVectors lobeVectors(float incidentDeg);
 // (sin θo, cos θo) for θo = -90° … 90° in 1° steps, index θo + 90: the directions of the samples.
 const std::array<glm::vec2, 181>& outgoingDirections();
 
-// 181 samples, θo = -90 … 90.
-std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs);
+// 181 samples, θo = -90 … 90; or every `stepDeg` degrees of them (a divisor of 90: the same
+// numbers at those angles), for a draft.
+std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs, int stepDeg = 1);
 inline std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentDeg) {
     return reflectedIntensity(lobeInputs(preset, incidentDeg));
 }
