@@ -95,13 +95,28 @@ TEST_F(ViewCacheTest, AMovingLightOnASlowMachineIsDrawnSmallerAndFullOnceItStops
         lowest = std::min(lowest, out.viewportScale);
     }
     EXPECT_LT(lowest, 0.6f) << "slow frames while a light moves lower the view's resolution";
-    FrameInput still;
-    still.droppedFiles = {(fs::path(LAB_SOURCE_DIR) / "presets" / "05-full-phong.json").string()};
-    still.lastFrameSeconds = 0.3f;
-    FrameOutput stopped = lab_.frame(still);
-    EXPECT_TRUE(stopped.viewportDrawn);
-    EXPECT_EQ(stopped.viewportScale, 1.0f) << "the frame of a scene whose lights stand still is full resolution";
-    EXPECT_EQ(frame({}, 0.01f).viewportScale, 1.0f);
+    // Stop the light in the same scene: scroll the panel to the light's "orbit the model" box and
+    // click it, the frames as slow as before.
+    const ui::Rect* panel = ui::widgets().find("panel");
+    ASSERT_NE(panel, nullptr);
+    const ui::Rect p = *panel;
+    const ui::Rect* box = nullptr;
+    for (int i = 0; i < 80; ++i) {
+        box = ui::widgets().find("lights[0].orbit");
+        if (box && box->y >= p.y && box->y + box->h <= p.y + p.h) {
+            break;
+        }
+        frame({InputEvent::move(p.x + p.w / 2, p.y + p.h / 2), InputEvent::scroll(0.0f, -1.0f)}, 0.3f);
+        box = nullptr;
+    }
+    ASSERT_NE(box, nullptr) << "the orbit box was not scrolled into the panel";
+    const float bx = box->x + box->h / 2, by = box->y + box->h / 2;
+    frame({InputEvent::move(bx, by)}, 0.3f);
+    frame({InputEvent::button(0, true, bx, by)}, 0.3f);
+    FrameOutput stopped = frame({InputEvent::button(0, false, bx, by)}, 0.3f);
+    EXPECT_TRUE(stopped.viewportDrawn) << "the light is back where its orbit starts";
+    EXPECT_EQ(stopped.viewportScale, 1.0f) << "the frame in which the light stops is full resolution";
+    EXPECT_FALSE(frame({}, 0.3f).viewportDrawn) << "the light stands still: nothing to draw";
 }
 
 TEST_F(ViewCacheTest, FastFramesKeepFullResolutionWhileDragging) {

@@ -36,6 +36,7 @@ bool operator==(const PlotCache::AttenuationKey& x, const PlotCache::Attenuation
 
 PlotCache::Samples PlotCache::samples(const LobeInputs& inputs, bool draft) {
     if (draft) {
+        owed_ = true; // the frame after the change draws the samples themselves
         return drafts_.get(inputs, [&] { return reflectedIntensity(inputs, kDraftStepDeg); });
     }
     return samples_.get(inputs, [&] { return reflectedIntensity(inputs); });

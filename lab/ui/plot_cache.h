@@ -140,7 +140,7 @@ public:
     using Points = std::shared_ptr<const std::vector<glm::vec2>>;
 
     // reflectedIntensity(inputs), or a draft of it: every kDraftStepDeg degrees (kept apart, so that
-    // drafts never push out what the plots keep).
+    // drafts never push out what the plots keep; a draft owes a frame).
     static constexpr int kDraftStepDeg = 3;
     Samples samples(const LobeInputs& inputs, bool draft = false);
     // Whether the samples for `inputs` (every degree) are kept: a draft is not needed then.

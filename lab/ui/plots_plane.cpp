@@ -41,13 +41,11 @@ using namespace plotkit; // the drawing kit (ui/plot_kit.h)
 // The lobes of one frame: A's samples (and B's), all scaled by the same outer circle; the
 // samples from the cache, found by their inputs.
 struct Lobes {
-    float incident = 0;
-    float viewer = 0;                 // where V is drawn: the V slider's, or the probed point's
+    float incident = 0, viewer = 0;   // viewer: where V is drawn: the V slider's, or the probed point's
     const ProbeLobe* point = nullptr; // plots at the probe
     LobeInputs inA, inB;
     PlotCache::Samples a, b; // b null without a compare set
-    float largest = 0;       // the largest total now
-    float outer = 0;         // the outer circle's intensity (largest, or held while locked)
+    float largest = 0, outer = 0; // the largest total now; the outer circle's intensity (largest, or held while locked)
     Readout readout;
 };
 
@@ -144,8 +142,8 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p,
 
 Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
     Overlay o;
-    // While the lobes change frame after frame (a drag), a draft of them (every 3rd degree), its
-    // readout muted; the frame after the change (owed) draws them from every degree.
+    // While the lobes change frame after frame (a drag), a draft of them (every 3rd degree, owing a
+    // frame), its readout muted; the frame after the change draws them from every degree.
     bool changing = false, kept = true;
     for (std::size_t i = 0; i < 3; ++i) {
         o.inputs[i] = lobeInputs(a, s.overlayDeg[static_cast<int>(i)]);
@@ -153,17 +151,13 @@ Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
         kept = kept && s.cache.hasSamples(o.inputs[i]);
     }
     o.draft = changing && !kept;
-    if (o.draft) {
-        s.cache.owe();
-    }
     for (std::size_t i = 0; i < 3; ++i) {
         o.sets[i] = s.cache.samples(o.inputs[i], o.draft);
     }
     o.largest = largestTotal({o.sets[0].get(), o.sets[1].get(), o.sets[2].get()});
     o.outer = scaleMaximum(outerRing(o.largest), s.lockScale, s.overlayScale);
-    const Ink ink = o.draft ? Ink::Muted : Ink::Text;
     o.readout.add("total for each incident angle;", Ink::Text);
-    scaleTokens(o.readout, o.outer, o.largest, s.lockScale, "max of the three", ink);
+    scaleTokens(o.readout, o.outer, o.largest, s.lockScale, "max of the three", o.draft ? Ink::Muted : Ink::Text);
     o.readout.measure(p);
     return o;
 }
