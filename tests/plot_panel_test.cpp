@@ -344,20 +344,28 @@ TEST(PlotPanel, TheEnergyViewKeepsItsCurveAndAClickSetsTheIncidentAngle) {
     EXPECT_EQ(std::round(right), right) << "whole degrees, as dragging L gives";
 }
 
-// A change is inputs other than the previous frame's; inputs with a NaN (equal to nothing) are
-// never a change, so that a lagging readout does not owe frames for ever.
-TEST(PlotPanel, AChangeIsOtherInputsThanThePreviousFrames) {
+// A change is inputs other than the previous frame's, and goes on while the pointer holds the
+// widget (a paused drag); inputs with a NaN (equal to nothing) are never a change, so that a
+// lagging readout does not owe frames for ever.
+TEST(PlotPanel, AChangeIsOtherInputsThanThePreviousFramesAndLastsWhileHeld) {
+    using ui::Change;
     ui::ChangeWatch watch;
     LobeInputs in = lobeInputs(Preset{}, 30.0f);
-    EXPECT_FALSE(watch.changing(in, 1)) << "the first frame";
-    EXPECT_FALSE(watch.changing(in, 2)) << "the same inputs";
+    EXPECT_EQ(watch.observe(in, 1, false), Change::Still) << "the first frame";
+    EXPECT_EQ(watch.observe(in, 2, true), Change::Still) << "the same inputs, held: no change was going on";
     in.material.shininess += 1.0f;
-    EXPECT_TRUE(watch.changing(in, 3));
+    EXPECT_EQ(watch.observe(in, 3, true), Change::Changed);
+    EXPECT_EQ(watch.observe(in, 4, true), Change::Held) << "the drag paused, the slider still held";
+    EXPECT_EQ(watch.observe(in, 5, true), Change::Held);
+    EXPECT_EQ(watch.observe(in, 6, false), Change::Still) << "released";
     in.material.shininess += 1.0f;
-    EXPECT_FALSE(watch.changing(in, 5)) << "a frame without the view in between";
+    EXPECT_EQ(watch.observe(in, 7, false), Change::Changed) << "a key or a typed value";
+    EXPECT_EQ(watch.observe(in, 8, false), Change::Still);
+    in.material.shininess += 1.0f;
+    EXPECT_EQ(watch.observe(in, 10, false), Change::Still) << "a frame without the view in between";
     in.incidentDeg = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_FALSE(watch.changing(in, 6));
-    EXPECT_FALSE(watch.changing(in, 7));
+    EXPECT_EQ(watch.observe(in, 11, true), Change::Still);
+    EXPECT_EQ(watch.observe(in, 12, true), Change::Still);
 }
 
 TEST(PlotPanel, RecentlyUsedReplacesTheOldestAndKeepsWhatWasHandedOut) {
@@ -391,11 +399,15 @@ TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
     Preset a;
     a.brdf = BrdfModel::CookTorrance;
     double now = 10.0;
-    auto frame = [&](float shininess) {
-        cache.beginFrame();
+    const LobeInputs inB = lobeInputs(Preset{}, 30.0f);
+    auto frame = [&](float shininess, bool held = false) {
+        cache.beginFrame(held);
         a.material.shininess = shininess;
         a.cookTorrance.roughness = 0.1f + shininess / 1000.0f; // the BRDF in use changes too
-        return cache.laggingAlbedo(Slot::A, lobeInputs(a, 30.0f), now);
+        const ui::Lagged<std::optional<Albedo>> shown = cache.laggingAlbedo(Slot::PlaneA, lobeInputs(a, 30.0f), now);
+        // B's readout has its own slot: A's change does not keep it waiting.
+        EXPECT_FALSE(cache.laggingAlbedo(Slot::PlaneB, inB, now).stale);
+        return shown;
     };
     const ui::Lagged<std::optional<Albedo>> first = frame(10.0f);
     EXPECT_FALSE(first.stale) << "nothing to show yet: computed at once";
@@ -425,16 +437,22 @@ TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
     EXPECT_FALSE(after.stale);
     EXPECT_FALSE(cache.owed()) << "exact: no further frame is owed";
     EXPECT_EQ(after.value->value().total(), lab::albedo(lobeInputs(a, 30.0f))->total());
-    // B's readout has its own slot: A's change does not keep it waiting.
-    const ui::Lagged<std::optional<Albedo>> b = cache.laggingAlbedo(Slot::B, lobeInputs(Preset{}, 30.0f), now);
-    EXPECT_FALSE(b.stale);
+    // A drag that pauses with the slider held: still stale, and no frame owed (the release is an
+    // input and draws one); released, exact.
+    frame(200.0f, true);
+    const ui::Lagged<std::optional<Albedo>> paused = frame(200.0f, true);
+    EXPECT_TRUE(paused.stale) << "the change is not over while the slider is held";
+    EXPECT_FALSE(cache.owed()) << "no frames while the pointer holds still";
+    const ui::Lagged<std::optional<Albedo>> released = frame(200.0f, false);
+    EXPECT_FALSE(released.stale);
+    EXPECT_EQ(released.value->value().total(), lab::albedo(lobeInputs(a, 30.0f))->total());
 
     // ρ(θi) (90 albedos) is never computed during the change, only once it holds still.
     ui::PlotCache curves;
     auto curveFrame = [&](float shininess) {
         curves.beginFrame();
         a.material.shininess = shininess;
-        return curves.laggingAlbedoCurve(Slot::A, lobeInputs(a, 0.0f), now);
+        return curves.laggingAlbedoCurve(Slot::EnergyA, lobeInputs(a, 0.0f), now);
     };
     const auto firstCurve = curveFrame(10.0f);
     EXPECT_FALSE(firstCurve.stale);
@@ -450,6 +468,16 @@ TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
     EXPECT_FALSE(curves.owed());
     EXPECT_EQ(exact.value->size(), lab::albedoCurve(lobeInputs(a, 0.0f)).size());
     EXPECT_EQ(exact.value->back().albedo.total(), lab::albedoCurve(lobeInputs(a, 0.0f)).back().albedo.total());
+    // Dragging θi by whole degrees with the curve kept (the Energy view): the numbers come from the
+    // curve, never stale, exactly the albedo at that angle.
+    for (int deg = 10; deg <= 40; ++deg) {
+        curves.beginFrame(true);
+        const float signedDeg = deg % 2 == 0 ? float(deg) : -float(deg);
+        const auto at = curves.laggingAlbedo(Slot::EnergyA, lobeInputs(a, signedDeg), now);
+        ASSERT_FALSE(at.stale) << deg;
+        EXPECT_EQ(at.value->value().total(), lab::albedo(lobeInputs(a, signedDeg))->total()) << deg;
+    }
+    EXPECT_FALSE(curves.owed());
 }
 
 // The panel during a drag, one frame per change as the app draws it: each view owes a frame while

@@ -3,6 +3,7 @@
 
 #include "core/plots/plot_layout.h"
 
+#include <cmath>
 #include <limits>
 
 namespace lab::ui {
@@ -34,9 +35,21 @@ bool operator==(const PlotCache::AttenuationKey& x, const PlotCache::Attenuation
     return x.coefficients == y.coefficients && x.maxDistance == y.maxDistance && x.at == y.at;
 }
 
+bool PlotCache::drafts(std::array<ChangeWatch, 3>& watches, const std::array<LobeInputs, 3>& inputs) {
+    bool changed = false, changing = false, kept = true;
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        const Change change = observe(watches[i], inputs[i]);
+        changed = changed || change == Change::Changed;
+        changing = changing || change != Change::Still;
+        kept = kept && samples_.find(inputs[i]) != nullptr;
+    }
+    const bool draft = changing && !kept;
+    owed_ = owed_ || (draft && changed);
+    return draft;
+}
+
 PlotCache::Samples PlotCache::samples(const LobeInputs& inputs, bool draft) {
     if (draft) {
-        owed_ = true; // the frame after the change draws the samples themselves
         return drafts_.get(inputs, [&] { return reflectedIntensity(inputs, kDraftStepDeg); });
     }
     return samples_.get(inputs, [&] { return reflectedIntensity(inputs); });
@@ -54,28 +67,39 @@ PlotCache::AlbedoCurve PlotCache::albedoCurve(LobeInputs inputs) {
 template <class Value, class Make>
 Lagged<Value> PlotCache::lagging(LagSlot<Value>& slot, RecentlyUsed<LobeInputs, Value>& kept, const LobeInputs& inputs,
                                  double now, double interval, Make&& make) {
-    const bool changing = slot.watch.changing(inputs, frame_);
+    const Change change = slot.watch.observe(inputs, frame_, held_);
     if (std::shared_ptr<const Value> found = kept.find(inputs)) {
         slot.shown = found;
         return {found, false};
     }
-    if (!slot.shown || !changing || now - slot.computedAt >= interval) {
+    if (!slot.shown || change == Change::Still || now - slot.computedAt >= interval) {
         slot.shown = kept.get(inputs, make);
         slot.computedAt = now;
         return {slot.shown, false};
     }
-    owed_ = true;
+    owed_ = owed_ || change == Change::Changed;
     return {slot.shown, true};
 }
 
 Lagged<std::optional<Albedo>> PlotCache::laggingAlbedo(Slot slot, const LobeInputs& inputs, double now) {
+    // ρ(θi) holds the albedo at every whole degree (the same function of the same inputs): where a
+    // kept curve has it, the number is found rather than computed or waited for (dragging θi in the
+    // Energy view).
+    const float deg = std::fabs(inputs.incidentDeg);
+    if (deg < 90.0f && deg == std::floor(deg) && !albedo_.find(inputs)) {
+        LobeInputs anyAngle = inputs;
+        anyAngle.incidentDeg = 0.0f;
+        if (const AlbedoCurve curve = albedoCurves_.find(anyAngle)) {
+            albedo_.get(inputs, [&] { return std::optional<Albedo>((*curve)[static_cast<std::size_t>(deg)].albedo); });
+        }
+    }
     return lagging(albedoSlots_[static_cast<std::size_t>(slot)], albedo_, inputs, now, kAlbedoLagSeconds,
                    [&] { return lab::albedo(inputs); });
 }
 
 Lagged<std::vector<AlbedoSample>> PlotCache::laggingAlbedoCurve(Slot slot, LobeInputs inputs, double now) {
     inputs.incidentDeg = 0.0f; // the curve covers every angle
-    // ρ(θi) is 90 albedos: never during a change, only once it holds still.
+    // ρ(θi) is 90 albedos: never during a change, only once it is over.
     return lagging(curveSlots_[static_cast<std::size_t>(slot)], albedoCurves_, inputs, now,
                    std::numeric_limits<double>::infinity(), [&] { return lab::albedoCurve(inputs); });
 }

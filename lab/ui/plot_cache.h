@@ -93,58 +93,72 @@ template <class Value> struct Lagged {
     bool stale = false;
 };
 
-// Whether one plot's inputs change frame after frame, as they do during a drag: they differ from the
-// ones the previous frame asked for (a view just opened, or back after frames without it, is not
-// changing: it computes at once).
+// Whether one plot's inputs are in the middle of a change, as during a drag:
+//   * Changed: they differ from the ones the previous frame asked for (a view just opened, or back
+//     after frames without it, is not changing: it computes at once);
+//   * Held: the same as the previous frame's, but the pointer still holds the widget of a change
+//     that was going on (a drag paused: it is not over until the release, which is an input and so
+//     draws a frame);
+//   * Still: otherwise — the change is over.
+// Inputs with a NaN equal nothing, not even themselves: they are never a change (a readout computes
+// at once rather than owing frames for ever).
+enum class Change { Still, Changed, Held };
 class ChangeWatch {
 public:
-    // Inputs with a NaN equal nothing, not even themselves: they are never "changing" (a readout
-    // computes at once rather than owing frames for ever).
-    bool changing(const LobeInputs& inputs, std::uint64_t frame) {
-        const bool changed = last_ && lastFrame_ + 1 == frame && !(*last_ == inputs) && inputs == inputs;
+    // This frame's inputs (and whether the pointer holds a widget): records them, says which it is.
+    Change observe(const LobeInputs& inputs, std::uint64_t frame, bool held) {
+        const bool consecutive = last_ && lastFrame_ + 1 == frame;
+        const bool differs = consecutive && !(*last_ == inputs) && inputs == inputs;
+        change_ = differs ? Change::Changed : held && consecutive && change_ != Change::Still && *last_ == inputs ? Change::Held : Change::Still;
         last_ = inputs;
         lastFrame_ = frame;
-        return changed;
+        return change_;
     }
 
 private:
     std::optional<LobeInputs> last_;
     std::uint64_t lastFrame_ = 0;
+    Change change_ = Change::Still;
 };
 
 class PlotCache {
 public:
-    // The expensive readouts (the albedo, about 0.5 ms; ρ(θi), 90 albedos) lag while their inputs
-    // change frame after frame, as they do during a drag: while the inputs differ from the ones the
-    // previous frame asked for, the frame shows the latest value computed (stale); it is computed
-    // again once the inputs hold still for a frame (or at once when the previous frame did not ask:
-    // a view just opened) — or, for the albedo at one angle, at most every kAlbedoLagSeconds during
-    // the change. A stale value makes the cache owed(): the app draws another frame, so the exact
+    // The expensive readouts (the albedo, about 0.5 ms; ρ(θi), 90 albedos) lag during a change (a
+    // drag: ChangeWatch): the frame shows the latest value computed (stale), computed again once the
+    // change is over (or at once when the previous frame did not ask: a view just opened) — or, for
+    // the albedo at one angle, at most every kAlbedoLagSeconds during the change. A stale value in a
+    // frame whose inputs changed makes the cache owed(): the app draws another frame, so the exact
     // value is on screen within one frame of the end of the change, with no input to ask for it (the
-    // page has no threads: this is how it is done there too). Each readout has its own slot (A's,
-    // B's), so that A's changes do not keep B's waiting.
+    // page has no threads: this is how it is done there too); while a paused drag holds, the release
+    // draws that frame. Each readout has its own slot (each view's A and B), so that A's changes do
+    // not keep B's waiting and one view's inputs do not make another's look changed.
     static constexpr double kAlbedoLagSeconds = 0.5;
-    enum class Slot { A, B };
-    // Clears owed(); plotsPanel calls it first each frame.
-    void beginFrame() {
+    enum class Slot { PlaneA, PlaneB, EnergyA, EnergyB };
+    // Clears owed(); plotsPanel calls it first each frame, saying whether the pointer holds a widget
+    // (a mouse button or finger down on an active one).
+    void beginFrame(bool held = false) {
         owed_ = false;
+        held_ = held;
         ++frame_;
     }
     // Some readout drawn since beginFrame() was stale: another frame is due.
     bool owed() const { return owed_; }
-    // For views that keep their own drafts (the 3D lobe): this frame's number, and a frame owed.
-    std::uint64_t frame() const { return frame_; }
+    // For views that keep their own drafts (the 3D lobe, the overlay): where `inputs` stand in a
+    // change (observed by `watch`), and a frame owed.
+    Change observe(ChangeWatch& watch, const LobeInputs& inputs) { return watch.observe(inputs, frame_, held_); }
     void owe() { owed_ = true; }
 
     using Samples = std::shared_ptr<const std::vector<PlotSample>>;
     using Points = std::shared_ptr<const std::vector<glm::vec2>>;
 
     // reflectedIntensity(inputs), or a draft of it: every kDraftStepDeg degrees (kept apart, so that
-    // drafts never push out what the plots keep; a draft owes a frame).
+    // drafts never push out what the plots keep).
     static constexpr int kDraftStepDeg = 3;
     Samples samples(const LobeInputs& inputs, bool draft = false);
-    // Whether the samples for `inputs` (every degree) are kept: a draft is not needed then.
-    bool hasSamples(const LobeInputs& inputs) { return samples_.find(inputs) != nullptr; }
+    // Whether lobes drawn together (the overlay's three) are drawn from drafts: during a change of
+    // any of them (observed by its watch), unless all are kept in full; a frame whose inputs changed
+    // then owes the frame after.
+    bool drafts(std::array<ChangeWatch, 3>& watches, const std::array<LobeInputs, 3>& inputs);
     // albedo(inputs): the energy readout's numbers (nullopt at ±90°).
     using Albedos = std::shared_ptr<const std::optional<Albedo>>;
     Albedos albedo(const LobeInputs& inputs);
@@ -198,9 +212,9 @@ private:
     RecentlyUsed<LobeInputs, std::vector<AlbedoSample>> albedoCurves_{4}; // A and B, against θi
     RecentlyUsed<LobeKey, std::vector<glm::vec2>> lobes_{32};
     RecentlyUsed<AttenuationKey, std::vector<glm::vec2>> attenuation_{4};
-    std::array<LagSlot<std::optional<Albedo>>, 2> albedoSlots_;
-    std::array<LagSlot<std::vector<AlbedoSample>>, 2> curveSlots_;
-    bool owed_ = false;
+    std::array<LagSlot<std::optional<Albedo>>, 4> albedoSlots_;
+    std::array<LagSlot<std::vector<AlbedoSample>>, 4> curveSlots_;
+    bool owed_ = false, held_ = false;
     std::uint64_t frame_ = 0;
 };
 

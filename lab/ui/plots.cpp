@@ -32,7 +32,8 @@ const ViewEntry kViews[] = {
 } // namespace
 
 void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe, const ProbeLobe* point) {
-    s.cache.beginFrame();
+    // A change in progress is not over while the pointer holds the widget making it (PlotCache).
+    s.cache.beginFrame(ImGui::IsMouseDown(ImGuiMouseButton_Left) && ImGui::IsAnyItemActive());
     // The selector's row as low as the text allows (a row less for the views below it): thinner
     // tabs, the views' own widgets at the usual padding.
     const ImVec2 padding = ImGui::GetStyle().FramePadding;

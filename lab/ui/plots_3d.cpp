@@ -431,16 +431,13 @@ void pointTokens(Readout& r, const ProbeLobe& at) {
     r.lineBreak();
 }
 
-// The grid for `inputs`: the full one, or the draft while they change frame after frame and the full
-// one is not kept (the frame after owes the full one).
+// The grid for `inputs`: the full one, or the draft during a change when the full one is not kept
+// (a frame whose inputs changed owes the frame after, which draws the full one).
 std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, const LobeInputs& inputs, bool& draft) {
     Lobe3dState& st = s.lobe3d;
-    draft = false;
-    if (watch.changing(inputs, s.cache.frame())) {
-        if (std::shared_ptr<const HemisphereGrid> full = st.grids.find({inputs, false})) {
-            return full;
-        }
-        draft = true;
+    const Change change = s.cache.observe(watch, inputs);
+    draft = change != Change::Still && !st.grids.find({inputs, false});
+    if (draft && change == Change::Changed) {
         s.cache.owe();
     }
     return st.grids.get({inputs, draft}, [&] { return sampleHemisphere(inputs, draft ? kLobeDraftGrid : kLobeGrid); });
@@ -451,10 +448,10 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
     v.a = &a;
     Lobe3dState& st = s.lobe3d;
     v.inA = point ? probeLobeInputs(a, *point) : lobeInputs(a, a.plotIncidentDeg);
-    v.gridA = grid(s, st.changingA, v.inA, v.draftA);
+    v.gridA = grid(s, st.watchA, v.inA, v.draftA);
     if (b) {
         v.inB = point ? probeLobeInputs(*b, *point) : lobeInputs(*b, a.plotIncidentDeg);
-        v.gridB = grid(s, st.changingB, v.inB, v.draftB);
+        v.gridB = grid(s, st.watchB, v.inB, v.draftB);
     }
     v.viewer = point ? point->viewer : outgoingDirection(std::fabs(s.viewerDeg), s.viewerDeg >= 0.0f ? 0.0f : 180.0f);
     v.atPoint = point != nullptr;

@@ -15,9 +15,9 @@
 // the projected, sorted mesh once per view (inputs, component, scale, camera and canvas), both
 // kept in Lobe3dState's cache with the peak: a frame in which nothing changed copies the kept
 // mesh (the surface and the map are 8,281 vertices each: ImGui's 16-bit indices have room). While
-// the inputs change frame after frame (a drag: ui/plot_cache.h's ChangeWatch), the view draws the
-// draft grid (kLobeDraftGrid, 589 samples) and its peak, the numbers muted, and owes the app a
-// frame: the next frame whose inputs held still draws the full grid. What it does not do: call GL
+// the inputs change (a drag: ui/plot_cache.h's ChangeWatch), the view draws the draft grid
+// (kLobeDraftGrid, 589 samples) and its peak, the numbers muted, and owes the app a frame: the first
+// frame after the change draws the full grid. What it does not do: call GL
 // (ImGui draw lists only), or scroll (it fits the region it is given).
 #pragma once
 
@@ -69,7 +69,7 @@ struct Lobe3dState {
     RecentlyUsed<GridKey, HemisphereGrid> grids{6};
     RecentlyUsed<Lobe3dKey, Lobe3dMesh> meshes{2};
     RecentlyUsed<std::pair<GridKey, PlotComponent>, LobeMaximum> peaks{2}; // A's, for the readout
-    ChangeWatch changingA, changingB;
+    ChangeWatch watchA, watchB; // whether A's and B's inputs are in a change (a draft then)
     // How many grids, meshes and peaks were computed rather than found (for the tests).
     std::size_t computed() const { return grids.made() + meshes.made() + peaks.made(); }
 };

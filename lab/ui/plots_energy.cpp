@@ -143,14 +143,14 @@ void energyPanel(Preset& a, const Preset* b, PlotSettings& s) {
     // The curves and the numbers lag while the material changes frame after frame (PlotCache).
     const double now = ImGui::GetTime();
     using Slot = PlotCache::Slot;
-    const Lagged<std::vector<AlbedoSample>> curveA = s.cache.laggingAlbedoCurve(Slot::A, lobeInputs(a, 0.0f), now);
-    const Lagged<std::vector<AlbedoSample>> curveB = b ? s.cache.laggingAlbedoCurve(Slot::B, lobeInputs(*b, 0.0f), now)
+    const Lagged<std::vector<AlbedoSample>> curveA = s.cache.laggingAlbedoCurve(Slot::EnergyA, lobeInputs(a, 0.0f), now);
+    const Lagged<std::vector<AlbedoSample>> curveB = b ? s.cache.laggingAlbedoCurve(Slot::EnergyB, lobeInputs(*b, 0.0f), now)
                                                        : Lagged<std::vector<AlbedoSample>>{};
     // The numbers and the dots at the incident angle itself (the plane plots' readout has the same).
-    const Lagged<std::optional<Albedo>> atA = s.cache.laggingAlbedo(Slot::A, lobeInputs(a, a.plotIncidentDeg), now);
-    const Lagged<std::optional<Albedo>> atB = b ? s.cache.laggingAlbedo(Slot::B, lobeInputs(*b, a.plotIncidentDeg), now)
+    const Lagged<std::optional<Albedo>> atA = s.cache.laggingAlbedo(Slot::EnergyA, lobeInputs(a, a.plotIncidentDeg), now);
+    const Lagged<std::optional<Albedo>> atB = b ? s.cache.laggingAlbedo(Slot::EnergyB, lobeInputs(*b, a.plotIncidentDeg), now)
                                                 : Lagged<std::optional<Albedo>>{};
-    const bool stale = curveA.stale || curveB.stale || atA.stale || atB.stale;
+    const bool stale = atA.stale || atB.stale; // the numbers; a dot also waits for its curve
     const ImVec2 room = ImGui::GetContentRegionAvail();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     // The full readout where it leaves the curves at least 8 lines, else the numbers only; the
@@ -174,8 +174,8 @@ void energyPanel(Preset& a, const Preset* b, PlotSettings& s) {
     const Canvas canvas = beginCanvas("energy", "plot.energy", room.x, canvasH);
     if (canvas.shown()) {
         const std::optional<Albedo> none;
-        energyCanvas(canvas, *curveA.value, curveB.value.get(), stale ? none : *atA.value,
-                     stale ? nullptr : atB.value.get(), a);
+        energyCanvas(canvas, *curveA.value, curveB.value.get(), atA.stale || curveA.stale ? none : *atA.value,
+                     atB.stale || curveB.stale ? nullptr : atB.value.get(), a);
     }
 }
 

@@ -132,8 +132,8 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p,
     scaleTokens(l.readout, l.outer, l.largest, s.lockScale, b ? "max total of A and B" : "max total");
     l.readout.lineBreak();
     const double now = ImGui::GetTime();
-    const Lagged<std::optional<Albedo>> albedoA = s.cache.laggingAlbedo(PlotCache::Slot::A, l.inA, now);
-    const Lagged<std::optional<Albedo>> albedoB = b ? s.cache.laggingAlbedo(PlotCache::Slot::B, l.inB, now)
+    const Lagged<std::optional<Albedo>> albedoA = s.cache.laggingAlbedo(PlotCache::Slot::PlaneA, l.inA, now);
+    const Lagged<std::optional<Albedo>> albedoB = b ? s.cache.laggingAlbedo(PlotCache::Slot::PlaneB, l.inB, now)
                                                     : Lagged<std::optional<Albedo>>{};
     albedoTokens(l.readout, albedoA, b ? &albedoB : nullptr, l.incident);
     l.readout.measure(p);
@@ -142,15 +142,12 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p,
 
 Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
     Overlay o;
-    // While the lobes change frame after frame (a drag), a draft of them (every 3rd degree, owing a
-    // frame), its readout muted; the frame after the change draws them from every degree.
-    bool changing = false, kept = true;
+    // During a change (a drag), a draft of the three (every 3rd degree: all three, so that they share
+    // one scale), its readout muted; the first frame after the change (owed) draws them in full.
     for (std::size_t i = 0; i < 3; ++i) {
         o.inputs[i] = lobeInputs(a, s.overlayDeg[static_cast<int>(i)]);
-        changing = s.overlayChanges[i].changing(o.inputs[i], s.cache.frame()) || changing;
-        kept = kept && s.cache.hasSamples(o.inputs[i]);
     }
-    o.draft = changing && !kept;
+    o.draft = s.cache.drafts(s.overlayChanges, o.inputs);
     for (std::size_t i = 0; i < 3; ++i) {
         o.sets[i] = s.cache.samples(o.inputs[i], o.draft);
     }
