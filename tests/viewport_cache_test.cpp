@@ -119,6 +119,33 @@ TEST_F(ViewCacheTest, AMovingLightOnASlowMachineIsDrawnSmallerAndFullOnceItStops
     EXPECT_FALSE(frame({}, 0.3f).viewportDrawn) << "the light stands still: nothing to draw";
 }
 
+// Issue 28, the app's side of the plots' lag: each frame of a slider drag that changes the
+// material owes the next frame (redrawIn 0: the lagging readouts become exact without input); a
+// drag paused with the slider held owes nothing (idle); the release draws the exact frame, after
+// which the app is idle again.
+TEST_F(ViewCacheTest, ADragOwesAFrameWhileItChangesTheMaterialAndNothingWhileItPauses) {
+    const ui::Rect* found = ui::widgets().find("material.shininess");
+    ASSERT_NE(found, nullptr);
+    const ui::Rect slider = *found;
+    const float x = slider.x + slider.w * 0.3f, y = slider.y + slider.h / 2;
+    frame({InputEvent::move(x, y)});
+    frame({InputEvent::button(0, true, x, y)});
+    for (int i = 1; i <= 6; ++i) {
+        EXPECT_EQ(frame({InputEvent::move(x + 6.0f * i, y)}).redrawIn, 0.0f) << "frame " << i << " of the drag";
+    }
+    FrameOutput paused;
+    for (int i = 0; i < 4; ++i) {
+        paused = frame();
+    }
+    EXPECT_NE(paused.redrawIn, 0.0f) << "a paused drag owes no frames";
+    frame({InputEvent::button(0, false, x + 36.0f, y)});
+    FrameOutput after;
+    for (int i = 0; i < 4; ++i) {
+        after = frame();
+    }
+    EXPECT_NE(after.redrawIn, 0.0f) << "after the release the app is idle";
+}
+
 TEST_F(ViewCacheTest, FastFramesKeepFullResolutionWhileDragging) {
     float cx = view_.x + view_.w / 2, cy = view_.y + view_.h / 2;
     frame({InputEvent::move(cx, cy)});

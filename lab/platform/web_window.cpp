@@ -14,8 +14,9 @@
 //     events (app/touch.h); on a touch screen the UI is touch-sized, and while a text field has
 //     the keyboard the page focuses a hidden text input so that the screen's keyboard shows
 //     (its text comes back through lab_text and lab_backspace);
-//   * the mouse wheel in notches, as desktop GLFW gives it (up +1): the browser's wheel event read
-//     here (Debian's Emscripten 3.1.6 GLFW passes the raw deltaY: reversed, 100 a notch);
+//   * the mouse wheel in notches, as desktop GLFW gives it (up +1): the page reads the browser's
+//     wheel event and hands it to lab_wheel (Debian's Emscripten 3.1.6 GLFW passes the raw deltaY:
+//     reversed, 100 a notch; its listener never sees the event);
 //   * "Copy link" puts the page's address, whose fragment is the scene, on the clipboard;
 //   * the current scene is kept in the URL fragment (history.replaceState, a shareable link)
 //     and in localStorage, so a reload restores it; a hashchange opens the new link.
@@ -140,17 +141,6 @@ struct WebState : PlatformInput {
 };
 
 WebState* gState = nullptr;
-
-// One wheel event in notches, signed as desktop GLFW reports a mouse wheel (up positive). A
-// notch is 100 pixels in Chromium (deltaMode 0) and 3 lines in Firefox (deltaMode 1); a touchpad
-// sends fractions of one.
-EM_BOOL onWheel(int, const EmscriptenWheelEvent* e, void* user) {
-    const double perNotch = e->deltaMode == DOM_DELTA_PIXEL ? 100.0 : e->deltaMode == DOM_DELTA_LINE ? 3.0 : 1.0;
-    auto& s = *static_cast<WebState*>(user);
-    s.queue.push(InputEvent::scroll(static_cast<float>(-e->deltaX / perNotch), static_cast<float>(-e->deltaY / perNotch)));
-    s.changed = true;
-    return EM_TRUE; // the page itself does not scroll
-}
 
 // A file from outside (dropped or picked) moves next to the bundled presets.
 std::string adopt(const std::string& path) {
@@ -324,6 +314,13 @@ EMSCRIPTEN_KEEPALIVE void lab_open_link(const char* link) {
     }
 }
 // For browser tests: the frames drawn so far (an idle page draws none).
+// One wheel event from the page, in notches, signed as desktop GLFW reports a mouse wheel (up positive).
+EMSCRIPTEN_KEEPALIVE void lab_wheel(float dx, float dy) {
+    if (gState) {
+        gState->queue.push(InputEvent::scroll(dx, dy));
+        gState->changed = true;
+    }
+}
 EMSCRIPTEN_KEEPALIVE int lab_frames() { return gState ? gState->frames : 0; }
 // For browser tests: 1 when the lab has handled everything it was given and owes no frame.
 EMSCRIPTEN_KEEPALIVE int lab_settled() {
@@ -357,9 +354,6 @@ WindowResult runLab(const AppOptions& options, const WindowOptions&, std::string
     auto* s = new WebState(options);
     s->window = window;
     s->backend = std::make_unique<GlfwBackend>(window, s);
-    if (emscripten_set_wheel_callback("#canvas", s, EM_FALSE, onWheel) == EMSCRIPTEN_RESULT_SUCCESS) {
-        glfwSetScrollCallback(window, nullptr); // the wheel is read from the page's own event (onWheel)
-    }
     gState = s;
     labJsMark("context");
     if (!s->host.start(s->app, error)) {
