@@ -109,7 +109,8 @@ public:
     Change observe(const LobeInputs& inputs, std::uint64_t frame, bool held) {
         const bool consecutive = last_ && lastFrame_ + 1 == frame;
         const bool differs = consecutive && !(*last_ == inputs) && inputs == inputs;
-        change_ = differs ? Change::Changed : held && consecutive && change_ != Change::Still && *last_ == inputs ? Change::Held : Change::Still;
+        const bool paused = held && consecutive && change_ != Change::Still && *last_ == inputs;
+        change_ = differs ? Change::Changed : paused ? Change::Held : Change::Still;
         last_ = inputs;
         lastFrame_ = frame;
         return change_;
