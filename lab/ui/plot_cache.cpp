@@ -55,15 +55,6 @@ PlotCache::Samples PlotCache::samples(const LobeInputs& inputs, bool draft) {
     return samples_.get(inputs, [&] { return reflectedIntensity(inputs); });
 }
 
-PlotCache::Albedos PlotCache::albedo(const LobeInputs& inputs) {
-    return albedo_.get(inputs, [&] { return lab::albedo(inputs); });
-}
-
-PlotCache::AlbedoCurve PlotCache::albedoCurve(LobeInputs inputs) {
-    inputs.incidentDeg = 0.0f; // the curve covers every angle
-    return albedoCurves_.get(inputs, [&] { return lab::albedoCurve(inputs); });
-}
-
 template <class Value, class Make>
 Lagged<Value> PlotCache::lagging(LagSlot<Value>& slot, RecentlyUsed<LobeInputs, Value>& kept, const LobeInputs& inputs,
                                  double now, double interval, Make&& make) {

@@ -160,18 +160,15 @@ public:
     // any of them (observed by its watch), unless all are kept in full; a frame whose inputs changed
     // then owes the frame after.
     bool drafts(std::array<ChangeWatch, 3>& watches, const std::array<LobeInputs, 3>& inputs);
-    // albedo(inputs): the energy readout's numbers (nullopt at ±90°).
-    using Albedos = std::shared_ptr<const std::optional<Albedo>>;
-    Albedos albedo(const LobeInputs& inputs);
-    // albedoCurve(inputs): ρ for θi = 0°…89° (the Energy view; inputs.incidentDeg is not part of the key).
     using AlbedoCurve = std::shared_ptr<const std::vector<AlbedoSample>>;
-    AlbedoCurve albedoCurve(LobeInputs inputs);
     // The screen points of one component of the lobe `inputs`, the outer ring at `outer`, thinned.
     Points lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
                 const CurvePlacement& at, bool draft = false);
     // Att(d) for d in [0, maxDistance] (attenuationCurve, 200 samples), thinned.
     Points attenuation(const glm::vec3& coefficients, float maxDistance, const CurvePlacement& at);
-    // albedo() and albedoCurve() as readouts that lag during a change (above); `now` in seconds.
+    // The albedo (core/plots/energy.h: the energy readouts' numbers, nullopt at ±90°) and ρ(θi) for
+    // θi = 0°…89° (the Energy view; inputs.incidentDeg is not part of its key), as readouts that lag
+    // during a change (above); `now` in seconds.
     Lagged<std::optional<Albedo>> laggingAlbedo(Slot slot, const LobeInputs& inputs, double now);
     Lagged<std::vector<AlbedoSample>> laggingAlbedoCurve(Slot slot, LobeInputs inputs, double now);
 
