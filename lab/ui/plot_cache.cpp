@@ -36,16 +36,16 @@ bool operator==(const PlotCache::AttenuationKey& x, const PlotCache::Attenuation
 }
 
 bool PlotCache::drafts(std::array<ChangeWatch, 3>& watches, const std::array<LobeInputs, 3>& inputs) {
-    bool changed = false, changing = false, kept = true;
+    Change change = Change::Still; // the strongest of the three: Changed, else Held, else Still
+    bool kept = true;
     for (std::size_t i = 0; i < inputs.size(); ++i) {
-        const Change change = observe(watches[i], inputs[i]);
-        changed = changed || change == Change::Changed;
-        changing = changing || change != Change::Still;
+        const Change c = observe(watches[i], inputs[i]);
+        if (c == Change::Changed || (c == Change::Held && change == Change::Still)) {
+            change = c;
+        }
         kept = kept && samples_.find(inputs[i]) != nullptr;
     }
-    const bool draft = changing && !kept;
-    owed_ = owed_ || (draft && changed);
-    return draft;
+    return draft(change, kept);
 }
 
 PlotCache::Samples PlotCache::samples(const LobeInputs& inputs, bool draft) {

@@ -144,10 +144,15 @@ public:
     }
     // Some readout drawn since beginFrame() was stale: another frame is due.
     bool owed() const { return owed_; }
-    // For views that keep their own drafts (the 3D lobe, the overlay): where `inputs` stand in a
-    // change (observed by `watch`), and a frame owed.
+    // For views that keep their own drafts (the 3D lobe): where `inputs` stand in a change (observed
+    // by `watch`), and whether to draw a draft: during a change, unless the full result is kept; a
+    // draft in a frame whose inputs changed owes the frame after (a paused drag's release draws it).
     Change observe(ChangeWatch& watch, const LobeInputs& inputs) { return watch.observe(inputs, frame_, held_); }
-    void owe() { owed_ = true; }
+    bool draft(Change change, bool keptInFull) {
+        const bool drawDraft = change != Change::Still && !keptInFull;
+        owed_ = owed_ || (drawDraft && change == Change::Changed);
+        return drawDraft;
+    }
 
     using Samples = std::shared_ptr<const std::vector<PlotSample>>;
     using Points = std::shared_ptr<const std::vector<glm::vec2>>;
@@ -156,9 +161,8 @@ public:
     // drafts never push out what the plots keep).
     static constexpr int kDraftStepDeg = 3;
     Samples samples(const LobeInputs& inputs, bool draft = false);
-    // Whether lobes drawn together (the overlay's three) are drawn from drafts: during a change of
-    // any of them (observed by its watch), unless all are kept in full; a frame whose inputs changed
-    // then owes the frame after.
+    // Whether lobes drawn together (the overlay's three) are drawn from drafts: draft() for the
+    // change of any of them (observed by its watch), kept in full when all are.
     bool drafts(std::array<ChangeWatch, 3>& watches, const std::array<LobeInputs, 3>& inputs);
     using AlbedoCurve = std::shared_ptr<const std::vector<AlbedoSample>>;
     // The screen points of one component of the lobe `inputs`, the outer ring at `outer`, thinned.

@@ -435,11 +435,7 @@ void pointTokens(Readout& r, const ProbeLobe& at) {
 // (a frame whose inputs changed owes the frame after, which draws the full one).
 std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, const LobeInputs& inputs, bool& draft) {
     Lobe3dState& st = s.lobe3d;
-    const Change change = s.cache.observe(watch, inputs);
-    draft = change != Change::Still && !st.grids.find({inputs, false});
-    if (draft && change == Change::Changed) {
-        s.cache.owe();
-    }
+    draft = s.cache.draft(s.cache.observe(watch, inputs), st.grids.find({inputs, false}) != nullptr);
     return st.grids.get({inputs, draft}, [&] { return sampleHemisphere(inputs, draft ? kLobeDraftGrid : kLobeGrid); });
 }
 
