@@ -187,11 +187,9 @@ void wireframe(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) 
     static_assert(15 % kLobeGrid.thetaDeg == 0 && 15 % kLobeDraftGrid.thetaDeg == 0 && 24 % kLobeGrid.phiDeg == 0 &&
                   24 % kLobeDraftGrid.phiDeg == 0);
     const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
-    const std::vector<float>& values = grid.component(key.component);
-    // lobeSurface's point, for the grid points on the lines only.
+    // The surface's points on the lines only.
     auto point = [&](int i, int j) {
-        const std::size_t k = static_cast<std::size_t>(grid.index(i, j));
-        return cam.at(plotRadius(values[k], key.outer, key.scale) * grid.directions[k]);
+        return cam.at(lobeSurfacePoint(grid, static_cast<std::size_t>(grid.index(i, j)), key.component, key.outer, key.scale));
     };
     const int rings = grid.rings(), meridians = grid.meridians();
     const int ringStep = 15 / grid.steps.thetaDeg, meridianStep = 24 / grid.steps.phiDeg;

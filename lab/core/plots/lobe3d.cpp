@@ -107,12 +107,15 @@ float intensityAt(const LobeInputs& inputs, const glm::vec3& V, PlotComponent co
     return componentOf(luminance(t.diffuse), luminance(t.specular), component);
 }
 
+glm::vec3 lobeSurfacePoint(const HemisphereGrid& grid, std::size_t k, PlotComponent component, float outer, RadialScale scale) {
+    return plotRadius(grid.component(component)[k], outer, scale) * grid.directions[k];
+}
+
 std::vector<glm::vec3> lobeSurface(const HemisphereGrid& grid, PlotComponent component, float outer, RadialScale scale) {
-    const std::vector<float>& values = grid.component(component);
     std::vector<glm::vec3> points;
-    points.reserve(values.size());
-    for (std::size_t k = 0; k < values.size(); ++k) {
-        points.push_back(plotRadius(values[k], outer, scale) * grid.directions[k]);
+    points.reserve(grid.directions.size());
+    for (std::size_t k = 0; k < grid.directions.size(); ++k) {
+        points.push_back(lobeSurfacePoint(grid, k, component, outer, scale));
     }
     return points;
 }

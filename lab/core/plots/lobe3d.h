@@ -20,6 +20,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <vector>
 
 namespace lab {
@@ -71,6 +72,8 @@ float intensityAt(const LobeInputs& inputs, const glm::vec3& V, PlotComponent co
 // The lobe's surface: plotRadius(I, outer, scale)·V for each grid direction, as lobePoints() makes
 // the plot's curve (the in-plane meridians are lobePoints()'s points with z = 0).
 std::vector<glm::vec3> lobeSurface(const HemisphereGrid& grid, PlotComponent component, float outer, RadialScale scale);
+// One point of it: grid sample k's.
+glm::vec3 lobeSurfacePoint(const HemisphereGrid& grid, std::size_t k, PlotComponent component, float outer, RadialScale scale);
 
 // The intensity map's disc: V seen from above N, at radius θo/90° in the direction of its azimuth
 // (x along the plane of incidence towards R, y = z of V): an azimuthal equidistant projection, so
