@@ -313,7 +313,6 @@ EMSCRIPTEN_KEEPALIVE void lab_open_link(const char* link) {
         gState->pendingLink = std::string(link);
     }
 }
-// For browser tests: the frames drawn so far (an idle page draws none).
 // One wheel event from the page, in notches, signed as desktop GLFW reports a mouse wheel (up positive).
 EMSCRIPTEN_KEEPALIVE void lab_wheel(float dx, float dy) {
     if (gState) {
@@ -321,6 +320,7 @@ EMSCRIPTEN_KEEPALIVE void lab_wheel(float dx, float dy) {
         gState->changed = true;
     }
 }
+// For browser tests: the frames drawn so far (an idle page draws none).
 EMSCRIPTEN_KEEPALIVE int lab_frames() { return gState ? gState->frames : 0; }
 // For browser tests: 1 when the lab has handled everything it was given and owes no frame.
 EMSCRIPTEN_KEEPALIVE int lab_settled() {

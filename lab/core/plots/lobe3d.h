@@ -81,8 +81,9 @@ glm::vec3 lobeSurfacePoint(const HemisphereGrid& grid, std::size_t k, PlotCompon
 glm::vec2 mapPoint(const glm::vec3& V);
 
 // Where one component is largest: the grid's largest sample, then refined by a compass search in
-// (θo, φ) from the grid's φ step down to 1e-4°. A component that does not depend on V (the diffuse term) or is 0
-// everywhere has its maximum everywhere: the search then stays at the first largest sample.
+// (θo, φ) from the grid's φ step down to 1e-4°. A component that does not depend on V (the diffuse
+// term) or is 0 everywhere has its maximum everywhere: the search then stays at the first largest
+// sample.
 struct LobeMaximum {
     glm::vec3 V{0.0f, 1.0f, 0.0f};
     float thetaDeg = 0.0f, phiDeg = 0.0f;
