@@ -307,7 +307,15 @@ std::vector<BadFile> badFiles() {
          }),
          "tolerance.fields.brdf", "needs a number or numbers; this field is a string"},
         {"FieldToleranceNegative", tolerance(R"({"fields": {"material.shininess": -1}})"),
-         "tolerance.fields.material.shininess", "expected a number >= 0, got -1"},
+         "tolerance.fields.material.shininess", "must be in [0, 1000000], got -1"},
+        // Finite as a double, infinite as the float the lab keeps (and then written as "inf" into
+        // links: `lab share` aborted on it).
+        {"FieldToleranceBeyondFloat", tolerance(R"({"fields": {"material.shininess": 1e308}})"),
+         "tolerance.fields.material.shininess", "must be in [0, 1000000], got 1e+308"},
+        {"FieldToleranceJustBeyondFloat", tolerance(R"({"fields": {"material.shininess": 3.5e38}})"),
+         "tolerance.fields.material.shininess", "must be in [0, 1000000], got 3.5e+38"},
+        {"FieldToleranceNotANumber", tolerance(R"({"fields": {"material.shininess": "8"}})"),
+         "tolerance.fields.material.shininess", "expected a number >= 0, got \"8\""},
         {"FieldsNotAnObject", tolerance(R"({"fields": ["material.shininess"]})"), "tolerance.fields",
          "expected an object of field paths and numbers"},
         {"HintsNotAnArray", set("hints", "A larger n."), "hints", "expected an array of strings, got a string"},

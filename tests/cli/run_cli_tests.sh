@@ -2,40 +2,7 @@
 # run_cli_tests.sh LAB SOURCE_DIR — the `lab` command line as a user meets it: exit status,
 # messages on stderr, files written (and not written). Run by CTest as the `cli` test.
 set -u
-lab=$1
-src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-
-# expect NAME STATUS PATTERN -- COMMAND...: runs COMMAND, checks its exit status and that its
-# output (stdout and stderr together) matches the extended regular expression PATTERN.
-expect() {
-    local name=$1 status=$2 pattern=$3
-    shift 4
-    local out rc
-    out=$("$@" 2>&1)
-    rc=$?
-    if [[ $rc -ne $status ]]; then
-        echo "FAIL $name: exit status $rc, expected $status"; echo "$out" | sed 's/^/    /'; failed=$((failed + 1)); return
-    fi
-    if ! grep -Eq -- "$pattern" <<<"$out"; then
-        echo "FAIL $name: output does not match /$pattern/"; echo "$out" | sed 's/^/    /'; failed=$((failed + 1)); return
-    fi
-    echo "ok   $name"
-    passed=$((passed + 1))
-}
-
-check() { # check NAME CONDITION...: a plain assertion
-    local name=$1
-    shift
-    if "$@"; then echo "ok   $name"; passed=$((passed + 1)); else echo "FAIL $name"; failed=$((failed + 1)); fi
-}
-
-png_size() { # prints "W H" from a PNG's IHDR
-    od -An -tu1 -j16 -N8 "$1" | awk '{print $1*16777216+$2*65536+$3*256+$4, $5*16777216+$6*65536+$7*256+$8}'
-}
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh"
 
 phong=$src/presets/05-full-phong.json
 
@@ -506,8 +473,6 @@ expect exercise-missing-title 2 'untitled\.json: title: missing' -- "$lab" exerc
 has_zbarimg() { command -v zbarimg >/dev/null; }
 check zbarimg-installed has_zbarimg
 qr_text() { zbarimg --raw -q "$1" 2>/dev/null; }
-matches() { [[ $1 =~ ^($2)$ ]]; } # matches TEXT REGEX: the whole of TEXT
-is_png() { test "$(od -An -tx1 -N8 "$1" | tr -d ' \n')" = 89504e470d0a1a0a; }
 share_case() { # share_case NAME FILE EXPECTED_LINK_REGEX: link printed, QR written and read back
     local link
     link=$("$lab" share "$2" --base "$base" --qr "$tmp/$1.png" 2>/dev/null)
@@ -535,5 +500,4 @@ check share-long-description-is-3000 python3 -c 'import json, sys; assert len(js
 expect share-too-long 2 'long\.json: the link is too long for a QR code' -- "$lab" share "$tmp/long.json" --base "$base" --qr "$tmp/long.png"
 check share-too-long-no-png test ! -e "$tmp/long.png"
 
-echo "$passed passed, $failed failed"
-[[ $failed -eq 0 ]]
+finish

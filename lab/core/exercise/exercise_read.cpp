@@ -6,6 +6,7 @@
 #include "core/io/json_text.h"
 #include "core/io/safe_text.h"
 #include "core/io/suggest.h"
+#include "core/scene/limits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -137,10 +138,13 @@ void readTolerance(const PresetJson& t, Exercise& e, const std::vector<const Pre
                 } else if (!v || !(v->is_number() || (v->is_array() && !v->empty() &&
                                                       std::all_of(v->begin(), v->end(), [](auto& x) { return x.is_number(); })))) {
                     r.error(at, "a field tolerance needs a number or numbers; this field is " + (v ? describe(*v) : "absent"));
-                } else if (!within.is_number() || !std::isfinite(within.get<double>()) || within.get<double>() < 0) {
+                } else if (!within.is_number()) {
                     r.error(at, "expected a number >= 0, got " + shortened(within.dump(), 40));
+                } else if (double d = within.get<double>(); !(d >= limits::kFieldTolerance.min && d <= limits::kFieldTolerance.max)) {
+                    // (compared as read: 1e308 becomes an infinite float, which would pass anything)
+                    r.error(at, std::string("must be ") + limits::kFieldTolerance.text + ", got " + shortened(within.dump(), 40));
                 } else {
-                    e.tolerance.fields.push_back({field, within.get<float>()});
+                    e.tolerance.fields.push_back({field, static_cast<float>(d)});
                 }
             }
             continue;

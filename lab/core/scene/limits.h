@@ -136,5 +136,8 @@ inline constexpr IntRange kLightNumber{1, kMaxLights};
 inline constexpr Range kMaxFailing{0.0f, 1.0f, false, 0.0f, 0.01f, "in [0, 1]"};
 inline constexpr Range kMaxMean{0.0f, 255.0f, false, 0.0f, 2.0f, "in [0, 255]"};
 inline constexpr Range kPlotTolerance{0.0f, 1.0e6f, false, 0.0f, 1.0e-3f, "in [0, 1000000]"};
+// An exercise's field tolerance (tolerance.fields): |attempt - target| of a field's numbers. The
+// widest range a field has (shininess, attenuation: 10^6) is its top; a float keeps it finite.
+inline constexpr Range kFieldTolerance{0.0f, 1.0e6f, false, 0.0f, 1.0f, "in [0, 1000000]"};
 
 } // namespace lab::limits
