@@ -95,5 +95,25 @@ TEST_F(Paths, CanonicalFolderResolvesLinksAndDots) {
     EXPECT_TRUE(canonicalFolder(a).is_absolute());
 }
 
+// Two paths are one file when they lead to the same inode (links, hard links, dots), or, for a file
+// that does not exist yet, to the same name in the same real folder.
+TEST_F(Paths, SameFileFollowsLinksAndComparesNamesOfFilesToCome) {
+    fs::create_hard_link(a / "model.glb", a / "hard.glb");
+    EXPECT_TRUE(sameFile(a / "model.glb", a / "sub" / ".." / "model.glb"));
+    EXPECT_TRUE(sameFile(a / "out.glb", dir.path() / "outside.glb"));           // a link to a file
+    EXPECT_TRUE(sameFile(a / "upLink" / "outside.glb", dir.path() / "outside.glb")); // through a folder link
+    EXPECT_TRUE(sameFile(a / "hard.glb", a / "model.glb"));                     // a hard link
+    EXPECT_FALSE(sameFile(a / "model.glb", a / "sub" / "deep.glb"));
+    EXPECT_TRUE(sameFile(a / "new.png", a / "subLink" / ".." / "new.png"));    // both still to come
+    EXPECT_TRUE(sameFile(a / "sub" / "new.png", a / "subLink" / "new.png"));
+    EXPECT_FALSE(sameFile(a / "new.png", a / "sub" / "new.png"));
+    EXPECT_FALSE(sameFile(a / "model.glb", a / "model.glb.png"));
+    fs::path before = fs::current_path();
+    fs::current_path(a);
+    EXPECT_TRUE(sameFile("model.glb", a / "model.glb")); // relative to the working folder
+    EXPECT_TRUE(sameFile("later.png", a / "later.png"));
+    fs::current_path(before);
+}
+
 } // namespace
 } // namespace lab

@@ -6,6 +6,7 @@
 // kept free for other views (tests/check_goldens.cmake knows all of them).
 #include "cli/commands.h"
 
+#include "cli/check_plan.h"
 #include "cli/check_report.h"
 #include "cli/command_kit.h"
 #include "cli/csv_compare.h"
@@ -87,34 +88,6 @@ Image crop(const Image& image, int x, int y, int width, int height) {
     return out;
 }
 
-// Whether `a` and `b` name one file: the same path once made absolute, or one file reached by two
-// paths (a link).
-bool sameFile(const fs::path& a, const fs::path& b) {
-    std::error_code ec;
-    return fs::absolute(a, ec).lexically_normal() == fs::absolute(b, ec).lexically_normal() || fs::equivalent(a, b, ec);
-}
-
-// A file `lab check` will write at the end (--junit, --html): refused now, before anything
-// renders, when it could not be written then. "" when it can.
-// `comingFolder` is a folder that is made before the file is written (the report folder).
-std::string unwritable(const fs::path& file, const std::optional<fs::path>& comingFolder) {
-    std::error_code ec;
-    if (fs::is_directory(file, ec)) {
-        return "is a folder";
-    }
-    fs::path parent = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-    if (comingFolder && sameFile(parent, *comingFolder)) {
-        return ""; // checked as the report folder itself
-    }
-    if (!fs::is_directory(parent, ec)) {
-        return "no such folder " + parent.string();
-    }
-    if (::access(parent.c_str(), W_OK) != 0) {
-        return "cannot write in " + parent.string() + ": " + std::strerror(errno);
-    }
-    return "";
-}
-
 // `folder` as seen from `from` (both folders), each part URL-encoded, with a trailing '/'; "" when
 // they are the same. Lexical, as a browser resolves a relative link from the path the page was
 // opened by (a folder reached through a symbolic link included).
@@ -142,28 +115,29 @@ class Checker {
 
     std::vector<CheckCase> cases;
     bool badInput = false;
+    bool writeFailed = false; // a golden or a report file that could not be written (exit status 2)
 
-    void preset(const fs::path& file, const std::optional<LoadedPreset>& loaded) {
-        std::string stem = file.stem().string();
-        if (!loaded) {
-            CheckCase c = start(CheckCase::Kind::Render, stem, file);
+    void preset(const PresetPlan& plan) {
+        if (!plan.loaded) {
+            CheckCase c = start(CheckCase::Kind::Render, plan.cases.front().name, plan.file);
             c.verdict = CheckCase::Verdict::Error;
             c.message = "the preset does not load (see above)";
             badInput = true;
             finish(c, std::chrono::steady_clock::now());
             return;
         }
-        Tolerances tolerances = tolerancesFor(loaded->preset, options_);
-        render(*loaded, stem, tolerances);
-        for (std::size_t i = 0; i < loaded->preset.check.views.size(); ++i) {
-            checkView(*loaded, stem, tolerances, i);
-        }
-        if (!loaded->preset.sweep.empty()) {
-            sweep(*loaded, stem, tolerances);
-        }
-        std::error_code ec;
-        if (options_.plots || fs::exists(options_.golden / (stem + ".plot.csv"), ec)) {
-            plot(*loaded, stem, tolerances);
+        const LoadedPreset& loaded = *plan.loaded;
+        Tolerances tolerances = tolerancesFor(loaded.preset, options_);
+        for (const PlannedCase& c : plan.cases) {
+            if (c.kind == CheckCase::Kind::SweepCell) {
+                sweep(loaded, c, tolerances);
+            } else if (c.kind == CheckCase::Kind::Plot) {
+                plot(loaded, c, tolerances);
+            } else if (c.view >= 0) {
+                checkView(loaded, c, tolerances);
+            } else {
+                render(loaded, c, tolerances);
+            }
         }
     }
 
@@ -199,6 +173,7 @@ class Checker {
             return name;
         }
         c.message += (c.message.empty() ? "" : "; ") + std::string("could not write the report's files: ") + error;
+        writeFailed = true;
         return "";
     }
     std::string reportImage(const std::string& name, const Image& image, CheckCase& c) {
@@ -223,13 +198,14 @@ class Checker {
 
     // --update's verdict for one golden (image or CSV): SAME when `same`, else `write(error)` writes
     // it: UPDATED or CREATED, or an error.
-    template <typename Write> static void updateGolden(CheckCase& c, bool same, bool hadGolden, Write write) {
+    template <typename Write> void updateGolden(CheckCase& c, bool same, bool hadGolden, Write write) {
         std::string error;
         if (same) {
             c.verdict = CheckCase::Verdict::Same;
         } else if (!write(error)) {
             c.verdict = CheckCase::Verdict::Error;
-            c.message = error;
+            c.message = "the golden was not written: " + error;
+            writeFailed = true;
         } else {
             c.verdict = hadGolden ? CheckCase::Verdict::Updated : CheckCase::Verdict::Created;
         }
@@ -274,27 +250,27 @@ class Checker {
 
     // The preset's check.views[i] (drawn with viridis over its automatic range) against
     // <stem>.<view>.png (<stem>.<view>.light<N>.png for a light other than the first).
-    void checkView(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances, std::size_t i) {
-        const CheckView& v = preset.preset.check.views[i];
+    void checkView(const LoadedPreset& preset, const PlannedCase& planned, const Tolerances& tolerances) {
+        const CheckView& v = preset.preset.check.views[std::size_t(planned.view)];
         ViewSettings settings; // viridis over the automatic range
         settings.mode = *viewFromName(v.view); // checked when the preset was read
         settings.light = v.light - 1;
         const ViewDraw draw = viewDraw(settings);
-        const std::string name = stem + "." + v.view + (v.light == 1 ? "" : ".light" + std::to_string(v.light));
         std::string why = notApplicable(draw.options.view, preset.preset, draw.options.light);
         if (!why.empty()) {
             auto began = std::chrono::steady_clock::now();
-            CheckCase c = start(CheckCase::Kind::Render, name, preset.file);
-            badInputCase(c, "check.views[" + std::to_string(i) + "]: " + why);
+            CheckCase c = start(CheckCase::Kind::Render, planned.name, preset.file);
+            badInputCase(c, "check.views[" + std::to_string(planned.view) + "]: " + why);
             finish(c, began);
             return;
         }
-        render(preset, name, tolerances, draw);
+        render(preset, planned, tolerances, draw);
     }
 
-    void render(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances,
+    void render(const LoadedPreset& preset, const PlannedCase& planned, const Tolerances& tolerances,
                 const ViewDraw& view = {}) {
         auto began = std::chrono::steady_clock::now();
+        const std::string& stem = planned.name;
         CheckCase c = start(CheckCase::Kind::Render, stem, preset.file);
         c.tolerance = tolerances.imageText;
         Diagnostics diagnostics;
@@ -304,7 +280,7 @@ class Checker {
         if (rendered) {
             actual = std::move(rendered->image);
         }
-        fs::path goldenFile = options_.golden / (stem + ".png");
+        const fs::path& goldenFile = planned.golden;
         std::optional<Image> golden;
         if (!actual) {
             printDiagnostics(diagnostics);
@@ -323,9 +299,9 @@ class Checker {
     }
 
     // The preset's sweep as one grid, compared cell by cell (one case a cell).
-    void sweep(const LoadedPreset& base, const std::string& stem, const Tolerances& tolerances) {
+    void sweep(const LoadedPreset& base, const PlannedCase& planned, const Tolerances& tolerances) {
         auto began = std::chrono::steady_clock::now();
-        const std::string whole = stem + ".sweep";
+        const std::string& whole = planned.name;
         CheckCase c = start(CheckCase::Kind::SweepCell, whole, base.file);
         c.tolerance = tolerances.imageText;
         std::vector<SweepAxis> axes;
@@ -342,7 +318,7 @@ class Checker {
         } else {
             error = diagnostics.empty() ? "the model does not load" : diagnostics.front().str();
         }
-        fs::path goldenFile = options_.golden / (whole + ".png");
+        const fs::path& goldenFile = planned.golden;
         std::optional<Image> golden;
         if (!grid && renderFailed) {
             c.verdict = CheckCase::Verdict::Error;
@@ -388,7 +364,7 @@ class Checker {
                 int x = layout.cellX(column), y = layout.cellY(row);
                 compare(cell, crop(*grid, x, y, layout.cellWidth, layout.cellHeight),
                         crop(*golden, x, y, layout.cellWidth, layout.cellHeight), tolerances.image,
-                        whole + ".r" + std::to_string(row) + "c" + std::to_string(column));
+                        sweepCellFiles(whole, row, column));
                 finish(cell, cellBegan);
                 cases.back().seconds += shared;
             }
@@ -396,12 +372,12 @@ class Checker {
     }
 
     // The lobe CSV `lab plot --out` writes, against <name>.plot.csv within the plot tolerance.
-    void plot(const LoadedPreset& preset, const std::string& stem, const Tolerances& tolerances) {
+    void plot(const LoadedPreset& preset, const PlannedCase& planned, const Tolerances& tolerances) {
         auto began = std::chrono::steady_clock::now();
-        CheckCase c = start(CheckCase::Kind::Plot, stem + ".plot", preset.file);
+        CheckCase c = start(CheckCase::Kind::Plot, planned.name, preset.file);
         c.tolerance = tolerances.plotText;
         const std::string text = plotCsv(reflectedIntensity(preset.preset, preset.preset.plotIncidentDeg));
-        fs::path goldenFile = options_.golden / (stem + ".plot.csv");
+        const fs::path& goldenFile = planned.golden;
         std::string error;
         std::error_code ec;
         std::optional<std::string> goldenText;
@@ -420,7 +396,7 @@ class Checker {
         } else if (!goldenText) {
             c.verdict = CheckCase::Verdict::Missing;
             c.message = "no golden " + goldenFile.string() + " (create it with --update --plots)";
-            c.actual = reportFile(stem + ".plot.actual.csv", text, c);
+            c.actual = reportFile(planned.name + ".actual.csv", text, c);
         } else if (golden = parseNumberCsv(*goldenText, error); !golden) {
             badInputCase(c, "golden " + goldenFile.string() + " is not a CSV of numbers: " + error);
         } else {
@@ -432,8 +408,8 @@ class Checker {
             } else {
                 c.verdict = CheckCase::Verdict::Fail;
                 c.message = cmp.firstDifference;
-                c.golden = reportFile(stem + ".plot.golden.csv", *goldenText, c);
-                c.actual = reportFile(stem + ".plot.actual.csv", text, c);
+                c.golden = reportFile(planned.name + ".golden.csv", *goldenText, c);
+                c.actual = reportFile(planned.name + ".actual.csv", text, c);
             }
         }
         finish(c, began);
@@ -443,99 +419,22 @@ class Checker {
     const CheckOptions& options_;
 };
 
-// Everything that could stop the report being written, before anything renders or is written.
-bool usable(const CheckOptions& options) {
-    std::vector<std::pair<const char*, fs::path>> files;
-    std::optional<fs::path> report;
-    if (!options.update) {
-        report = options.report;
-        files.push_back({"--report", options.report / "index.html"});
-        files.push_back({"--report", options.report / "report.txt"});
-    }
-    for (auto [flag, file] : {std::pair{"--junit", options.junit}, std::pair{"--html", options.html}}) {
-        if (!file) {
-            continue;
-        }
-        if (std::string why = unwritable(*file, report); !why.empty()) {
-            print(stderr, "lab check: %s %s: %s\n", flag, file->string().c_str(), why.c_str());
-            return false;
-        }
-        for (const auto& [other, seen] : files) {
-            if (sameFile(*file, seen)) {
-                print(stderr, "lab check: %s %s: %s writes that file too\n", flag, file->string().c_str(), other);
-                return false;
-            }
-        }
-        files.push_back({flag, *file});
-    }
-    std::error_code ec;
-    if (!options.update && !fs::is_directory(options.golden, ec)) {
-        print(stderr, "lab check: --golden %s: no such folder\n", options.golden.string().c_str());
-        return false;
-    }
-    // Every folder check writes to must be one (a file in its place would fail each write later,
-    // as a check failure instead of the bad argument it is).
-    for (const auto& [flag, folder] :
-         {std::pair{"--golden", &options.golden}, std::pair{"--report", &options.report}}) {
-        if (options.update != (flag == std::string_view("--golden"))) {
-            continue; // --update writes goldens only; a comparison writes the report only
-        }
-        fs::create_directories(*folder, ec);
-        std::error_code
-            isFolder; // (the throwing form would end the program on a name too long or a folder not allowed)
-        if (!fs::is_directory(*folder, isFolder)) {
-            print(stderr, "lab check: " + std::string(flag) + " " + folder->string() +
-                              ": cannot be used as a folder (" + (ec ? ec.message() : "it is a file") + ")\n");
-            return false;
-        }
-        if (::access(folder->c_str(), W_OK) != 0) { // found now, not after every render
-            print(stderr, "lab check: %s %s: cannot write in it: %s\n", flag, folder->string().c_str(),
-                  std::strerror(errno));
-            return false;
-        }
-    }
-    return true;
-}
-
-// Goldens are named after the preset's file: two presets of one name in a run would share theirs,
-// and a preset named like another's sweep or plot golden (x.sweep.json) would share that.
-bool namesDistinct(const std::vector<fs::path>& presets) {
-    std::map<std::string, fs::path> names;
-    for (const fs::path& p : presets) {
-        std::string stem = p.stem().string();
-        std::string last = fs::path(stem).extension().string();
-        if (last == ".sweep" || last == ".plot") {
-            print(stderr,
-                  "lab check: %s: a preset named *%s.json would share its golden with another preset's %s "
-                  "golden; rename it\n",
-                  p.string().c_str(), last.c_str(), last.c_str() + 1);
-            return false;
-        }
-        auto [it, fresh] = names.emplace(stem, p);
-        if (!fresh && !sameFile(it->second, p)) {
-            print(stderr, "lab check: %s and %s would both be checked against %s.png\n", it->second.string().c_str(),
-                  p.string().c_str(), stem.c_str());
-            return false;
-        }
-    }
-    return true;
-}
-
 } // namespace
 
 int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) {
-    if (!namesDistinct(presets) || !usable(options)) {
-        return kExitBadInput;
-    }
     auto began = std::chrono::steady_clock::now();
     auto loaded = loadAll(presets);
+    const std::vector<PresetPlan> plans = planCheck(presets, loaded, options);
+    if (!checkRunIsSafe(plans, options) || !makeCheckFolders(options)) {
+        return kExitBadInput;
+    }
     Gpu gpu;
     if (!gpu.start()) {
         return kExitFailure;
     }
     Checker checker(gpu, options);
-    for (std::size_t i = 0; i < presets.size(); ++i) {
-        checker.preset(presets[i], loaded[i]);
+    for (const PresetPlan& plan : plans) {
+        checker.preset(plan);
     }
     const std::vector<CheckCase>& cases = checker.cases;
     const auto failed = std::count_if(cases.begin(), cases.end(), [](const CheckCase& c) { return c.failed(); });
@@ -570,7 +469,7 @@ int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) 
     if (options.junit) {
         write("--junit", *options.junit, checkJunit(cases, secondsSince(began)));
     }
-    if (checker.badInput || !written) {
+    if (checker.badInput || checker.writeFailed || !written) {
         return kExitBadInput;
     }
     return failed > 0 ? kExitFailure : kExitOk;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "cli/commands.h"
+#include "cli/run_files.h"
 #include "core/io/diagnostics.h"
 #include "core/scene/sweep.h"
 #include "platform/headless_gl.h"
@@ -31,6 +32,14 @@ void printDiagnostics(const Diagnostics& diagnostics);
 // `anyBad`, when given, is set).
 std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<std::filesystem::path>& files,
                                                  bool* anyBad = nullptr);
+
+// A preset's file and the glTF model it names, as inputs of a run (cli/run_files.h); `what` names
+// the file ("the preset", "the attempt").
+void addPresetInputs(RunFiles& files, const LoadedPreset& preset, const std::string& what = "the preset");
+
+// False, with "COMMAND: <the problem> (nothing was written)" on stderr, when the run's files may not
+// be written as asked (RunFiles::problem()); true when they may.
+bool filesUsable(const RunFiles& files, const char* command);
 
 // A glTF preset without a camera or lights in its file framed, as `lab render` frames it for cells
 // of any shape (core/gltf/model_loader.h frameOmitted); false when its model does not load.

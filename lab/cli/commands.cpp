@@ -3,6 +3,7 @@
 
 #include "cli/command_kit.h"
 #include "cli/output.h"
+#include "core/exercise/exercise.h"
 #include "core/gltf/model_loader.h"
 #include "core/io/file_io.h"
 #include "core/io/safe_text.h"
@@ -18,7 +19,6 @@
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 
 namespace lab {
 
@@ -51,6 +51,22 @@ std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<fs::path>& fi
         }
     }
     return loaded;
+}
+
+void addPresetInputs(RunFiles& files, const LoadedPreset& preset, const std::string& what) {
+    files.input(preset.file, what + " " + preset.file.string());
+    if (!preset.preset.model.gltf.empty()) {
+        fs::path model = preset.folder() / preset.preset.model.gltf;
+        files.input(model, "the model " + model.string() + " of " + preset.file.string());
+    }
+}
+
+bool filesUsable(const RunFiles& files, const char* command) {
+    std::string problem = files.problem();
+    if (!problem.empty()) {
+        print(stderr, std::string(command) + ": " + problem + " (nothing was written)\n");
+    }
+    return problem.empty();
 }
 
 bool frameForCells(LoadedPreset& preset, Diagnostics& diagnostics) {
@@ -158,29 +174,39 @@ Image finished(Rendered rendered, const RenderView& view, const fs::path& target
 int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size size, const RenderView& view) {
     bool anyBad = false;
     auto loaded = loadAll(presets, &anyBad);
-    bool toFolder = presets.size() > 1;
-    if (toFolder) {
-        std::error_code ec;
-        fs::create_directories(out, ec);
-        std::error_code isFolder;
-        if (!fs::is_directory(out, isFolder)) {
-            print(stderr, "lab render: --out %s: with several presets --out must be a folder (%s)\n",
-                         out.string().c_str(), ec ? ec.message().c_str() : "it is a file");
-            return kExitBadInput;
+    const bool toFolder = presets.size() > 1;
+    std::error_code ec;
+    if (toFolder && fs::exists(out, ec) && !fs::is_directory(out, ec)) {
+        print(stderr, "lab render: --out %s: with several presets --out must be a folder (it is a file)\n",
+              out.string().c_str());
+        return kExitBadInput;
+    }
+    // Every PNG's path, checked against the presets and their models (and the others) before any
+    // is written: two presets with one file name would write one PNG.
+    RunFiles files;
+    for (std::size_t i = 0; i < presets.size(); ++i) {
+        if (loaded[i]) {
+            addPresetInputs(files, *loaded[i]);
+        } else {
+            files.input(presets[i], "the preset " + presets[i].string());
         }
-        // Two presets with the same file name would overwrite each other's PNG.
-        std::map<std::string, fs::path> names;
-        for (const fs::path& p : presets) {
-            auto [it, fresh] = names.emplace(p.stem().string(), p);
-            if (!fresh && it->second != p) {
-                print(stderr, "lab render: %s and %s would both write %s.png\n", it->second.string().c_str(),
-                             p.string().c_str(), p.stem().string().c_str());
-                return kExitBadInput;
-            }
-        }
+    }
+    for (const fs::path& p : presets) {
+        files.output(toFolder ? out / (p.stem().string() + ".png") : out, "--out", toFolder);
+    }
+    if (!filesUsable(files, "lab render")) {
+        return kExitBadInput;
     }
     if (std::none_of(loaded.begin(), loaded.end(), [](const auto& p) { return p.has_value(); })) {
         return kExitBadInput;
+    }
+    if (toFolder) {
+        std::error_code made;
+        fs::create_directories(out, made);
+        if (!fs::is_directory(out, ec)) {
+            print(stderr, "lab render: --out %s: cannot make the folder: %s\n", out.string().c_str(), made.message().c_str());
+            return kExitBadInput;
+        }
     }
     Gpu gpu;
     if (!gpu.start()) {
@@ -282,6 +308,12 @@ int runSweep(const std::vector<fs::path>& presets, const std::vector<SweepAxis>&
         printDiagnostics(diagnostics);
         return kExitBadInput;
     }
+    RunFiles files;
+    addPresetInputs(files, *preset);
+    files.output(out, "--out");
+    if (!filesUsable(files, "lab render")) {
+        return kExitBadInput;
+    }
     std::string error;
     if (!sweepCells(*preset, sweeps, error)) { // before starting the GPU: a bad value is a usage error
         print(stderr, "lab render: --sweep " + error + "\n");
@@ -319,26 +351,23 @@ int runSweep(const std::vector<fs::path>& presets, const std::vector<SweepAxis>&
 
 int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float> incidentDeg,
             const std::optional<fs::path>& albedoOut, const FigureOutputs& figure) {
-    // Every file at most once: two outputs on one path would leave only the last.
-    std::vector<std::pair<const char*, fs::path>> files;
-    for (auto [flag, file] : {std::pair{"--out", std::optional<fs::path>(out.empty() ? std::nullopt : std::optional(out))},
-                              std::pair{"--albedo", albedoOut}, std::pair{"--svg", figure.files.svg},
-                              std::pair{"--png", figure.files.png}, std::pair{"--csv", figure.files.csv}}) {
-        if (!file) {
-            continue;
-        }
-        for (const auto& [other, seen] : files) {
-            if (fs::absolute(*file).lexically_normal() == fs::absolute(seen).lexically_normal()) {
-                print(stderr, "lab plot: %s and %s are the same file, %s\n", other, flag, file->string().c_str());
-                return kExitBadInput;
-            }
-        }
-        files.push_back({flag, *file});
-    }
     Diagnostics diagnostics;
     std::optional<LoadedPreset> preset = loadPreset(presetFile, diagnostics);
     if (!preset) {
         printDiagnostics(diagnostics);
+        return kExitBadInput;
+    }
+    // Every file at most once (two outputs on one path would leave only the last), none the preset.
+    RunFiles files;
+    addPresetInputs(files, *preset);
+    for (auto [flag, file] : {std::pair{"--out", std::optional<fs::path>(out.empty() ? std::nullopt : std::optional(out))},
+                              std::pair{"--albedo", albedoOut}, std::pair{"--svg", figure.files.svg},
+                              std::pair{"--png", figure.files.png}, std::pair{"--csv", figure.files.csv}}) {
+        if (file) {
+            files.output(*file, flag);
+        }
+    }
+    if (!filesUsable(files, "lab plot")) {
         return kExitBadInput;
     }
     float angle = incidentDeg.value_or(preset->preset.plotIncidentDeg);
@@ -389,19 +418,34 @@ int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float
 int runPreview(const std::optional<fs::path>& presetFile) {
     LoadedPreset preset{Preset{}, {}};
     preset.preset.name = "Default";
+    RunFiles files;
     if (presetFile) {
+        // An exercise opens at its start, as in the lab's window.
         Diagnostics diagnostics;
-        std::optional<LoadedPreset> loaded = loadPreset(*presetFile, diagnostics);
+        std::string error;
+        std::optional<std::string> text = readFile(*presetFile, kMaxExerciseBytes, error);
+        std::optional<LoadedExercise> exercise;
+        std::optional<LoadedPreset> loaded;
+        if (text && isExerciseText(*text) && (exercise = loadExercise(*presetFile, diagnostics))) {
+            loaded = LoadedPreset{exercise->exercise.start, exercise->file};
+        } else if (!exercise && diagnostics.empty()) {
+            loaded = loadPreset(*presetFile, diagnostics);
+        }
         if (!loaded) {
             printDiagnostics(diagnostics);
             return kExitBadInput;
         }
         preset = std::move(*loaded);
+        addPresetInputs(files, preset, exercise ? "the exercise" : "the preset");
     }
     std::error_code ec;
     fs::path folder = fs::temp_directory_path(ec) / "lighting-lab";
-    fs::create_directories(folder, ec);
     fs::path out = folder / ((presetFile ? presetFile->stem().string() : std::string("default")) + ".png");
+    files.output(out, "the preview", true);
+    if (!filesUsable(files, "lab")) {
+        return kExitBadInput;
+    }
+    fs::create_directories(folder, ec);
     Gpu gpu;
     if (!gpu.start()) {
         return kExitFailure;
@@ -414,8 +458,8 @@ int runPreview(const std::optional<fs::path>& presetFile) {
     }
     std::string error;
     if (!writePng(*image, out, error, WriteSafety::Renewable)) { // a preview, made again on the next run
-        print(stderr, "lab: " + error + "\n");
-        return kExitFailure;
+        print(stderr, "lab: the preview was not written: " + error + "\n");
+        return kExitBadInput;
     }
     print(stdout, "No window available: rendered " + inQuotes(preset.preset.name) + " to " + out.string() + "\n");
     return kExitOk;

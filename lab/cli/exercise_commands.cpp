@@ -14,6 +14,10 @@ namespace lab {
 
 namespace fs = std::filesystem;
 
+namespace {
+void addExerciseInputs(RunFiles& files, const LoadedExercise& exercise);
+} // namespace
+
 int runExerciseCheck(const fs::path& exerciseFile, const fs::path& attemptFile, const std::optional<fs::path>& diffOut) {
     Diagnostics diagnostics;
     std::optional<LoadedExercise> exercise = loadExercise(exerciseFile, diagnostics);
@@ -38,6 +42,15 @@ int runExerciseCheck(const fs::path& exerciseFile, const fs::path& attemptFile, 
         }
         return kExitBadInput;
     }
+    RunFiles files;
+    addExerciseInputs(files, *exercise);
+    addPresetInputs(files, *attempt, "the attempt");
+    if (diffOut) {
+        files.output(*diffOut, "--diff");
+    }
+    if (!filesUsable(files, "lab exercise check")) {
+        return kExitBadInput;
+    }
     Gpu gpu;
     if (!gpu.start()) {
         return kExitFailure;
@@ -53,18 +66,29 @@ int runExerciseCheck(const fs::path& exerciseFile, const fs::path& attemptFile, 
         return kExitFailure;
     }
     ExerciseScore score = scoreExercise(e, attempt->preset, *a, *t);
+    print(stdout, attemptFile.string() + ": " + score.summary() + "\n");
     if (diffOut) {
         std::string error;
-        if (!writePng(score.image.diff, *diffOut, error)) {
-            print(stderr, "lab exercise check: " + error + "\n");
-            return kExitFailure;
+        if (!writePng(score.image.diff, *diffOut, error)) { // checked above: a full disk, say
+            print(stderr, "lab exercise check: --diff " + diffOut->string() + " was not written: " + error + "\n");
+            return kExitBadInput;
         }
     }
-    print(stdout, attemptFile.string() + ": " + score.summary() + "\n");
     return score.solved ? kExitOk : kExitFailure;
 }
 
 namespace {
+
+// An exercise's file and the glTF models its start and target name (cli/run_files.h).
+void addExerciseInputs(RunFiles& files, const LoadedExercise& exercise) {
+    files.input(exercise.file, "the exercise " + exercise.file.string());
+    for (const Preset* p : {&exercise.exercise.start, &exercise.exercise.target}) {
+        if (!p->model.gltf.empty()) {
+            fs::path model = exercise.folder() / p->model.gltf;
+            files.input(model, "the model " + model.string() + " of " + exercise.file.string());
+        }
+    }
+}
 
 // The file's name when it is one of the shipped presets (or exercises) itself: the link names it.
 std::optional<std::string> shippedName(const fs::path& file, const fs::path& folder) {
@@ -73,6 +97,24 @@ std::optional<std::string> shippedName(const fs::path& file, const fs::path& fol
         return std::nullopt;
     }
     return file.stem().string();
+}
+
+} // namespace
+
+namespace {
+
+// A link carries the scene, not its model file: only the shipped presets' and exercises' glTF models
+// (which the course page has) can be linked. False, with the message, for another file that names one.
+bool modelsLinkable(const fs::path& file, bool shipped, std::initializer_list<std::pair<const char*, const Preset*>> scenes) {
+    for (const auto& [where, preset] : scenes) {
+        if (!shipped && !preset->model.gltf.empty()) {
+            print(stderr, file.string() + ": " + where + "model.gltf: a link carries the scene, not its model file; only the "
+                          "shipped presets' glTF models can be linked (publish the model with the course page and make "
+                          "it a shipped preset)\n");
+            return false;
+        }
+    }
+    return true;
 }
 
 } // namespace
@@ -91,13 +133,20 @@ int runShare(const fs::path& file, const std::string& base, const std::optional<
     }
     Diagnostics diagnostics;
     std::string fragment;
+    RunFiles files;
     if (isExerciseText(*text)) {
         std::optional<LoadedExercise> exercise = loadExercise(file, diagnostics);
         if (!exercise) {
             printDiagnostics(diagnostics);
             return kExitBadInput;
         }
-        fragment = exerciseLink(exercise->exercise, shippedName(file, shippedPresets / "exercises"));
+        std::optional<std::string> shipped = shippedName(file, shippedPresets / "exercises");
+        const Exercise& e = exercise->exercise;
+        if (!modelsLinkable(file, shipped.has_value(), {{"start.", &e.start}, {"target.", &e.target}})) {
+            return kExitBadInput;
+        }
+        addExerciseInputs(files, *exercise);
+        fragment = exerciseLink(e, shipped);
     } else {
         std::optional<LoadedPreset> preset = loadPreset(file, diagnostics);
         if (!preset) {
@@ -105,13 +154,17 @@ int runShare(const fs::path& file, const std::string& base, const std::optional<
             return kExitBadInput;
         }
         std::optional<std::string> shipped = shippedName(file, shippedPresets);
-        if (!shipped && !preset->preset.model.gltf.empty()) {
-            print(stderr, file.string() + ": model.gltf: a link carries the scene, not its model file; only the shipped "
-                          "presets' glTF models can be linked (publish the model with the course page and make it a "
-                          "shipped preset)\n");
+        if (!modelsLinkable(file, shipped.has_value(), {{"", &preset->preset}})) {
             return kExitBadInput;
         }
+        addPresetInputs(files, *preset);
         fragment = presetLink(preset->preset, shipped);
+    }
+    if (qrOut) {
+        files.output(*qrOut, "--qr");
+    }
+    if (!filesUsable(files, "lab share")) {
+        return kExitBadInput;
     }
     const std::string url = shareUrl(base, fragment);
     std::optional<QrCode> code = encodeQr(url, error);
@@ -127,9 +180,9 @@ int runShare(const fs::path& file, const std::string& base, const std::optional<
     }
     print(stdout, url + "\n");
     if (qrOut && code) {
-        if (!writePng(qrImage(*code, 8), *qrOut, error)) {
-            print(stderr, "lab share: " + error + "\n");
-            return kExitFailure;
+        if (!writePng(qrImage(*code, 8), *qrOut, error)) { // checked above: a full disk, say
+            print(stderr, "lab share: --qr " + qrOut->string() + " was not written: " + error + "\n");
+            return kExitBadInput;
         }
         print(stderr, qrOut->string() + ": QR code version " + std::to_string(code->version) + " (" +
                           std::to_string(code->size) + "x" + std::to_string(code->size) + " modules), " +

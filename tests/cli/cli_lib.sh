@@ -1,8 +1,8 @@
 # cli_lib.sh — what the command-line tests share (sourced by run_cli_tests.sh and
 # hostile_cli_tests.sh, each run as LAB SOURCE_DIR): a scratch folder, the assertions and their
 # count, a few readers of files. `finish` prints the count and returns the suite's status.
-lab=$1
-src=$2
+lab=$(realpath "$1") # absolute: a test may change folders
+src=$(realpath "$2")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 passed=0

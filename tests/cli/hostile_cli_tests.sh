@@ -32,4 +32,102 @@ for big in 1e308 3.5e38; do
         "$lab" exercise check "$tmp/tol-$big.json" "$shin_sol"
 done
 
+# --- no output may be one of the run's inputs (the same file once links are resolved) -------------
+# Each of these replaced the student's attempt, the exercise, the preset or a golden.
+mkdir -p "$tmp/io/g"
+cd "$tmp/io" || exit 1
+cp "$shin" ex.json
+cp "$shin_sol" att.json
+cp "$phong" p.json
+"$lab" check p.json --golden g --update --size 32x32 >/dev/null
+keep ex.json att.json p.json g/p.png g/p.sweep.png
+ln -s att.json att-link.png
+ln att.json att-hard.png
+expect diff-is-the-attempt 2 '^lab exercise check: --diff att\.json: is the attempt att\.json, which this run reads \(nothing was written\)$' -- \
+    "$lab" exercise check ex.json att.json --diff att.json
+expect diff-is-the-exercise 2 '^lab exercise check: --diff \./ex\.json: is the exercise ex\.json, which this run reads' -- \
+    "$lab" exercise check ex.json att.json --diff ./ex.json
+expect diff-is-a-link-to-the-attempt 2 '^lab exercise check: --diff att-link\.png: is the attempt att\.json' -- \
+    "$lab" exercise check ex.json att.json --diff att-link.png
+expect diff-is-a-hard-link-to-the-attempt 2 '^lab exercise check: --diff att-hard\.png: is the attempt att\.json' -- \
+    "$lab" exercise check ex.json att.json --diff att-hard.png
+expect qr-is-the-preset 2 '^lab share: --qr p\.json: is the preset p\.json, which this run reads' -- \
+    "$lab" share p.json --base "$base" --qr p.json
+check qr-refused-prints-no-link test -z "$("$lab" share p.json --base "$base" --qr p.json 2>/dev/null)"
+expect junit-is-the-preset 2 '^lab check: --junit p\.json: is the preset p\.json, which this run reads' -- \
+    "$lab" check p.json --golden g --junit p.json --size 32x32
+expect html-is-a-golden 2 '^lab check: --html g/p\.png: is the golden g/p\.png, which this run reads' -- \
+    "$lab" check p.json --golden g --html g/p.png --size 32x32
+expect junit-is-a-golden 2 '^lab check: --junit g/p\.sweep\.png: is the golden g/p\.sweep\.png' -- \
+    "$lab" check p.json --golden g --junit g/p.sweep.png --size 32x32
+expect junit-is-a-golden-with-update 2 '^lab check: --junit g/p\.png: is the golden g/p\.png' -- \
+    "$lab" check p.json --golden g --junit g/p.png --update --size 32x32
+expect render-out-is-the-preset 2 '^lab render: --out p\.json: is the preset p\.json' -- "$lab" render p.json --out p.json --size 8x8
+expect sweep-out-is-the-preset 2 '^lab render: --out p\.json: is the preset p\.json' -- \
+    "$lab" render p.json --sweep material.shininess=1,2 --out p.json --size 8x8
+expect plot-svg-is-the-preset 2 '^lab plot: --svg p\.json: is the preset p\.json' -- "$lab" plot p.json --svg p.json
+expect plot-out-is-the-preset 2 '^lab plot: --out \./p\.json: is the preset p\.json' -- "$lab" plot p.json --out ./p.json
+# A report folder that is the golden folder: a failing preset "q" would leave q.golden.png there,
+# which is the golden of a preset named q.golden.
+cp p.json q.json
+cp p.json q.golden.json
+"$lab" render p.json --out g/q.golden.png --size 32x32 >/dev/null
+keep g/q.golden.png
+expect report-file-is-a-golden 2 '^lab check: --report g/q\.golden\.png: is the golden g/q\.golden\.png' -- \
+    "$lab" check q.json q.golden.json --golden g --report g --size 32x32
+kept inputs-all-kept ex.json att.json p.json g/p.png g/p.sweep.png g/q.golden.png
+# A model is an input too: a glTF preset's render written over its model.
+mkdir -p model/models
+cp "$src/presets/24-gltf-trefoil.json" model/
+cp "$src/presets/models/"* model/models/
+keep model/models/trefoil.glb
+expect render-out-is-the-model 2 '^lab render: --out model/models/trefoil\.glb: is the model model/models/trefoil\.glb of model/24-gltf-trefoil\.json' -- \
+    "$lab" render model/24-gltf-trefoil.json --out model/models/trefoil.glb --size 8x8
+kept model-kept model/models/trefoil.glb
+# ...and the preview, which writes into the temporary folder.
+mkdir -p preview/lighting-lab
+cp "$phong" preview/lighting-lab/x.png
+keep preview/lighting-lab/x.png
+expect preview-is-the-preset 2 'the preview .*/lighting-lab/x\.png: is the preset .*x\.png' -- \
+    env -u DISPLAY -u WAYLAND_DISPLAY TMPDIR="$tmp/io/preview" "$lab" --preset preview/lighting-lab/x.png
+kept preview-kept preview/lighting-lab/x.png
+cd "$src" || exit 1
+
+# --- every output is checked before anything is written; a bad one exits 2 in every command --------
+mkdir -p "$tmp/out/folder"
+mkfifo "$tmp/out/fifo"
+for target in folder none/x.png fifo; do
+    expect "diff-unwritable-$target" 2 "^lab exercise check: --diff .*out/$target: (is a folder|no such folder|is not a regular file)" -- \
+        "$lab" exercise check "$shin" "$shin_sol" --diff "$tmp/out/$target"
+    out=$("$lab" exercise check "$shin" "$shin_sol" --diff "$tmp/out/$target" 2>&1)
+    check "diff-unwritable-$target-no-verdict" test "$(grep -c 'Solved\|pixels match' <<<"$out")" -eq 0
+    expect "qr-unwritable-$target" 2 "^lab share: --qr .*out/$target: (is a folder|no such folder|is not a regular file)" -- \
+        "$lab" share "$phong" --base "$base" --qr "$tmp/out/$target"
+    check "qr-unwritable-$target-no-link" test -z "$("$lab" share "$phong" --base "$base" --qr "$tmp/out/$target" 2>/dev/null)"
+    expect "render-unwritable-$target" 2 "^lab render: --out .*out/$target: (is a folder|no such folder|is not a regular file)" -- \
+        "$lab" render "$phong" --out "$tmp/out/$target" --size 8x8
+    expect "plot-unwritable-$target" 2 "^lab plot: --png .*out/$target: (is a folder|no such folder|is not a regular file)" -- \
+        "$lab" plot "$phong" --png "$tmp/out/$target"
+    expect "check-junit-unwritable-$target" 2 "^lab check: --junit .*out/$target: (is a folder|no such folder|is not a regular file)" -- \
+        "$lab" check "$phong" --golden "$src/tests/golden" --report "$tmp/out/r" --junit "$tmp/out/$target"
+done
+check unwritable-outputs-wrote-nothing test "$(find "$tmp/out" -mindepth 1 | sort | tr '\n' ' ')" = "$tmp/out/fifo $tmp/out/folder "
+
+# A write that fails later (here: a file-size limit of 0, as a full disk would) exits 2 too, saying
+# what was not written; the verdict and the link are still printed.
+full() { (trap '' XFSZ; ulimit -f 0; exec "$@"); }
+expect diff-full-disk 2 'Solved.*|lab exercise check: --diff .*d\.png was not written' -- \
+    full "$lab" exercise check "$shin" "$shin_sol" --diff "$tmp/out/d.png"
+out=$(full "$lab" exercise check "$shin" "$shin_sol" --diff "$tmp/out/d.png" 2>&1)
+check diff-full-disk-verdict-and-why grep -q 'Solved' <<<"$out"
+check diff-full-disk-says-what grep -q '^lab exercise check: --diff .*d\.png was not written: ' <<<"$out"
+expect qr-full-disk 2 '^lab share: --qr .*q\.png was not written: ' -- full "$lab" share "$phong" --base "$base" --qr "$tmp/out/q.png"
+expect render-full-disk 2 '^lab render: ' -- full "$lab" render "$phong" --out "$tmp/out/r.png" --size 8x8
+expect plot-full-disk 2 '^lab plot: ' -- full "$lab" plot "$phong" --out "$tmp/out/p.csv"
+expect check-update-full-disk 2 'ERROR +05-full-phong: the golden was not written: ' -- \
+    full "$lab" check "$phong" --golden "$tmp/out/g" --update --size 8x8
+check full-disk-wrote-nothing test ! -e "$tmp/out/d.png" -a ! -e "$tmp/out/q.png" -a ! -e "$tmp/out/r.png" -a ! -e "$tmp/out/p.csv" -a ! -e "$tmp/out/g/05-full-phong.png"
+
+# --- lab share: the course page's address, and the models a link cannot carry -----------------------
+
 finish

@@ -102,7 +102,7 @@ check plot-both-writes-out test -s "$tmp/b.csv"
 check plot-both-writes-albedo test -s "$tmp/c.csv"
 expect plot-needs-a-file 2 'nothing to write.*--out.*--albedo' -- "$lab" plot "$phong"
 expect plot-albedo-empty 2 '^--albedo: must not be empty' -- "$lab" plot "$phong" --albedo ""
-expect plot-same-file 2 'same file' -- "$lab" plot "$phong" --out "$tmp/d.csv" --albedo "$tmp/./d.csv"
+expect plot-same-file 2 '^lab plot: --albedo .*d\.csv: --out writes that file too' -- "$lab" plot "$phong" --out "$tmp/d.csv" --albedo "$tmp/./d.csv"
 check plot-same-file-nothing-written test ! -e "$tmp/d.csv"
 expect plot-albedo-unwritable 2 'lab plot: ' -- "$lab" plot "$phong" --albedo "$tmp/none/x.csv"
 
@@ -133,7 +133,7 @@ expect plot-incident-inf 2 '^--incident-deg: must be a finite number, got inf' -
 check figure-nan-nothing-written test ! -e "$tmp/x.svg" -a ! -e "$tmp/x.png" -a ! -e "$tmp/x.csv"
 expect figure-no-such-light 2 'figure attenuation: light 3 does not exist' -- "$lab" plot "$phong" --figure attenuation --light 3 --svg "$tmp/x.svg"
 check figure-no-such-light-nothing-written test ! -e "$tmp/x.svg"
-expect figure-same-file 2 '--svg and --png are the same file' -- "$lab" plot "$phong" --svg "$tmp/y.svg" --png "$tmp/./y.svg"
+expect figure-same-file 2 '^lab plot: --png .*y\.svg: --svg writes that file too \(as .*/y\.svg\) \(nothing was written\)' -- "$lab" plot "$phong" --svg "$tmp/y.svg" --png "$tmp/./y.svg"
 expect figure-unwritable 2 'lab plot: .*none' -- "$lab" plot "$phong" --svg "$tmp/none/x.svg"
 
 # --- render --sweep: one preset as a labelled grid (core/scene/sweep.h) ---------------------------

@@ -97,6 +97,30 @@ MappedFile::~MappedFile() {
     }
 }
 
+std::string writeProblem(const fs::path& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0) {
+        if (S_ISDIR(st.st_mode)) {
+            return "is a folder";
+        }
+        if (!S_ISREG(st.st_mode)) {
+            return "is not a regular file (the lab writes a new file and renames it over the old one)";
+        }
+    }
+    fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    if (::stat(folder.c_str(), &st) != 0) {
+        return errno == ENOENT || errno == ENOTDIR ? "no such folder " + folder.string()
+                                                   : "cannot reach " + folder.string() + ": " + std::strerror(errno);
+    }
+    if (!S_ISDIR(st.st_mode)) {
+        return folder.string() + " is not a folder";
+    }
+    if (::access(folder.c_str(), W_OK) != 0) {
+        return "cannot write in " + folder.string() + ": " + std::strerror(errno);
+    }
+    return "";
+}
+
 bool writeFileAtomic(const fs::path& path, std::string_view bytes, std::string& error, WriteSafety safety) {
     fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
     std::string tmpl = (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();

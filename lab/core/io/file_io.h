@@ -46,6 +46,12 @@ enum class WriteSafety {
                // (`lab render`'s PNGs), which the flush would hold up for nothing.
 };
 
+// Why writeFileAtomic(path, ...) could not succeed, found without writing anything; "" when it
+// can: the path is a folder, or is something other than a regular file (a device such as
+// /dev/null, a FIFO: the rename would replace it), or its folder does not exist, is not a folder,
+// or cannot be written in. Commands ask this of every output before they write any.
+std::string writeProblem(const std::filesystem::path& path);
+
 // Writes `bytes` to `path` atomically; false with `error` on any failure, the old file intact.
 bool writeFileAtomic(const std::filesystem::path& path, std::string_view bytes, std::string& error,
                      WriteSafety safety = WriteSafety::Durable);

@@ -1,6 +1,8 @@
 // paths.cpp — folder containment on canonical paths.
 #include "core/io/paths.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 
 namespace lab {
@@ -54,5 +56,23 @@ std::optional<fs::path> relativeInside(const fs::path& folder, const fs::path& p
 }
 
 bool isInside(const fs::path& folder, const fs::path& path) { return relativeInside(folder, path).has_value(); }
+
+FileIdentity fileIdentity(const fs::path& path) {
+    FileIdentity id;
+    struct stat st {};
+    if (!path.empty() && ::stat(path.c_str(), &st) == 0) {
+        id.exists = true;
+        id.device = static_cast<std::uint64_t>(st.st_dev);
+        id.inode = static_cast<std::uint64_t>(st.st_ino);
+        return id;
+    }
+    std::error_code ec;
+    fs::path absolute = fs::absolute(path, ec);
+    std::optional<fs::path> c = resolved(ec ? path : absolute);
+    id.path = (c ? *c : absolute.lexically_normal()).string();
+    return id;
+}
+
+bool sameFile(const fs::path& a, const fs::path& b) { return fileIdentity(a) == fileIdentity(b); }
 
 } // namespace lab

@@ -6,12 +6,18 @@
 // far as the path exists) compared component by component, so /a/bc is not inside /a/b and a
 // link that points out of the folder leads out of it.
 //
-// This file owns that question and nothing else: it does not open files or check that they
+// It also answers whether two paths lead to one file (sameFile), which the commands ask of their
+// inputs and outputs before they write anything (cli/run_files.h).
+//
+// This file owns those questions and nothing else: it does not open files or check that they
 // exist or are regular files (the callers say what they need).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <tuple>
 
 namespace lab {
 
@@ -26,5 +32,22 @@ std::optional<std::filesystem::path> relativeInside(const std::filesystem::path&
 
 // relativeInside(folder, path).has_value().
 bool isInside(const std::filesystem::path& folder, const std::filesystem::path& path);
+
+// Which file a path leads to: for one that exists, its device and inode (symbolic links followed,
+// so hard links and links are one file); for one that does not exist yet, its canonical folder
+// and name (a file that two paths would create). Equal identities are one file.
+struct FileIdentity {
+    bool exists = false;
+    std::uint64_t device = 0, inode = 0; // when it exists
+    std::string path;                    // when it does not: weakly_canonical, absolute
+    bool operator==(const FileIdentity&) const = default;
+    bool operator<(const FileIdentity& o) const { // (the page's libc++ 13 has no <=> for strings)
+        return std::tie(exists, device, inode, path) < std::tie(o.exists, o.device, o.inode, o.path);
+    }
+};
+FileIdentity fileIdentity(const std::filesystem::path& path);
+
+// fileIdentity(a) == fileIdentity(b).
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 
 } // namespace lab
