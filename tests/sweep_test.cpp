@@ -37,6 +37,12 @@ const AxisCase kAxisCases[] = {
     {"material.shininess=10,,20", nullptr, {}, "value 2 is empty"},
     {"material.shininess=10,20,", nullptr, {}, "value 3 is empty"},
     {"material.shininess=1,2,3,4,5,6,7,8,9,10,11", nullptr, {}, "at most 10 values, got 11"},
+    // A bracket left open or closed unopened is refused, not cut off (the value "[0,0,0" was dropped).
+    {"material.specular=[1,1,1],[0,0,0", nullptr, {}, "value 2 \"[0,0,0\" leaves a '[' open"},
+    {"material.specular=[0,0,0", nullptr, {}, "value 1 \"[0,0,0\" leaves a '[' open"},
+    {"material.specular=[[1,1,1]", nullptr, {}, "value 1 \"[[1,1,1]\" leaves a '[' open"},
+    {"material.specular=1],2", nullptr, {}, "value 1 \"1]\" closes a ']' it did not open"},
+    {"material.specular=[1,1,1]],2", nullptr, {}, "value 1 \"[1,1,1]]\" closes a ']' it did not open"},
 };
 
 TEST(SweepAxis, ParsesOrNamesTheProblem) {

@@ -74,6 +74,10 @@ TEST(CheckViews, ReadWriteAndRefuseWithTheirJsonPath) {
         {R"("check": {"views": [3]}})", "check.views[0]: expected a view name or an object"},
         {R"("check": {"views": [{"view": "d", "light": 0}]}})", "check.views[0].light"},
         {R"("check": {"views": [{"view": "d", "lamp": 1}]}})", "check.views[0].lamp: unknown key"},
+        // One view twice would be one golden checked twice (and written twice by --update).
+        {R"("check": {"views": ["d", {"view": "d", "light": 1}]}})", "check.views[1].view: \"d\" is listed twice"},
+        {R"("check": {"views": [{"view": "d", "light": 2}, {"view": "d", "light": 2}]}})",
+         "check.views[1].view: \"d\" of light 2 is listed twice"},
     };
     for (const auto& [text, message] : bad) {
         Diagnostics e;

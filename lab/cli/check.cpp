@@ -459,7 +459,9 @@ int runCheck(const std::vector<fs::path>& presets, const CheckOptions& options) 
         for (const CheckCase& c : cases) {
             text += checkLine(c, options.report.string()) + "\n";
         }
-        write("--report", options.report / "report.txt", text + summary + "\n");
+        // The lines as the terminal showed them: escaped as every message is (a preset named with an
+        // escape sequence would otherwise recolour the terminal of whoever reads report.txt).
+        write("--report", options.report / "report.txt", printable(text + summary + "\n"));
         write("--report", options.report / "index.html", checkHtml(cases, run, ""));
     }
     if (options.html) {

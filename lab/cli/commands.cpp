@@ -419,6 +419,7 @@ int runPreview(const std::optional<fs::path>& presetFile) {
     LoadedPreset preset{Preset{}, {}};
     preset.preset.name = "Default";
     RunFiles files;
+    std::string what = inQuotes(preset.preset.name); // what the preview shows
     if (presetFile) {
         // An exercise opens at its start, as in the lab's window.
         Diagnostics diagnostics;
@@ -437,6 +438,7 @@ int runPreview(const std::optional<fs::path>& presetFile) {
         }
         preset = std::move(*loaded);
         addPresetInputs(files, preset, exercise ? "the exercise" : "the preset");
+        what = exercise ? "the start of the exercise " + inQuotes(exercise->exercise.title) : inQuotes(preset.preset.name);
     }
     std::error_code ec;
     fs::path folder = fs::temp_directory_path(ec) / "lighting-lab";
@@ -461,7 +463,7 @@ int runPreview(const std::optional<fs::path>& presetFile) {
         print(stderr, "lab: the preview was not written: " + error + "\n");
         return kExitBadInput;
     }
-    print(stdout, "No window available: rendered " + inQuotes(preset.preset.name) + " to " + out.string() + "\n");
+    print(stdout, "No window available: rendered " + what + " to " + out.string() + "\n");
     return kExitOk;
 }
 

@@ -130,4 +130,76 @@ check full-disk-wrote-nothing test ! -e "$tmp/out/d.png" -a ! -e "$tmp/out/q.png
 
 # --- lab share: the course page's address, and the models a link cannot carry -----------------------
 
+# The address goes into the QR code as it is: what the teacher reads must be what the phone opens.
+esc=$'\e'
+bad_base() { # bad_base NAME BASE PATTERN: refused by lab share (no link, no PNG) and by lab --share-base
+    expect "share-base-$1" 2 "^lab share: --base: $3" -- "$lab" share "$phong" --base "$2" --qr "$tmp/base-$1.png"
+    check "share-base-$1-no-png" test ! -e "$tmp/base-$1.png"
+    check "share-base-$1-no-link" test -z "$("$lab" share "$phong" --base "$2" 2>/dev/null)"
+    expect "share-base-remembered-$1" 2 "^--share-base: " -- env XDG_CONFIG_HOME="$tmp/config" "$lab" --share-base "$2"
+}
+bad_base esc "https://x.org/${esc}[31m/" 'byte 0x1B at offset 14 is not allowed: an address is printable ASCII \(0x21 to 0x7E\)'
+bad_base bel "https://x.org/"$'\a' 'byte 0x07 at offset 14 is not allowed'
+bad_base del "https://x.org/"$'\x7f' 'byte 0x7F at offset 14 is not allowed'
+bad_base latin1 "https://x.org/caf"$'\xe9' 'byte 0xE9 at offset 17 is not allowed'
+bad_base utf8 "https://x.org/café" 'byte 0xC3 at offset 17 is not allowed'
+bad_base space "https://x.org/a b" 'byte 0x20 at offset 15 is not allowed'
+bad_base no-host "https://" 'no host after "https://"'
+bad_base no-host-path "https:///lab/" 'no host after "https://"'
+bad_base user "https://teacher@evil.example/" 'a user name in the address'
+bad_base port "https://x.org:80a/" 'the port ":80a" is not a number'
+bad_base quote 'https://x.org/"lab' '.". \(0x22\) at offset 14 is not allowed in an address'
+check share-base-nothing-remembered test ! -e "$tmp/config/lighting-lab/settings.json"
+expect share-base-upper-case-scheme 0 '^HTTPS://X\.ORG:8080/lab/#preset=05-full-phong$' -- "$lab" share "$phong" --base HTTPS://X.ORG:8080/lab/
+expect share-base-percent-encoded 0 '^https://x\.org/caf%C3%A9/#preset=05-full-phong$' -- "$lab" share "$phong" --base https://x.org/caf%C3%A9/
+# A settings file holding such an address (written by hand, or by an older lab) is ignored, said so.
+mkdir -p "$tmp/config2/lighting-lab"
+printf '{"share_base": "https://x.org/\\u001b[31m"}' >"$tmp/config2/lighting-lab/settings.json"
+expect settings-share-base-refused 0 'settings\.json: share_base: byte 0x1B at offset 14 is not allowed.*\(ignored\)' -- \
+    env -u DISPLAY -u WAYLAND_DISPLAY XDG_CONFIG_HOME="$tmp/config2" TMPDIR="$tmp" "$lab"
+
+# An exercise whose start names its own glTF model: the page has no such model, so no link (as for
+# a preset with one).
+mkdir -p "$tmp/own-model/models"
+cp "$src/presets/models/"* "$tmp/own-model/models/"
+edit "$shin" "$tmp/own-model/ex.json" 'p["start"]["model"] = {"gltf": "models/trefoil.glb"}'
+expect share-exercise-own-model 2 'ex\.json: start\.model\.gltf: a link carries the scene, not its model file' -- \
+    "$lab" share "$tmp/own-model/ex.json" --base "$base"
+check share-exercise-own-model-no-link test -z "$("$lab" share "$tmp/own-model/ex.json" --base "$base" 2>/dev/null)"
+edit "$phong" "$tmp/own-model/p.json" 'p["model"] = {"gltf": "models/trefoil.glb"}'
+expect share-preset-own-model 2 'p\.json: model\.gltf: a link carries the scene, not its model file' -- \
+    "$lab" share "$tmp/own-model/p.json" --base "$base"
+
+# --- lab check: report.txt as safe as the terminal; goldens that would share a name ----------------
+mkdir -p "$tmp/names/g"
+hostile="$tmp/names/a${esc}[2J"$'\xff'"b.json"
+cp "$phong" "$hostile"
+"$lab" check "$hostile" --golden "$tmp/names/g" --report "$tmp/names/r" --size 16x16 >/dev/null 2>&1
+check report-txt-written test -s "$tmp/names/r/report.txt"
+check report-txt-escaped grep -qF 'a\x1B[2J\xFFb' "$tmp/names/r/report.txt"
+check report-txt-no-raw-bytes test "$(tr -d -c '\033\377' <"$tmp/names/r/report.txt" | wc -c)" -eq 0
+# x.json checks its view d against x.d.png, which is also the render golden of x.d.json.
+edit "$src/presets/13-cook-torrance-beckmann-schlick.json" "$tmp/names/x.json" 'p["check"] = {"views": ["d"]}'
+cp "$phong" "$tmp/names/x.d.json"
+expect golden-names-collide 2 '^lab check: .*x\.json and .*x\.d\.json would both be checked against x\.d\.png$' -- \
+    "$lab" check "$tmp/names/x.json" "$tmp/names/x.d.json" --golden "$tmp/names/g" --update --size 16x16
+check golden-names-collide-nothing-written test ! -e "$tmp/names/g/x.d.png" -a ! -e "$tmp/names/g/x.png"
+edit "$src/presets/23-spot-light.json" "$tmp/names/s.json" 'p["check"] = {"views": [{"view": "spot", "light": 1}, "spot"]}'
+expect check-view-listed-twice 2 's\.json: check\.views\[1\]: "spot" is listed twice$' -- \
+    "$lab" check "$tmp/names/s.json" --golden "$tmp/names/g" --update --size 16x16
+
+# --- sweeps: a value is parsed whole or refused -------------------------------------------------------
+expect sweep-unclosed-bracket 2 '^lab render: --sweep material\.specular: value 2 "\[0,0,0" leaves a .\[. open$' -- \
+    "$lab" render "$phong" --sweep 'material.specular=[1,1,1],[0,0,0' --out "$tmp/s.png" --size 8x8
+expect sweep-stray-bracket 2 "^lab render: --sweep material\.specular: value 1 \"1\]\" closes a '\]' it did not open$" -- \
+    "$lab" render "$phong" --sweep 'material.specular=1],[0,0,0]' --out "$tmp/s.png" --size 8x8
+check sweep-brackets-nothing-written test ! -e "$tmp/s.png"
+edit "$phong" "$tmp/sweep-preset.json" 'p["sweep"] = ["material.specular=[1,1,1],[0,0,0"]'
+expect sweep-in-a-preset-unclosed 2 'sweep-preset\.json: sweep\[0\]: .*leaves a .\[. open' -- \
+    "$lab" render "$tmp/sweep-preset.json" --out "$tmp/s.png" --size 8x8
+
+# --- the preview (no display) opens an exercise at its start, as the lab's window does --------------
+expect preview-exercise 0 'rendered the start of the exercise "Find the shininess" to .*/02-shininess\.png' -- env -u DISPLAY -u WAYLAND_DISPLAY TMPDIR="$tmp" "$lab" --preset "$shin"
+check preview-exercise-png is_png "$tmp/lighting-lab/02-shininess.png"
+
 finish

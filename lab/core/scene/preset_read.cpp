@@ -313,6 +313,9 @@ void readCheckViews(Reader& r, std::vector<CheckView>& views) {
         if (!viewFromName(v.view)) {
             r.errorAt(where, "no view " + inQuotes(v.view, 60) + suggestion(v.view, viewNameList()) + "; the views are " +
                                  viewNames());
+        } else if (std::find(views.begin(), views.end(), v) != views.end()) { // it would be checked twice, one golden
+            r.errorAt(where, inQuotes(v.view, 60) + (v.light == 1 ? "" : " of light " + std::to_string(v.light)) +
+                                 " is listed twice");
         } else {
             views.push_back(std::move(v));
         }

@@ -212,7 +212,15 @@ std::optional<SweepAxis> parseSweepAxis(std::string_view text, std::string& erro
     for (std::size_t i = 0; i <= values.size(); ++i) {
         char c = i < values.size() ? values[i] : ',';
         depth += c == '[' ? 1 : c == ']' ? -1 : 0;
-        if (c == ',' && depth <= 0) {
+        // A bracket left open at the end, or closed without being opened, is no value: refused
+        // rather than cut off (the last value of "[1,1,1],[0,0,0" was dropped without a word).
+        if (depth < 0 || (i == values.size() && depth > 0)) {
+            error = shown(axis.key) + ": value " + std::to_string(axis.values.size() + 1) + " " +
+                    inQuotes(trimmed(values.substr(start, i - start + (depth < 0 ? 1 : 0))), 80) +
+                    (depth < 0 ? " closes a ']' it did not open" : " leaves a '[' open");
+            return std::nullopt;
+        }
+        if (c == ',' && depth == 0) {
             std::string_view v = trimmed(values.substr(start, i - start));
             if (v.empty()) {
                 error = shown(axis.key) + ": value " + std::to_string(axis.values.size() + 1) +
@@ -221,7 +229,6 @@ std::optional<SweepAxis> parseSweepAxis(std::string_view text, std::string& erro
             }
             axis.values.emplace_back(v);
             start = i + 1;
-            depth = 0;
         }
     }
     if (axis.values.size() > kMaxSweepValues) {
