@@ -126,6 +126,26 @@ TEST(Png, AHeaderClaimingAHugeImageIsRefusedBeforeDecoding) {
     EXPECT_NE(error.find("not a readable PNG"), std::string::npos) << error;
 }
 
+TEST(Png, TheSizeIsReadFromTheHeaderAloneAndDecodingIsBoundedByTheCaller) {
+    const unsigned char bytes[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                                   0, 0, 0x40, 0, 0, 0, 0x20, 0, 8, 2, 0, 0, 0, 0, 0, 0, 0}; // 16384 x 8192, no data
+    TempFolder dir;
+    writeText(dir.path() / "claims.png", std::string(reinterpret_cast<const char*>(bytes), sizeof bytes));
+    std::string error;
+    EXPECT_EQ(readPngSize(dir.path() / "claims.png", error), (ImageSize{16384, 8192})) << error;
+    // A caller that expects at most 512 a side refuses it before decoding (the data would not decode).
+    EXPECT_FALSE(readPng(dir.path() / "claims.png", error, 512));
+    EXPECT_NE(error.find("16384x8192 is larger than allowed (at most 512 a side)"), std::string::npos) << error;
+    // A real image reads back whole under a limit of its own size.
+    Image a{3, 2, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18}};
+    ASSERT_TRUE(writePng(a, dir.path() / "a.png", error)) << error;
+    EXPECT_EQ(readPngSize(dir.path() / "a.png", error), (ImageSize{3, 2}));
+    std::optional<Image> back = readPng(dir.path() / "a.png", error, 3);
+    ASSERT_TRUE(back) << error;
+    EXPECT_EQ(back->rgb, a.rgb);
+    EXPECT_FALSE(readPngSize(dir.path() / "missing.png", error));
+}
+
 TEST(Png, BrokenFilesAreRefused) {
     TempFolder dir;
     writeText(dir.path() / "bad.png", "\x89PNG\r\n\x1a\n garbage");

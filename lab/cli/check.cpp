@@ -180,20 +180,65 @@ class Checker {
         return reportFile(name, encodePng(image), c);
     }
 
-    // The golden image, if there is one; an unreadable one is an error case (bad input), except
+    // A golden image, judged by its header before it is decoded: one the size of the render is
+    // decoded (no larger, then, than the render itself), one of another size is not (a 780 KB
+    // file can claim 16384 x 16384), one larger than the lab renders is unreadable.
+    struct Golden {
+        fs::path file;
+        std::optional<ImageSize> size; // what its header says; nullopt when missing or unreadable
+        std::optional<Image> image;    // decoded when its size is the render's
+    };
+
+    // False after making `c` an error case (bad input) for a golden that does not read, except
     // with --update, which replaces it.
-    bool readGolden(const fs::path& file, std::optional<Image>& golden, CheckCase& c) {
+    bool readGolden(const fs::path& file, const Image& actual, Golden& golden, CheckCase& c) {
+        golden.file = file;
         std::error_code ec;
         if (!fs::exists(file, ec)) {
             return true;
         }
         std::string error;
-        golden = readPng(file, error);
-        if (!golden && !options_.update) {
+        golden.size = readPngSize(file, error);
+        if (golden.size && (golden.size->width > kMaxRenderSide || golden.size->height > kMaxRenderSide)) {
+            error = "its header claims " + std::to_string(golden.size->width) + "x" + std::to_string(golden.size->height) +
+                    ", larger than the lab renders (" + std::to_string(kMaxRenderSide) + " a side)";
+            golden.size.reset();
+        }
+        if (golden.size && *golden.size == ImageSize{actual.width, actual.height} &&
+            !(golden.image = readPng(file, error, std::max(actual.width, actual.height)))) {
+            golden.size.reset();
+        }
+        if (!golden.size && !options_.update) {
             badInputCase(c, "golden " + file.string() + ": " + error);
             return false;
         }
         return true;
+    }
+
+    // A golden of another size than the render: a failure at once, its file and the render in the
+    // report folder (the golden as it is, not decoded).
+    void sizeDiffers(CheckCase& c, const Image& actual, const Golden& golden, const std::string& files) {
+        c.verdict = CheckCase::Verdict::Fail;
+        c.figures = "size " + std::to_string(actual.width) + "x" + std::to_string(actual.height) + " vs golden " +
+                    std::to_string(golden.size->width) + "x" + std::to_string(golden.size->height);
+        std::string error;
+        if (std::optional<std::string> bytes = readFile(golden.file, std::size_t{256} << 20, error)) {
+            c.golden = reportFile(files + ".golden.png", *bytes, c);
+        }
+        c.actual = reportImage(files + ".actual.png", actual, c);
+    }
+
+    // Compares `actual` with the golden, or says it is missing or of another size.
+    void judge(CheckCase& c, const Image& actual, const Golden& golden, const Tolerance& tolerance, const std::string& files) {
+        if (options_.update) {
+            update(c, actual, golden);
+        } else if (!golden.size) {
+            missing(c, golden.file, &actual, files);
+        } else if (!golden.image) {
+            sizeDiffers(c, actual, golden, files);
+        } else {
+            compare(c, actual, *golden.image, tolerance, files);
+        }
     }
 
     // --update's verdict for one golden (image or CSV): SAME when `same`, else `write(error)` writes
@@ -212,14 +257,16 @@ class Checker {
     }
 
     // --update: writes `actual` as the golden unless it is the same image.
-    void update(CheckCase& c, const Image& actual, const std::optional<Image>& golden, const fs::path& goldenFile) {
+    void update(CheckCase& c, const Image& actual, const Golden& golden) {
         std::optional<Comparison> cmp;
-        if (golden) {
-            cmp = compareImages(actual, *golden, Tolerance{});
-            c.figures = imageFigures(*cmp, actual, *golden);
+        if (golden.image) {
+            cmp = compareImages(actual, *golden.image, Tolerance{});
+            c.figures = imageFigures(*cmp, actual, *golden.image);
+        } else if (golden.size) {
+            c.figures = "size " + std::to_string(golden.size->width) + "x" + std::to_string(golden.size->height) + " before";
         }
-        updateGolden(c, cmp && cmp->sameSize && cmp->maxDifference == 0, golden.has_value(),
-                     [&](std::string& error) { return writePng(actual, goldenFile, error); });
+        updateGolden(c, cmp && cmp->sameSize && cmp->maxDifference == 0, golden.size.has_value(),
+                     [&](std::string& error) { return writePng(actual, golden.file, error); });
     }
 
     // Compares `actual` with `golden`; on a failure the three images go to the report folder
@@ -280,20 +327,13 @@ class Checker {
         if (rendered) {
             actual = std::move(rendered->image);
         }
-        const fs::path& goldenFile = planned.golden;
-        std::optional<Image> golden;
+        Golden golden;
         if (!actual) {
             printDiagnostics(diagnostics);
             c.verdict = CheckCase::Verdict::Error;
             c.message = "render failed";
-        } else if (!readGolden(goldenFile, golden, c)) {
-            // an unreadable golden: c says so
-        } else if (options_.update) {
-            update(c, *actual, golden, goldenFile);
-        } else if (!golden) {
-            missing(c, goldenFile, &*actual, stem);
-        } else {
-            compare(c, *actual, *golden, tolerances.image, stem);
+        } else if (readGolden(planned.golden, *actual, golden, c)) { // (else c says why)
+            judge(c, *actual, golden, tolerances.image, stem);
         }
         finish(c, began);
     }
@@ -318,8 +358,7 @@ class Checker {
         } else {
             error = diagnostics.empty() ? "the model does not load" : diagnostics.front().str();
         }
-        const fs::path& goldenFile = planned.golden;
-        std::optional<Image> golden;
+        Golden golden;
         if (!grid && renderFailed) {
             c.verdict = CheckCase::Verdict::Error;
             c.message = "sweep: " + error;
@@ -330,22 +369,12 @@ class Checker {
             finish(c, began);
             return;
         }
-        if (!readGolden(goldenFile, golden, c)) {
+        if (!readGolden(planned.golden, *grid, golden, c)) { // (c says why)
             finish(c, began);
             return;
         }
-        if (options_.update) {
-            update(c, *grid, golden, goldenFile);
-            finish(c, began);
-            return;
-        }
-        if (!golden) {
-            missing(c, goldenFile, &*grid, whole);
-            finish(c, began);
-            return;
-        }
-        if (golden->width != grid->width || golden->height != grid->height) {
-            compare(c, *grid, *golden, tolerances.image, whole); // fails, naming both sizes
+        if (options_.update || !golden.image) {
+            judge(c, *grid, golden, tolerances.image, whole); // updated, missing or of another size
             finish(c, began);
             return;
         }
@@ -363,7 +392,7 @@ class Checker {
                 cell.tolerance = tolerances.imageText;
                 int x = layout.cellX(column), y = layout.cellY(row);
                 compare(cell, crop(*grid, x, y, layout.cellWidth, layout.cellHeight),
-                        crop(*golden, x, y, layout.cellWidth, layout.cellHeight), tolerances.image,
+                        crop(*golden.image, x, y, layout.cellWidth, layout.cellHeight), tolerances.image,
                         sweepCellFiles(whole, row, column));
                 finish(cell, cellBegan);
                 cases.back().seconds += shared;

@@ -202,4 +202,30 @@ expect sweep-in-a-preset-unclosed 2 'sweep-preset\.json: sweep\[0\]: .*leaves a 
 expect preview-exercise 0 'rendered the start of the exercise "Find the shininess" to .*/02-shininess\.png' -- env -u DISPLAY -u WAYLAND_DISPLAY TMPDIR="$tmp" "$lab" --preset "$shin"
 check preview-exercise-png is_png "$tmp/lighting-lab/02-shininess.png"
 
+# --- a golden is judged by its header before it is decoded -----------------------------------------
+# A PNG header claiming W x H followed by data that does not decode: what lab check says shows
+# whether it decoded (a decoder would fail on the data; the header alone gives the size). A real
+# 16384 x 16384 golden of 780 KB took 41 s and 1.6 GB to be found of another size.
+png_header() { # png_header W H FILE
+    python3 -c 'import struct, sys, zlib
+w, h = int(sys.argv[1]), int(sys.argv[2])
+def chunk(t, d): return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d))
+ihdr = chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
+open(sys.argv[3], "wb").write(b"\x89PNG\r\n\x1a\n" + ihdr + chunk(b"IDAT", b"not deflate data") + chunk(b"IEND", b""))' "$@"
+}
+mkdir -p "$tmp/bomb"
+cp "$phong" "$tmp/bomb/p.json"
+png_header 8192 8192 "$tmp/bomb/p.png"
+expect golden-other-size-fails-undecoded 1 'FAIL +p  size 32x32 vs golden 8192x8192' -- \
+    "$lab" check "$tmp/bomb/p.json" --golden "$tmp/bomb" --report "$tmp/bomb/r" --size 32x32
+check golden-other-size-copied-as-is cmp -s "$tmp/bomb/p.png" "$tmp/bomb/r/p.golden.png"
+png_header 16384 16384 "$tmp/bomb/p.sweep.png"
+expect golden-larger-than-renders-is-an-error 2 'ERROR +p\.sweep: golden .*p\.sweep\.png: its header claims 16384x16384, larger than the lab renders \(8192 a side\)' -- \
+    "$lab" check "$tmp/bomb/p.json" --golden "$tmp/bomb" --report "$tmp/bomb/r" --size 32x32
+expect golden-same-size-is-decoded 2 'ERROR +p: golden .*p\.png: cannot decode PNG' -- \
+    "$lab" check "$tmp/bomb/p.json" --golden "$tmp/bomb" --report "$tmp/bomb/r" --size 8192x8192
+expect golden-other-size-updated-undecoded 0 'UPDATED +p  \(size 8192x8192 before\)' -- \
+    "$lab" check "$tmp/bomb/p.json" --golden "$tmp/bomb" --update --size 32x32
+check golden-updated-to-the-render test "$(png_size "$tmp/bomb/p.png")" = "32 32"
+
 finish

@@ -7,6 +7,8 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <string_view>
 #include <cstdlib>
 
 namespace lab {
@@ -31,23 +33,46 @@ bool writePng(const Image& image, const std::filesystem::path& file, std::string
     return writeFileAtomic(file, bytes, error, safety);
 }
 
-std::optional<Image> readPng(const std::filesystem::path& file, std::string& error) {
-    std::optional<std::string> bytes = readFile(file, std::size_t{256} << 20, error);
-    if (!bytes) {
-        return std::nullopt;
-    }
+namespace {
+
+constexpr std::size_t kMaxPngBytes = std::size_t{256} << 20;
+
+// The header's size, from bytes in memory (stb reads the IHDR chunk only).
+std::optional<ImageSize> pngSize(std::string_view bytes, std::string& error) {
     int w = 0, h = 0, channels = 0;
-    const auto* data = reinterpret_cast<const stbi_uc*>(bytes->data());
-    int size = static_cast<int>(bytes->size());
-    if (!stbi_info_from_memory(data, size, &w, &h, &channels)) {
+    if (bytes.size() > std::size_t(INT32_MAX) ||
+        !stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &w, &h, &channels)) {
         error = std::string("not a readable PNG (") + stbi_failure_reason() + ")";
         return std::nullopt;
     }
-    if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide) {
-        error = "image of " + std::to_string(w) + "x" + std::to_string(h) + " is larger than allowed";
+    return ImageSize{w, h};
+}
+
+} // namespace
+
+std::optional<ImageSize> readPngSize(const std::filesystem::path& file, std::string& error) {
+    std::optional<MappedFile> bytes = MappedFile::open(file, kMaxPngBytes, error); // mapped: no copy of the file
+    return bytes ? pngSize(bytes->bytes(), error) : std::nullopt;
+}
+
+std::optional<Image> readPng(const std::filesystem::path& file, std::string& error, int maxSide) {
+    std::optional<MappedFile> bytes = MappedFile::open(file, kMaxPngBytes, error);
+    if (!bytes) {
         return std::nullopt;
     }
-    stbi_uc* pixels = stbi_load_from_memory(data, size, &w, &h, &channels, 3);
+    std::optional<ImageSize> size = pngSize(bytes->bytes(), error);
+    if (!size) {
+        return std::nullopt;
+    }
+    const int limit = std::min(maxSide, kMaxImageSide);
+    if (size->width <= 0 || size->height <= 0 || size->width > limit || size->height > limit) {
+        error = "image of " + std::to_string(size->width) + "x" + std::to_string(size->height) +
+                " is larger than allowed (at most " + std::to_string(limit) + " a side)";
+        return std::nullopt;
+    }
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes->bytes().data()),
+                                            static_cast<int>(bytes->bytes().size()), &w, &h, &channels, 3);
     if (!pixels) {
         error = std::string("cannot decode PNG: ") + stbi_failure_reason();
         return std::nullopt;

@@ -24,7 +24,20 @@ std::string encodePng(const Image& image);
 // Encodes to PNG in memory and writes it atomically (file_io.h: WriteSafety).
 bool writePng(const Image& image, const std::filesystem::path& file, std::string& error,
               WriteSafety safety = WriteSafety::Durable);
-std::optional<Image> readPng(const std::filesystem::path& file, std::string& error);
+
+struct ImageSize {
+    int width = 0;
+    int height = 0;
+    bool operator==(const ImageSize&) const = default;
+};
+
+// The size a PNG file's header claims, read without decoding it (a 780 KB file can claim 16384 x
+// 16384, 800 MB decoded); nullopt with `error` when it is no PNG.
+std::optional<ImageSize> readPngSize(const std::filesystem::path& file, std::string& error);
+
+// Decodes a PNG file, refused before decoding (nullopt, `error`) when its header claims more than
+// `maxSide` pixels a side.
+std::optional<Image> readPng(const std::filesystem::path& file, std::string& error, int maxSide = kMaxImageSide);
 
 // The screenshot tests' thresholds. A pixel fails when any channel differs by more than
 // `pixelTolerance` levels; an image fails when more than `maxFailingShare` of its pixels fail or
