@@ -103,13 +103,14 @@ TEST(Link, BrokenLinksAreRefusedWithAReason) {
         {"#preset=", "preset", "not the name"},
         {"#zoom=3", "", "expected #preset=<name>, #exercise=<name>, #z="},
         {"#z=" + base64UrlEncode("not deflated"), "z", "not deflated data"},
-        // 2 MB of spaces deflate to a few KB: inflating stops at the preset's limit.
-        {"#z=" + base64UrlEncode(deflateBytes(std::string(2u << 20, ' '))), "z", "more than 1048576 bytes"},
+        // Just over 1 MiB of spaces deflates to about 10 KB (a link within the length limit): inflating
+        // stops at the preset's limit.
+        {"#z=" + base64UrlEncode(deflateBytes(std::string((1u << 20) + 1000, ' '))), "z", "more than 1048576 bytes"},
         {"#z=" + base64UrlEncode(deflateBytes("[1, 2]")), "z", "not a JSON object"},
         {"#z=" + base64UrlEncode(deflateBytes(R"({"material": {"shininess": -1}})")), "material.shininess", "in [0.001"},
         {"#x=" + base64UrlEncode(deflateBytes(R"({"format": "lighting-lab-exercise", "version": 1})")), "title", "missing"},
         {"#exercise=a/b", "exercise", "not the name of a bundled exercise"},
-        {"#p=" + std::string(70000, 'A'), "", "longer than"},
+        {"#p=" + std::string(70000, 'A'), "", "longer than 16384 characters (it has 70002)"},
     };
     for (const Case& c : cases) {
         Diagnostics d;
@@ -119,6 +120,35 @@ TEST(Link, BrokenLinksAreRefusedWithAReason) {
         EXPECT_EQ(d[0].where, c.where) << d[0].str();
         EXPECT_NE(d[0].message.find(c.message), std::string::npos) << d[0].str();
     }
+}
+
+// A fragment over kMaxLinkChars is refused for its length before anything of it is decoded: one
+// that is no base64url at all says so only when it fits. The page's own saved state may be longer.
+TEST(Link, AFragmentOverTheLimitIsRefusedBeforeDecoding) {
+    const std::string notBase64(kMaxLinkChars - 2, '%');
+    for (const char* kind : {"z=", "x=", "p="}) {
+        Diagnostics fits, over;
+        EXPECT_FALSE(parseLink(kind + notBase64, ".", fits));
+        ASSERT_EQ(fits.size(), 1u);
+        EXPECT_NE(fits[0].message.find("not valid base64url"), std::string::npos) << fits[0].str(); // it was decoded
+        EXPECT_FALSE(parseLink("#" + std::string(kind) + notBase64 + "%", ".", over));
+        ASSERT_EQ(over.size(), 1u);
+        EXPECT_EQ(over[0].message, linkTooLong(kMaxLinkChars + 1)) << over[0].str(); // it was not
+    }
+    // A real scene with a long description: refused as an address, opened as the saved state.
+    Preset p;
+    std::string text;
+    for (unsigned i = 0; text.size() < 3 * kMaxLinkChars; ++i) {
+        text += std::to_string(i * 2654435761u) + " "; // digits that do not deflate away
+    }
+    p.description = text;
+    const std::string link = presetLink(p, std::nullopt);
+    ASSERT_GT(link.size(), kMaxLinkChars);
+    Diagnostics address, saved;
+    EXPECT_FALSE(parseLink(link, ".", address));
+    std::optional<Linked> back = parseLink(link, ".", saved, nullptr, kMaxSavedLinkChars);
+    ASSERT_TRUE(back) << toString(saved);
+    EXPECT_EQ(std::get<Preset>(*back).description, text);
 }
 
 } // namespace

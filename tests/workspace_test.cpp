@@ -185,6 +185,35 @@ TEST(Workspace, ALinkRoundTripsTheSceneAndABrokenLinkChangesNothing) {
     EXPECT_EQ(g.ws.a(), opened);
 }
 
+// A scene whose link would be longer than a link may be (a long description) cannot be copied as a
+// link (a problem says how long it is), and is opened again from the page's saved state only.
+TEST(Workspace, ASceneWhoseLinkIsTooLongIsKeptButNotShared) {
+    Fixture f;
+    std::string text;
+    for (unsigned i = 0; text.size() < 2 * kMaxLinkChars; ++i) {
+        text += std::to_string(i * 2654435761u) + " "; // digits that do not deflate away
+    }
+    f.ws.a().description = text;
+    const std::string link = f.ws.link();
+    ASSERT_GT(link.size(), kMaxLinkChars);
+    EXPECT_FALSE(f.ws.linkShareable());
+    std::string problems = titles(f.ws.takeProblems());
+    EXPECT_NE(problems.find("Cannot copy the link"), std::string::npos) << problems;
+    EXPECT_NE(problems.find("would be " + std::to_string(link.size()) + " characters, more than the 16384"), std::string::npos)
+        << problems;
+
+    Fixture g;
+    g.ws.openLink(link); // as an address: refused, nothing changed
+    EXPECT_NE(titles(g.ws.takeProblems()).find("longer than 16384 characters"), std::string::npos);
+    EXPECT_NE(g.ws.a().description, text);
+    g.ws.openLink(link, true); // as the page's saved state
+    EXPECT_TRUE(g.ws.takeProblems().empty());
+    EXPECT_EQ(g.ws.a().description, text);
+    g.ws.a().description = "short";
+    EXPECT_TRUE(g.ws.linkShareable());
+    EXPECT_TRUE(g.ws.takeProblems().empty());
+}
+
 // An inline link's glTF preset without a camera is framed as a file's is: from three-quarters;
 // one with a camera keeps it.
 TEST(Workspace, ALinkedGltfPresetWithoutACameraIsFramed) {

@@ -204,7 +204,7 @@ void App::Impl::carryOut(const FrameInput& in, const ui::ScreenEvents& events) {
         workspace.drop(in.droppedFiles);
     }
     if (in.openLink && !in.openLink->empty()) {
-        workspace.openLink(*in.openLink);
+        workspace.openLink(*in.openLink, in.openLinkSaved);
     }
     if (in.closeRequested) {
         workspace.requestQuit();
@@ -258,7 +258,7 @@ void App::Impl::carryOut(const Request& r) {
         break;
     case Command::FocusOpenPath: panel.focusOpenPath = true; break;
     case Command::PickFile: pickFile = true; break;
-    case Command::CopyLink: copyLink = true; break; // the page says whether the browser allowed it
+    case Command::CopyLink: copyLink = workspace.linkShareable(); break; // the page says whether the browser allowed it
     case Command::ToggleShareCode: shareCode.shown = !shareCode.shown; break;
     case Command::ToggleShaderEditor: shaderEditor.open = !shaderEditor.open; break;
     case Command::CompileShaders:
@@ -563,6 +563,7 @@ FrameOutput App::frame(const FrameInput& in) {
     FrameOutput out;
     out.quit = ws.quit();
     out.link = ws.link();
+    out.problem = m.problem ? printable(toString(*m.problem)) : std::string();
     out.downloads = ws.takeDownloads();
     out.uiScale = m.presenter ? m.presenterScale : in.touch ? kTouchScale : 1.0f;
     out.touch = in.touch;

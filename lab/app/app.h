@@ -44,7 +44,8 @@ struct FrameInput {
     bool repaint = false;               // the window's picture was lost (uncovered, resized): draw it even if unchanged
     bool closeRequested = false; // the user closed the window
     bool touch = false;          // the pointer is a finger (app/touch.h): touch-sized widgets
-    std::optional<std::string> openLink; // a preset link to open ("preset=name" or "p=...", see core/share/share_link.h)
+    std::optional<std::string> openLink; // a link to open ("preset=name", "z=...": core/share/share_link.h)
+    bool openLinkSaved = false;          // it is the page's own saved state (kMaxSavedLinkChars), not an address
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
 };
 
@@ -55,7 +56,8 @@ struct FrameOutput {
     bool touch = false;   // touch-sized widgets (FrameInput::touch)
     bool typing = false;  // a text field has the keyboard (the browser shows a touch screen's keyboard)
     std::string title;
-    std::string link;               // the current scene as a preset link (shareable, restorable)
+    std::string link;               // the current scene as a preset link (shareable, restorable; may exceed kMaxLinkChars)
+    std::string problem;            // the error dialog's text while it is shown (the page mirrors it for screen readers)
     std::vector<Download> downloads; // only when AppOptions::saveByDownload
     bool pickFile = false;           // the user asked to open a file (the browser shows its picker)
     bool copyLink = false;           // the user asked for the scene's link on the clipboard (the browser)

@@ -464,10 +464,10 @@ void Workspace::saveFiles(const std::vector<Download>& files, const std::string&
 // Links (the browser's URL fragment and saved state)
 //----------------------------------------------------------------------------------------
 
-void Workspace::openLink(const std::string& fragment) {
+void Workspace::openLink(const std::string& fragment, bool saved) {
     Diagnostics d;
     OmittedKeys omitted;
-    auto parsed = parseLink(fragment, bundledFolder(), d, &omitted);
+    auto parsed = parseLink(fragment, bundledFolder(), d, &omitted, saved ? kMaxSavedLinkChars : kMaxLinkChars);
     if (!parsed) {
         problem("Cannot open the link (nothing was changed)", std::move(d));
         return;
@@ -527,6 +527,17 @@ const std::string& Workspace::link() {
         link_ = {presetLink(doc_.preset, bundled), doc_.preset, doc_.file(), true};
     }
     return link_.text;
+}
+
+bool Workspace::linkShareable() {
+    const std::size_t length = link().size();
+    if (length > kMaxLinkChars) {
+        problem("Cannot copy the link", "This scene's link would be " + std::to_string(length) + " characters, more than the " +
+                                            std::to_string(kMaxLinkChars) + " a link may have. The scene stays in this "
+                                            "browser (it comes back on a reload), but it cannot be shared as a link: shorten "
+                                            "its description or the exercise's text, or download the file and share that.");
+    }
+    return length <= kMaxLinkChars;
 }
 
 //----------------------------------------------------------------------------------------

@@ -102,7 +102,9 @@ public:
     // Carries out a scene or file command; false if `request` is not the workspace's.
     bool run(const Request& request);
     void open(const std::filesystem::path& file);
-    void openLink(const std::string& fragment); // "preset=name", "exercise=name", "z=...", "x=..." (core/share/share_link.h)
+    // "preset=name", "exercise=name", "z=...", "x=..." (core/share/share_link.h); `saved`: the page's
+    // own saved state, which may be longer than a link from outside.
+    void openLink(const std::string& fragment, bool saved = false);
     bool saveTo(const std::filesystem::path& file);
     // A .gltf/.glb becomes A's model, framed as a preset without a camera is (seen from
     // core/scene/camera.h threeQuarterDirection), and A's lights are carried to it
@@ -155,6 +157,9 @@ public:
 
     // The current scene as a preset link, recomputed only when the scene changed.
     const std::string& link();
+    // Whether that link can be shared (at most kMaxLinkChars); when not, a problem says why and
+    // how long it is (the page keeps such a scene in its saved state only).
+    bool linkShareable();
 
 private:
     struct Resolved {

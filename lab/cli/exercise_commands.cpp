@@ -166,6 +166,13 @@ int runShare(const fs::path& file, const std::string& base, const std::optional<
     if (!filesUsable(files, "lab share")) {
         return kExitBadInput;
     }
+    if (fragment.size() > kMaxLinkChars) {
+        print(stderr, file.string() + ": the link would be " + std::to_string(fragment.size()) + " characters, more than the " +
+                          std::to_string(kMaxLinkChars) + " a link may have (the page refuses longer ones): shorten "
+                          "the description and instructions, or publish the file with the course page and link it by "
+                          "name (#preset=NAME, #exercise=NAME)\n");
+        return kExitBadInput;
+    }
     const std::string url = shareUrl(base, fragment);
     std::optional<QrCode> code = encodeQr(url, error);
     if (!code) {

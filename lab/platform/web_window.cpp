@@ -19,12 +19,16 @@
 //     reversed, 100 a notch; its listener never sees the event);
 //   * "Copy link" puts the page's address, whose fragment is the scene, on the clipboard;
 //   * the current scene is kept in the URL fragment (history.replaceState, a shareable link)
-//     and in localStorage, so a reload restores it; a hashchange opens the new link.
+//     and in localStorage, so a reload restores it; a hashchange opens the new link. A fragment
+//     longer than kMaxLinkChars is refused by the page before it reaches the lab (it says so), and
+//     a scene whose link would be longer is kept in localStorage only;
+//   * the error dialog's text is mirrored into the page (a live region), for screen readers.
 // Not here: anything about presets, rendering or the UI's content.
 #include "platform/window.h"
 
 #include "app/frame_pacer.h"
 #include "app/touch.h"
+#include "core/share/share_link.h" // kMaxLinkChars
 #include "platform/imgui_glfw.h"
 #include "platform/imgui_host.h"
 #include "render/gl.h"
@@ -77,20 +81,37 @@ EM_JS(void, labJsDownload, (const char* name, const char* data, int size), {
     }
 });
 
-EM_JS(void, labJsSetLink, (const char* link), {
+// The scene's link in the address bar and the saved state; one too long to be a link (`fits` 0) is
+// kept in the saved state only, and the address loses its fragment (a reload then opens the saved
+// state rather than an older link).
+EM_JS(void, labJsSetLink, (const char* link, int fits), {
     const text = UTF8ToString(link);
-    if (location.hash.substring(1) !== text) {
-        history.replaceState(null, "", "#" + text);
+    const address = fits ? "#" + text : location.pathname + location.search;
+    if (fits ? location.hash.substring(1) !== text : location.hash !== "") {
+        history.replaceState(null, "", address);
     }
     try { localStorage.setItem('lighting-lab/link', text); } catch (e) {}
 });
 
-EM_JS(char*, labJsInitialLink, (), {
+// The link to open at start: the address's fragment, or else the saved state (then *saved = 1). A
+// fragment longer than `limit` is refused here, before it is copied or decoded: the page says so
+// and the lab opens its default scene. The page's hashchange handler keeps to the same limit.
+EM_JS(char*, labJsInitialLink, (int limit, int* saved), {
+    Module.labMaxLinkChars = limit;
     let text = location.hash.length > 1 ? location.hash.substring(1) : "";
-    if (!text) {
+    if (text.length > limit) {
+        if (Module.labLinkRefused) Module.labLinkRefused(text.length, false);
+        text = "";
+    } else if (!text) {
         try { text = localStorage.getItem("lighting-lab/link") || ""; } catch (e) {}
+        HEAP32[saved >> 2] = text ? 1 : 0;
     }
     return stringToNewUTF8(text);
+});
+
+// The error dialog's text ("" when it closes), mirrored into the page for screen readers and tests.
+EM_JS(void, labJsProblem, (const char* text), {
+    if (Module.labProblem) Module.labProblem(UTF8ToString(text));
 });
 
 EM_JS(void, labJsPickFile, (), {
@@ -135,8 +156,9 @@ struct WebState : PlatformInput {
     bool touchScreen = false; // a finger was seen, or the page's pointer is coarse
     bool typing = false;      // the screen's keyboard was asked for
     int canvasWidth = 0, canvasHeight = 0;
-    std::string lastLink, lastTitle;
+    std::string lastLink, lastTitle, lastProblem;
     std::optional<std::string> pendingLink;
+    bool pendingLinkSaved = false; // pendingLink is the saved state, not an address
     int frames = 0;
 };
 
@@ -189,6 +211,7 @@ FrameInput nextInput(WebState& s, double dpr) {
         f = adopt(f);
     }
     in.openLink = std::exchange(s.pendingLink, std::nullopt);
+    in.openLinkSaved = std::exchange(s.pendingLinkSaved, false);
     in.touch = s.touchScreen;
     return in;
 }
@@ -213,8 +236,12 @@ void deliver(WebState& s, const FrameOutput& out) {
         s.lastTitle = out.title;
     }
     if (out.link != s.lastLink) {
-        labJsSetLink(out.link.c_str());
+        labJsSetLink(out.link.c_str(), out.link.size() <= kMaxLinkChars ? 1 : 0);
         s.lastLink = out.link;
+    }
+    if (out.problem != s.lastProblem) {
+        labJsProblem(out.problem.c_str());
+        s.lastProblem = out.problem;
     }
 }
 
@@ -308,9 +335,18 @@ EMSCRIPTEN_KEEPALIVE void lab_backspace() {
         gState->changed = true;
     }
 }
+// A new fragment in the address bar (the page refuses one longer than kMaxLinkChars first).
 EMSCRIPTEN_KEEPALIVE void lab_open_link(const char* link) {
     if (gState && gState->lastLink != link) {
         gState->pendingLink = std::string(link);
+        gState->pendingLinkSaved = false;
+    }
+}
+// The page refused a new fragment (too long): the address shows the scene's own link again.
+EMSCRIPTEN_KEEPALIVE void lab_restore_link() {
+    if (gState) {
+        gState->lastLink.clear(); // delivered again by the next frame
+        gState->changed = true;
     }
 }
 // One wheel event from the page, in notches, signed as desktop GLFW reports a mouse wheel (up positive).
@@ -360,9 +396,11 @@ WindowResult runLab(const AppOptions& options, const WindowOptions&, std::string
         return WindowResult::Failed;
     }
     labJsMark("started");
-    char* link = labJsInitialLink();
+    int saved = 0;
+    char* link = labJsInitialLink(static_cast<int>(kMaxLinkChars), &saved);
     if (link && *link) {
         s->pendingLink = std::string(link);
+        s->pendingLinkSaved = saved != 0;
     }
     std::free(link);
     s->touchScreen = labJsCoarsePointer() != 0;

@@ -228,4 +228,10 @@ expect golden-other-size-updated-undecoded 0 'UPDATED +p  \(size 8192x8192 befor
     "$lab" check "$tmp/bomb/p.json" --golden "$tmp/bomb" --update --size 32x32
 check golden-updated-to-the-render test "$(png_size "$tmp/bomb/p.png")" = "32 32"
 
+# --- links: never longer than a link may be (16384 characters) ---------------------------------------
+edit "$phong" "$tmp/long-link.json" 'p["description"] = " ".join(str(i * 2654435761 % 10**9) for i in range(4000))'
+expect share-link-too-long 2 'long-link\.json: the link would be [0-9]+ characters, more than the 16384 a link may have' -- \
+    "$lab" share "$tmp/long-link.json" --base "$base"
+check share-link-too-long-no-link test -z "$("$lab" share "$tmp/long-link.json" --base "$base" 2>/dev/null)"
+
 finish

@@ -47,4 +47,7 @@ inline std::string toString(const Diagnostics& diagnostics) {
     return s;
 }
 
+// The title, then every diagnostic, one per line.
+inline std::string toString(const Problem& problem) { return problem.title + "\n" + toString(problem.diagnostics); }
+
 } // namespace lab

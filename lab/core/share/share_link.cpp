@@ -19,7 +19,6 @@ namespace lab {
 namespace {
 
 constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
-constexpr std::size_t kMaxLinkBytes = 64 * 1024;
 
 int decodeChar(char c) {
     if (c >= 'A' && c <= 'Z') return c - 'A';
@@ -164,14 +163,20 @@ std::optional<std::string> packedJson(std::string_view encoded, const std::strin
 
 } // namespace
 
+std::string linkTooLong(std::size_t length) {
+    return "longer than " + std::to_string(kMaxLinkChars) + " characters (it has " + std::to_string(length) +
+           "): not a link the lab makes";
+}
+
 std::optional<Linked> parseLink(std::string_view fragment, const std::filesystem::path& folder,
-                                Diagnostics& diagnostics, OmittedKeys* omitted) {
+                                Diagnostics& diagnostics, OmittedKeys* omitted, std::size_t maxChars) {
     if (!fragment.empty() && fragment.front() == '#') {
         fragment.remove_prefix(1);
     }
     const std::string file = "link";
-    if (fragment.size() > kMaxLinkBytes) {
-        diagnostics.push_back({file, "", "longer than " + std::to_string(kMaxLinkBytes) + " characters"});
+    if (fragment.size() > maxChars) { // before anything is decoded
+        diagnostics.push_back({file, "", maxChars == kMaxLinkChars ? linkTooLong(fragment.size())
+                                                                   : "longer than " + std::to_string(maxChars) + " characters"});
         return std::nullopt;
     }
     if (fragment.starts_with("preset=") || fragment.starts_with("exercise=")) {

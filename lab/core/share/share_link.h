@@ -10,8 +10,10 @@
 //   p=<base64url>            a whole preset as minified JSON (links made before z=; still read)
 //
 // Decoding validates exactly like a file (the link is untrusted input; at most kMaxPresetBytes
-// inflated) and reports problems as diagnostics naming the link. No GL, no browser: the web
-// platform moves the strings in and out of location.hash and localStorage.
+// inflated) and reports problems as diagnostics naming the link. A fragment longer than
+// kMaxLinkChars is refused before anything is decoded (the page refuses it before it reaches
+// here). No GL, no browser: the web platform moves the strings in and out of location.hash and
+// localStorage.
 #pragma once
 
 #include "core/exercise/exercise.h"
@@ -23,6 +25,17 @@
 #include <variant>
 
 namespace lab {
+
+// The longest link fragment (the characters after '#') the lab opens or makes. A real scene's
+// link is a few hundred characters (a few thousand with long texts); a longer fragment is refused
+// before it is decoded (megabytes held up the page's start). `lab share`, Copy link and the
+// address bar never get a longer one: such a scene (a very long description) stays in the
+// page's saved state, which is the page's own and may hold up to kMaxSavedLinkChars.
+inline constexpr std::size_t kMaxLinkChars = 16384;
+inline constexpr std::size_t kMaxSavedLinkChars = std::size_t{2} << 20; // a 1 MiB preset, deflated, base64url
+
+// "longer than 16384 characters (it has N)": the refusal the page and parseLink give.
+std::string linkTooLong(std::size_t length);
 
 // The fragment for a preset: "preset=<bundledName>" when given, else "z=...".
 std::string presetLink(const Preset& preset, const std::optional<std::string>& bundledName);
@@ -45,8 +58,10 @@ using Linked = std::variant<LinkedPresetName, Preset, LinkedExerciseName, Exerci
 // (with diagnostics) when the link is broken. `omitted`, when given, receives which of `camera` and
 // `lights` a "p=" preset left out (a glTF model is then framed as a file's is, frameOmitted); a
 // "z=" preset leaves nothing out (what it does not say is the default).
+// `maxChars` is kMaxLinkChars for a link from outside, kMaxSavedLinkChars for the page's saved state.
 std::optional<Linked> parseLink(std::string_view fragment, const std::filesystem::path& folder,
-                                Diagnostics& diagnostics, OmittedKeys* omitted = nullptr);
+                                Diagnostics& diagnostics, OmittedKeys* omitted = nullptr,
+                                std::size_t maxChars = kMaxLinkChars);
 
 std::string base64UrlEncode(std::string_view bytes);
 std::optional<std::string> base64UrlDecode(std::string_view text);
