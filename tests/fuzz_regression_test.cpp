@@ -59,6 +59,33 @@ TEST(FuzzRegression, HugeCoordinatesGetFiniteComputedNormals) {
     }
 }
 
+TEST(FuzzRegression, ExerciseInputs) {
+    auto files = filesIn({"presets/exercises", "tests/fuzz/regressions/exercise"});
+    ASSERT_GE(files.size(), 8u);
+    for (const fs::path& f : files) {
+        EXPECT_EQ(fuzz::checkExercise(readText(f)), "") << f;
+    }
+    // The check can fail: a tolerance infinite as a float was accepted, and its link aborted.
+    std::string bundled = readText(fs::path(LAB_SOURCE_DIR) / "presets/exercises/02-shininess.json");
+    std::string hostile = bundled.substr(0, bundled.rfind('}')) + R"(, "tolerance": {"fields": {"material.shininess": 1e308}}})";
+    EXPECT_EQ(fuzz::checkExercise(hostile), "");
+    Diagnostics d;
+    EXPECT_FALSE(parseExercise(hostile, "x.json", std::nullopt, d)) << "refused when read";
+}
+
+TEST(FuzzRegression, LinkInputs) {
+    auto files = filesIn({"tests/fuzz/seeds/link", "tests/fuzz/regressions/link"});
+    ASSERT_GE(files.size(), 40u);
+    int opened = 0;
+    for (const fs::path& f : files) {
+        EXPECT_EQ(fuzz::checkLink(readText(f)), "") << f;
+        Diagnostics d;
+        opened += parseLink(readText(f), ".", d).has_value() ? 1 : 0;
+    }
+    EXPECT_GE(opened, 30) << "the seeds are mostly links that open (the bundled scenes)";
+    EXPECT_LE(opened, static_cast<int>(files.size()) - 5) << "and some that do not";
+}
+
 TEST(FuzzRegression, CommandLineInputs) {
     auto files = filesIn({"tests/fuzz/seeds/cli", "tests/fuzz/regressions/cli"});
     ASSERT_GE(files.size(), 10u);
@@ -74,7 +101,9 @@ TEST(FuzzRegression, CommandLineInputs) {
     // differs from its black golden).
     const std::pair<const char*, const char*> runs[] = {{"render\na.json\n--out\nx.png", "x.png"},
                                                         {"plot\na.json\n--out\np.csv", "p.csv"},
-                                                        {"check\na.json\n--golden\ngolden", "lab-check/report.txt"}};
+                                                        {"check\na.json\n--golden\ngolden", "lab-check/report.txt"},
+                                                        {"exercise\ncheck\ne.json\na.json\n--diff\nd.png", "d.png"},
+                                                        {"share\na.json\n--base\nhttps://x.org/\n--qr\nq.png", "q.png"}};
     for (const auto& [args, file] : runs) {
         EXPECT_EQ(fuzz::checkCommandLine(args), "") << args;
         EXPECT_TRUE(fs::exists(fuzz::commandScratch() / file)) << args;

@@ -6,8 +6,10 @@
 // the lab like a file from the desktop. The lab must keep running, and a file that does not load
 // must leave the scene exactly as it was (its link, the whole preset, unchanged).
 #include "app/app.h"
+#include "core/exercise/exercise.h"
 #include "core/gltf/reader.h"
 #include "core/scene/preset.h"
+#include "core/share/share_link.h"
 #include "platform/headless_app.h"
 #include "platform/headless_gl.h"
 #include "test_files.h"
@@ -21,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-enum class Kind { Preset, Gltf };
+enum class Kind { Preset, Gltf, Exercise, Link };
 
 std::vector<std::pair<fs::path, Kind>> corpus() {
     std::vector<std::pair<fs::path, Kind>> files;
@@ -40,9 +42,15 @@ std::vector<std::pair<fs::path, Kind>> corpus() {
     add(src / "presets/models", Kind::Gltf);
     add(src / "tests/fuzz/seeds/gltf", Kind::Gltf);
     add(src / "tests/fuzz/regressions/gltf", Kind::Gltf);
+    add(src / "presets/exercises", Kind::Exercise);
+    add(src / "tests/fuzz/regressions/exercise", Kind::Exercise);
+    add(src / "tests/fuzz/seeds/link", Kind::Link);
+    add(src / "tests/fuzz/regressions/link", Kind::Link);
     if (const char* extra = std::getenv("LAB_FUZZ_CORPUS")) {
         add(fs::path(extra) / "preset", Kind::Preset);
         add(fs::path(extra) / "gltf", Kind::Gltf);
+        add(fs::path(extra) / "exercise", Kind::Exercise);
+        add(fs::path(extra) / "link", Kind::Link);
     }
     return files;
 }
@@ -64,16 +72,24 @@ TEST(GuiCorpus, EveryFuzzInputDroppedOnTheLabIsSurvived) {
     ASSERT_GT(files.size(), 30u);
     int refused = 0;
     for (const auto& [file, kind] : files) {
-        // The drop carries a file name with the extension the lab expects for its content.
+        // A drop carries a file name with the extension the lab expects for its content; a link is
+        // opened as the page opens its address.
         std::string bytes = readText(file);
         bool glb = bytes.rfind("glTF", 0) == 0;
-        fs::path dropped = dir.path() / (kind == Kind::Preset ? "dropped.json" : glb ? "dropped.glb" : "dropped.gltf");
+        fs::path dropped = dir.path() / (kind == Kind::Gltf ? (glb ? "dropped.glb" : "dropped.gltf") : "dropped.json");
         writeText(dropped, bytes);
         Diagnostics d;
-        bool loads = kind == Kind::Preset ? loadPreset(dropped, d).has_value() : loadGltf(dropped, "m", d).has_value();
+        bool loads = kind == Kind::Preset     ? loadPreset(dropped, d).has_value()
+                     : kind == Kind::Exercise ? loadExercise(dropped, d).has_value()
+                     : kind == Kind::Link     ? parseLink(bytes, options.presetFolders[0], d).has_value()
+                                              : loadGltf(dropped, "m", d).has_value();
 
         FrameInput in;
-        in.droppedFiles = {dropped.string()};
+        if (kind == Kind::Link) {
+            in.openLink = bytes;
+        } else {
+            in.droppedFiles = {dropped.string()};
+        }
         FrameOutput out = lab.frame(in);
         if (!loads) {
             ++refused;

@@ -294,6 +294,24 @@ TEST(Workspace, ABundledPresetIsLinkedByName) {
     EXPECT_EQ(ws.link().rfind("z=", 0), 0u);
 }
 
+// The page moves a file a student opens into the shipped presets' folder (so its model paths
+// resolve): it is not shipped, and linking it by name would open nothing on anyone else's page.
+TEST(Workspace, AFileAddedToTheShippedFolderLaterIsNotLinkedByName) {
+    TempFolder shipped;
+    Preset p;
+    p.name = "shipped";
+    Diagnostics d;
+    ASSERT_TRUE(savePreset(p, shipped.path() / "one.json", d));
+    Workspace ws(WorkspaceOptions{{shipped.path()}, {}, true, {}});
+    ws.start(shipped.path(), shipped.path() / "one.json");
+    EXPECT_EQ(ws.link(), "preset=one");
+    p.name = "uploaded";
+    ASSERT_TRUE(savePreset(p, shipped.path() / "uploaded.json", d));
+    ws.open(shipped.path() / "uploaded.json");
+    ASSERT_EQ(ws.document().file(), shipped.path() / "uploaded.json");
+    EXPECT_EQ(ws.link().rfind("z=", 0), 0u) << ws.link();
+}
+
 TEST(Workspace, ADroppedModelInsideTheFolderBecomesTheModelAndOneOutsideIsRefused) {
     Fixture f;
     fs::copy_file(kModel, f.dir.path() / "trefoil.glb");

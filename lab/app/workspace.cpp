@@ -67,6 +67,8 @@ void Workspace::start(const fs::path& folder, const std::optional<fs::path>& pre
     defaults.name = "Default";
     doc_.reset(defaults, {}, folder);
     resolved_ = {};
+    std::error_code ec;
+    shipped_ = fs::is_directory(bundledFolder(), ec) ? listPresets(bundledFolder()) : std::vector<fs::path>{};
     refreshPresetList();
     if (preset) {
         open(*preset);
@@ -521,7 +523,8 @@ const std::string& Workspace::link() {
     if (!link_.valid || link_.preset != doc_.preset || link_.file != doc_.file()) {
         std::optional<std::string> bundled;
         std::error_code ec;
-        if (!doc_.dirty() && !doc_.file().empty() && fs::equivalent(doc_.folder(), bundledFolder(), ec)) {
+        bool shipped = std::any_of(shipped_.begin(), shipped_.end(), [&](const fs::path& f) { return fs::equivalent(f, doc_.file(), ec); });
+        if (!doc_.dirty() && !doc_.file().empty() && shipped) {
             bundled = doc_.file().stem().string();
         }
         link_ = {presetLink(doc_.preset, bundled), doc_.preset, doc_.file(), true};

@@ -189,6 +189,9 @@ private:
     std::array<Resolved, 2> resolved_; // A's and B's
     std::vector<std::filesystem::path> presetFiles_;
     std::vector<std::filesystem::path> exerciseFiles_;
+    // The shipped presets as start() found them: only these are linked by name (the page moves an
+    // uploaded file into the same folder, and no one else's page has it).
+    std::vector<std::filesystem::path> shipped_;
     int currentPreset_ = -1;
     std::optional<std::string> question_;
     std::function<void()> pending_;

@@ -9,6 +9,7 @@
 
 #include "cli/command_line.h"
 #include "cli/commands.h"
+#include "core/exercise/exercise.h"
 #include "core/gltf/reader.h"
 #include "core/io/file_io.h"
 #include "core/io/image.h"
@@ -16,6 +17,7 @@
 #include "core/lighting/lighting.h"
 #include "core/plots/plot_data.h"
 #include "core/scene/preset.h"
+#include "core/share/share_link.h"
 #include "platform/headless_gl.h"
 #include "render/offscreen.h" // kMaxRenderSide
 
@@ -60,6 +62,91 @@ inline std::string checkPreset(std::string_view text) {
     }
     if (presetToJson(*second) != saved) {
         return "saving twice gives different bytes";
+    }
+    return "";
+}
+
+// An exercise's link opens the same exercise (the scenes' names and descriptions, which a link
+// leaves out, aside), or the link is refused for its length.
+inline std::string checkExerciseLinks(const Exercise& e) {
+    const std::string link = exerciseLink(e, std::nullopt);
+    if (link.size() > kMaxLinkChars) {
+        return "";
+    }
+    Diagnostics d;
+    std::optional<Linked> back = parseLink(link, ".", d);
+    const Exercise* linked = back ? std::get_if<Exercise>(&*back) : nullptr;
+    if (!linked) {
+        return "an exercise's own link does not open: " + toString(d);
+    }
+    Exercise expected = e;
+    for (Preset* p : {&expected.start, &expected.target}) {
+        p->name = Preset{}.name;
+        p->description.clear();
+    }
+    Exercise got = *linked;
+    for (Preset* p : {&got.start, &got.target}) {
+        p->name = Preset{}.name;
+        p->description.clear();
+    }
+    return got == expected ? "" : "an exercise's link opens another exercise";
+}
+
+// Exercise text: parse → validate → save → parse → save gives the same bytes, and its link the same
+// exercise; or a clean error.
+inline std::string checkExercise(std::string_view text) {
+    Diagnostics d;
+    std::optional<Exercise> first = parseExercise(text, "fuzz.json", std::nullopt, d);
+    if (!first) {
+        return refusedWithoutMessage(d);
+    }
+    std::string saved = exerciseToJson(*first);
+    Diagnostics again;
+    std::optional<Exercise> second = parseExercise(saved, "saved.json", std::nullopt, again);
+    if (!second) {
+        return "an exercise that loaded does not load after saving: " + toString(again);
+    }
+    if (!(*second == *first)) {
+        return "load(save(x)) != x";
+    }
+    if (exerciseToJson(*second) != saved) {
+        return "saving twice gives different bytes";
+    }
+    return checkExerciseLinks(*first);
+}
+
+// A link fragment (the page's address or saved state): refused with a message, or what it opens
+// links back to itself — a preset to the same preset, an exercise as checkExerciseLinks says, a name
+// to the same name. Nothing it holds reaches a message raw.
+inline std::string checkLink(std::string_view fragment) {
+    Diagnostics d;
+    std::optional<Linked> linked = parseLink(fragment, ".", d);
+    if (!linked) {
+        std::string problem = refusedWithoutMessage(d);
+        for (const Diagnostic& x : d) {
+            if (problem.empty() && printable(x.str()) != x.str()) {
+                problem = "a message that is not terminal-safe: " + printable(x.str());
+            }
+        }
+        return problem;
+    }
+    if (const Preset* p = std::get_if<Preset>(&*linked)) {
+        const std::string again = presetLink(*p, std::nullopt);
+        if (again.size() > kMaxLinkChars) {
+            return "";
+        }
+        Diagnostics d2;
+        std::optional<Linked> back = parseLink(again, ".", d2);
+        const Preset* q = back ? std::get_if<Preset>(&*back) : nullptr;
+        return q && *q == *p ? "" : "a preset's own link does not open the same preset: " + toString(d2);
+    }
+    if (const Exercise* e = std::get_if<Exercise>(&*linked)) {
+        return checkExerciseLinks(*e);
+    }
+    const std::string* name = std::get_if<LinkedPresetName>(&*linked) ? &std::get<LinkedPresetName>(*linked).name
+                                                                       : &std::get<LinkedExerciseName>(*linked).name;
+    if (name->empty() || name->find_first_of("/\\") != std::string::npos || name->find("..") != std::string::npos) {
+        return "a linked name that is a path: " + printable(*name);
     }
     return "";
 }
@@ -156,7 +243,7 @@ inline std::string checkGltf(std::string_view bytes, const std::filesystem::path
 }
 
 // Where the command-line check runs commands: a scratch folder with a valid preset (a.json), a
-// broken one (b.json), a golden for a.json (golden/a.png, black: a comparison that fails) and a
+// broken one (b.json), an exercise (e.json), a golden for a.json (golden/a.png, black: a comparison that fails) and a
 // file where a folder is wanted. writeCommandFixtures() puts them back before each command, so a
 // command that overwrote one (`--out a.json`) does not change what the next input meets.
 inline const std::filesystem::path& commandScratch() {
@@ -181,6 +268,10 @@ inline void writeCommandFixtures() {
     writeFileAtomic(f / "a.json", R"({"format": "lighting-lab-preset", "version": 1, "name": "a"})", error);
     writeFileAtomic(f / "b.json", "{\"format\": \"lighting-lab-preset\", \"version\": 1, \"\x1b[2J\": 1}", error);
     writeFileAtomic(f / "file", "not a folder", error);
+    writeFileAtomic(f / "e.json", R"({"format": "lighting-lab-exercise", "version": 1, "title": "e", "instructions": "",
+                                      "start": {}, "target": {"material": {"shininess": 80}},
+                                      "open": ["material.shininess"]})",
+                    error);
     Image black{16, 16, std::vector<std::uint8_t>(16 * 16 * 3, 0)};
     writePng(black, f / "golden" / "a.png", error);
 }
@@ -249,11 +340,12 @@ inline std::optional<std::filesystem::path> inScratch(const std::filesystem::pat
 // sizes at most 16 x 16, its output captured: the exit status is 0, 1 or 2, and what it printed
 // is terminal-safe (printable() of it is itself). Commands that name a path outside are not run.
 inline std::string runParsedCommand(CommandLine line) {
-    std::vector<std::filesystem::path*> paths{&line.out, &line.check.golden, &line.check.report};
+    std::vector<std::filesystem::path*> paths{&line.out,      &line.check.golden, &line.check.report,
+                                              &line.exercise, &line.attempt,      &line.shared};
     for (std::filesystem::path& p : line.presets) {
         paths.push_back(&p);
     }
-    for (std::optional<std::filesystem::path>* p : {&line.check.junit, &line.check.html}) {
+    for (std::optional<std::filesystem::path>* p : {&line.check.junit, &line.check.html, &line.diffOut, &line.qrOut}) {
         if (*p) {
             paths.push_back(&**p);
         }
@@ -321,8 +413,13 @@ inline std::string checkCommandLine(std::string_view text) {
         return *status == kExitOk || *status == kExitBadInput ? "" : "an exit status other than 0 or 2";
     }
     const CommandLine& line = std::get<CommandLine>(parsed);
-    if (line.command != CommandLine::Command::Lab && line.presets.empty()) {
+    using C = CommandLine::Command;
+    if ((line.command == C::Render || line.command == C::Plot || line.command == C::Check) && line.presets.empty()) {
         return "a command without its preset";
+    }
+    if ((line.command == C::ExerciseCheck && (line.exercise.empty() || line.attempt.empty())) ||
+        (line.command == C::Share && (line.shared.empty() || line.base.empty()))) {
+        return "a command without its files";
     }
     for (const Size& s : {line.size, line.check.size}) {
         if (s.width < 1 || s.height < 1 || s.width > kMaxRenderSide || s.height > kMaxRenderSide) {
