@@ -207,8 +207,11 @@ function(lab_configure_web_target target)
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS "${font}")
   file(GLOB_RECURSE bundled CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/presets/*")
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${bundled})
-  # The page is copied after each link: a changed page relinks, so the site never keeps an old one.
-  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS "${CMAKE_SOURCE_DIR}/web/index.html")
+  # The page is written after each link, without its comments (tools/minify_page.py): a changed
+  # page relinks, so the site never keeps an old one.
+  find_package(Python3 REQUIRED COMPONENTS Interpreter)
+  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS "${CMAKE_SOURCE_DIR}/web/index.html"
+                                                             "${CMAKE_SOURCE_DIR}/tools/minify_page.py")
   add_custom_command(TARGET ${target} POST_BUILD
-    COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${CMAKE_SOURCE_DIR}/web/index.html" "${site}/index.html")
+    COMMAND Python3::Interpreter "${CMAKE_SOURCE_DIR}/tools/minify_page.py" "${CMAKE_SOURCE_DIR}/web/index.html" "${site}/index.html")
 endfunction()

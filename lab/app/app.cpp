@@ -138,6 +138,7 @@ struct App::Impl {
     void compileShaders(bool builtin);
     void probeAt(const ui::ViewportEvents& viewport);
     void collectMessages(float deltaTime);
+    FrameOutput output(bool touch);
     void drawViewports(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy);
     bool updateViewports(const ui::Layout& layout, const FrameInput& in, float scale);
     std::vector<std::pair<const CachedViewport*, Viewport>> shown; // this frame's renders and where they go
@@ -560,21 +561,28 @@ FrameOutput App::frame(const FrameInput& in) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }
 
-    FrameOutput out;
-    out.quit = ws.quit();
-    out.link = ws.link();
-    out.problem = m.problem ? printable(toString(*m.problem)) : std::string();
-    out.downloads = ws.takeDownloads();
-    out.uiScale = m.presenter ? m.presenterScale : in.touch ? kTouchScale : 1.0f;
-    out.touch = in.touch;
+    FrameOutput out = m.output(in.touch);
     out.typing = events.typing;
-    out.title = "Lighting Lab - " + printable(ws.document().displayName(), true) + (ws.document().dirty() ? " *" : "");
-    out.toggleFullscreen = std::exchange(m.toggleFullscreen, false);
-    out.pickFile = std::exchange(m.pickFile, false);
-    out.copyLink = std::exchange(m.copyLink, false);
-    out.viewportDrawn = m.viewportDrawn;
     out.viewportScale = scale;
     out.redrawIn = redrawIn;
+    return out;
+}
+
+// What the frame hands the platform: the window's title, the scene's link, files, requests.
+FrameOutput App::Impl::output(bool touch) {
+    FrameOutput out;
+    out.quit = workspace.quit();
+    out.link = workspace.link();
+    out.problem = problem ? printable(toString(*problem)) : std::string();
+    out.downloads = workspace.takeDownloads();
+    out.uiScale = presenter ? presenterScale : touch ? kTouchScale : 1.0f;
+    out.touch = touch;
+    out.title = "Lighting Lab - " + printable(workspace.document().displayName(), true) +
+                (workspace.document().dirty() ? " *" : "");
+    out.toggleFullscreen = std::exchange(toggleFullscreen, false);
+    out.pickFile = std::exchange(pickFile, false);
+    out.copyLink = std::exchange(copyLink, false);
+    out.viewportDrawn = viewportDrawn;
     return out;
 }
 
