@@ -34,17 +34,17 @@ bool problemDialog(const Problem& problem) {
         return false;
     }
     // Messages quote what files contain: shown through printable() (core/io/safe_text.h), whole.
+    // Wrapped at the dialog's widest (80% of the screen): a long title or reason is never cut off,
+    // even on a 1024-wide projector or a phone.
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetIO().DisplaySize.x * 0.8f - 2.0f * ImGui::GetStyle().WindowPadding.x);
     ImGui::TextUnformatted(printable(problem.title).c_str());
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 150, 140, 255));
-    // Wrapped at the dialog's widest (80% of the screen): a long reason is never cut off, even on
-    // a 1024-wide projector or a phone.
-    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetIO().DisplaySize.x * 0.8f - 2.0f * ImGui::GetStyle().WindowPadding.x);
     for (const Diagnostic& d : problem.diagnostics) {
         ImGui::TextUnformatted(printable(d.str()).c_str());
     }
-    ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
+    ImGui::PopTextWrapPos();
     widgets().set("error", {ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowSize().x, ImGui::GetWindowSize().y});
     bool close = ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
                  ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
