@@ -77,6 +77,24 @@ TEST(Link, AnExerciseRoundTripsThroughTheFragment) {
     EXPECT_EQ(std::get<LinkedExerciseName>(*named).name, "03-shininess");
 }
 
+// Found by fuzz_exercise: the start of an exercise's link is what differs from the defaults, so a
+// plane with the default sphere's 64 x 32 subdivisions left them out, and the link came back with
+// a plane's own default of 16 x 16 (a z= scene was merged over the defaults; an x= start was not).
+TEST(Link, AnExercisesStartKeepsWhatItSharesWithTheDefaults) {
+    Exercise e;
+    e.title = "Shape the spot light";
+    e.start.model.builtin = Builtin::Plane;
+    e.start.model.subdivisions = Preset{}.model.subdivisions; // 64 x 32, as the default sphere's
+    e.target = e.start;
+    e.target.material.shininess = 60.0f;
+    e.open = {"material.shininess"};
+    Diagnostics d;
+    auto parsed = parseLink(exerciseLink(e, std::nullopt), ".", d);
+    ASSERT_TRUE(parsed) << toString(d);
+    EXPECT_EQ(std::get<Exercise>(*parsed).start.model, e.start.model);
+    EXPECT_EQ(std::get<Exercise>(*parsed), e);
+}
+
 TEST(Link, AShareUrlReplacesTheBasesOwnFragment) {
     EXPECT_EQ(shareUrl("https://c.example.org/lab/", "preset=05"), "https://c.example.org/lab/#preset=05");
     EXPECT_EQ(shareUrl("https://c.example.org/lab/index.html#old", "z=abc"), "https://c.example.org/lab/index.html#z=abc");

@@ -213,8 +213,16 @@ std::optional<Linked> parseLink(std::string_view fragment, const std::filesystem
         if (!json) {
             return std::nullopt;
         }
-        std::optional<Exercise> exercise = parseExercise(*json, file, folder, diagnostics);
-        return exercise ? std::optional<Linked>(*exercise) : std::nullopt;
+        // The start is what differs from the defaults (exerciseLink): merged back over them, as a z=
+        // scene is, before it is read. (Read as it was, a plane of 64 x 32 subdivisions, the
+        // default sphere's, came back with a plane's own default of 16 x 16.)
+        PresetJson exercise = PresetJson::parse(*json, nullptr, false);
+        if (exercise.is_object() && exercise.contains("start") && exercise["start"].is_object()) {
+            exercise["start"] = mergePreset(presetValue(Preset{}), exercise["start"]);
+            json = exercise.dump();
+        }
+        std::optional<Exercise> e = parseExercise(*json, file, folder, diagnostics);
+        return e ? std::optional<Linked>(*e) : std::nullopt;
     }
     if (fragment.starts_with("p=")) {
         std::optional<std::string> json = base64UrlDecode(fragment.substr(2));
