@@ -102,6 +102,22 @@ TEST(Exercise, AnExerciseWithEveryFieldRoundTripsThroughItsJson) {
     EXPECT_EQ(exerciseToJson(*back), text);                // and written the same again
 }
 
+// Found by fuzz_exercise: saving laid arrays of numbers on one line by a scan that did not skip
+// strings, so "[a, b]" in the instructions lost its spaces.
+TEST(Exercise, BracketsInTheTextsAreSavedAsTheyAre) {
+    Exercise e = fullExercise();
+    e.instructions = "Set the colour to [0.5, 0.5, 0.5] or to [ 1 , 0 ,0 ], then try [roughness -- ] and \"[a, b]\".";
+    e.title = "[x, y]";
+    e.hints = {"[1, 2, 3]", "a ] then a ["};
+    Diagnostics d;
+    std::optional<Exercise> back = parseExercise(exerciseToJson(e), "ex.json", std::nullopt, d);
+    ASSERT_TRUE(back) << toString(d);
+    EXPECT_EQ(back->instructions, e.instructions);
+    EXPECT_EQ(back->title, e.title);
+    EXPECT_EQ(back->hints, e.hints);
+    EXPECT_NE(exerciseToJson(e).find("\"diffuse\": [0.7, 0.2, 0.1]"), std::string::npos) << "colours still on one line";
+}
+
 TEST(Exercise, TheWrittenTargetIsOnlyWhatDiffersFromStart) {
     const Exercise e = fullExercise();
     PresetJson j = PresetJson::parse(exerciseToJson(e));

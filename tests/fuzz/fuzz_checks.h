@@ -117,18 +117,12 @@ inline std::string checkExercise(std::string_view text) {
 
 // A link fragment (the page's address or saved state): refused with a message, or what it opens
 // links back to itself — a preset to the same preset, an exercise as checkExerciseLinks says, a name
-// to the same name. Nothing it holds reaches a message raw.
+// that is no path. (A message may quote the link's bytes: printable() escapes them on the way out.)
 inline std::string checkLink(std::string_view fragment) {
     Diagnostics d;
     std::optional<Linked> linked = parseLink(fragment, ".", d);
     if (!linked) {
-        std::string problem = refusedWithoutMessage(d);
-        for (const Diagnostic& x : d) {
-            if (problem.empty() && printable(x.str()) != x.str()) {
-                problem = "a message that is not terminal-safe: " + printable(x.str());
-            }
-        }
-        return problem;
+        return refusedWithoutMessage(d);
     }
     if (const Preset* p = std::get_if<Preset>(&*linked)) {
         const std::string again = presetLink(*p, std::nullopt);

@@ -77,9 +77,21 @@ std::string exerciseToJson(const Exercise& e) {
         j["hints"] = e.hints;
     }
     // Indented, with each array of plain values (a colour, a position) on one line as in a preset file.
+    // Strings are copied as they are: a '[' in the instructions is text (fuzz_exercise found "dis[tri,
+    // bution ... ]" saved with its spaces taken out).
     const std::string text = j.dump(2);
     std::string out;
+    bool inString = false;
     for (std::size_t k = 0; k < text.size(); ++k) {
+        if (inString || text[k] == '"') {
+            out += text[k];
+            if (inString && text[k] == '\\' && k + 1 < text.size()) {
+                out += text[++k];
+            } else if (text[k] == '"') {
+                inString = !inString;
+            }
+            continue;
+        }
         std::size_t close = text[k] == '[' ? text.find_first_of("[]{\"", k + 1) : std::string::npos;
         if (close == std::string::npos || text[close] != ']') {
             out += text[k];
