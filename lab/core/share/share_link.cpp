@@ -112,16 +112,17 @@ std::string exerciseLink(const Exercise& exercise, const std::optional<std::stri
     if (bundledName) {
         return "exercise=" + *bundledName;
     }
-    // The scenes' names and descriptions are free fields the exercise's title and instructions
-    // stand for (the lab shows those): left out, they leave room for the text that matters.
-    Exercise shared = exercise;
-    for (Preset* p : {&shared.start, &shared.target}) {
+    PresetJson j = PresetJson::parse(exerciseToJson(linkedExercise(exercise)));
+    j["start"] = presetPatch(presetValue(Preset{}), j["start"]);
+    return "x=" + base64UrlEncode(deflateBytes(j.dump()));
+}
+
+Exercise linkedExercise(Exercise exercise) {
+    for (Preset* p : {&exercise.start, &exercise.target}) {
         p->name = Preset{}.name;
         p->description.clear();
     }
-    PresetJson j = PresetJson::parse(exerciseToJson(shared));
-    j["start"] = presetPatch(presetValue(Preset{}), j["start"]);
-    return "x=" + base64UrlEncode(deflateBytes(j.dump()));
+    return exercise;
 }
 
 std::string shareUrl(std::string_view base, std::string_view fragment) {

@@ -39,8 +39,13 @@ std::string linkTooLong(std::size_t length);
 
 // The fragment for a preset: "preset=<bundledName>" when given, else "z=...".
 std::string presetLink(const Preset& preset, const std::optional<std::string>& bundledName);
-// The fragment for an exercise: "exercise=<bundledName>" when given, else "x=...".
+// The fragment for an exercise: "exercise=<bundledName>" when given, else "x=...", which carries
+// linkedExercise(exercise).
 std::string exerciseLink(const Exercise& exercise, const std::optional<std::string>& bundledName);
+
+// What an "x=" link carries of an exercise: all of it but its scenes' names and descriptions, which
+// its title and instructions stand for (the lab shows those), leaving room for the text that matters.
+Exercise linkedExercise(Exercise exercise);
 
 // The address a link opens: `base` (its own fragment dropped) + "#" + fragment.
 std::string shareUrl(std::string_view base, std::string_view fragment);
