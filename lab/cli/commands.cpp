@@ -19,6 +19,7 @@
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 
 namespace lab {
 
@@ -181,18 +182,25 @@ int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size si
               out.string().c_str());
         return kExitBadInput;
     }
-    // Every PNG's path, checked against the presets and their models (and the others) before any
-    // is written: two presets with one file name would write one PNG.
+    // Every PNG's path, checked against the presets and their models before any is written; two
+    // presets with one file name would write one PNG (a preset named twice is rendered twice).
     RunFiles files;
+    std::map<std::string, fs::path> names;
     for (std::size_t i = 0; i < presets.size(); ++i) {
+        const fs::path& p = presets[i];
         if (loaded[i]) {
             addPresetInputs(files, *loaded[i]);
         } else {
-            files.input(presets[i], "the preset " + presets[i].string());
+            files.input(p, "the preset " + p.string());
         }
-    }
-    for (const fs::path& p : presets) {
-        files.output(toFolder ? out / (p.stem().string() + ".png") : out, "--out", toFolder);
+        auto [it, fresh] = names.emplace(p.stem().string(), p);
+        if (fresh) {
+            files.output(toFolder ? out / (p.stem().string() + ".png") : out, "--out", toFolder);
+        } else if (!sameFile(it->second, p)) {
+            print(stderr, "lab render: %s and %s would both write %s.png\n", it->second.string().c_str(), p.string().c_str(),
+                  p.stem().string().c_str());
+            return kExitBadInput;
+        }
     }
     if (!filesUsable(files, "lab render")) {
         return kExitBadInput;

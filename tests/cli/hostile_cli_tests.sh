@@ -113,6 +113,15 @@ for target in folder none/x.png fifo; do
 done
 check unwritable-outputs-wrote-nothing test "$(find "$tmp/out" -mindepth 1 | sort | tr '\n' ' ')" = "$tmp/out/fifo $tmp/out/folder "
 
+# Two presets of one file name into one folder: named, nothing written; one preset twice is fine.
+mkdir -p "$tmp/two/a" "$tmp/two/b"
+cp "$phong" "$tmp/two/a/x.json"
+cp "$phong" "$tmp/two/b/x.json"
+expect render-two-presets-one-name 2 '^lab render: .*a/x\.json and .*b/x\.json would both write x\.png$' -- \
+    "$lab" render "$tmp/two/a/x.json" "$tmp/two/b/x.json" --out "$tmp/two/out" --size 8x8
+check render-two-presets-one-name-nothing-written test ! -e "$tmp/two/out"
+expect render-one-preset-twice 0 'out/x\.png' -- "$lab" render "$tmp/two/a/x.json" "$tmp/two/a/../a/x.json" --out "$tmp/two/out" --size 8x8
+
 # A write that fails later (here: a file-size limit of 0, as a full disk would) exits 2 too, saying
 # what was not written; the verdict and the link are still printed.
 full() { (trap '' XFSZ; ulimit -f 0; exec "$@"); }
