@@ -17,14 +17,9 @@
 #include "core/plots/sweep_grid.h"
 #include "core/scene/preset.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
-#include <map>
 
 namespace lab {
 
@@ -222,7 +217,7 @@ class Checker {
         c.figures = "size " + std::to_string(actual.width) + "x" + std::to_string(actual.height) + " vs golden " +
                     std::to_string(golden.size->width) + "x" + std::to_string(golden.size->height);
         std::string error;
-        if (std::optional<std::string> bytes = readFile(golden.file, std::size_t{256} << 20, error)) {
+        if (std::optional<std::string> bytes = readFile(golden.file, kMaxPngBytes, error)) {
             c.golden = reportFile(files + ".golden.png", *bytes, c);
         }
         c.actual = reportImage(files + ".actual.png", actual, c);

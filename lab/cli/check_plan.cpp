@@ -107,7 +107,7 @@ bool goldensDistinct(const std::vector<PresetPlan>& plans) {
 }
 
 // A folder the run writes in (made later, when missing): it must not be a file, and must be
-// writable where it exists. `name` is its flag.
+// writable where it exists. `flag` names it.
 bool folderUsable(const char* flag, const fs::path& folder) {
     std::error_code ec;
     if (fs::exists(folder, ec) && !fs::is_directory(folder, ec)) {
@@ -196,11 +196,7 @@ bool makeCheckFolders(const CheckOptions& options) {
               ec ? ec.message().c_str() : "it is a file");
         return false;
     }
-    if (::access(folder.c_str(), W_OK) != 0) {
-        print(stderr, "lab check: %s %s: cannot write in it: %s\n", flag, folder.string().c_str(), std::strerror(errno));
-        return false;
-    }
-    return true;
+    return folderUsable(flag, folder);
 }
 
 } // namespace lab

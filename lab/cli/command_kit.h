@@ -36,6 +36,9 @@ std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<std::filesyst
 // A preset's file and the glTF model it names, as inputs of a run (cli/run_files.h); `what` names
 // the file ("the preset", "the attempt").
 void addPresetInputs(RunFiles& files, const LoadedPreset& preset, const std::string& what = "the preset");
+// The glTF model `scene` names (none for a built-in), relative to `folder`, read for `owner`.
+void addModelInput(RunFiles& files, const Preset& scene, const std::filesystem::path& folder,
+                   const std::filesystem::path& owner);
 
 // False, with "COMMAND: <the problem> (nothing was written)" on stderr, when the run's files may not
 // be written as asked (RunFiles::problem()); true when they may.

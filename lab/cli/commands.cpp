@@ -56,9 +56,13 @@ std::vector<std::optional<LoadedPreset>> loadAll(const std::vector<fs::path>& fi
 
 void addPresetInputs(RunFiles& files, const LoadedPreset& preset, const std::string& what) {
     files.input(preset.file, what + " " + preset.file.string());
-    if (!preset.preset.model.gltf.empty()) {
-        fs::path model = preset.folder() / preset.preset.model.gltf;
-        files.input(model, "the model " + model.string() + " of " + preset.file.string());
+    addModelInput(files, preset.preset, preset.folder(), preset.file);
+}
+
+void addModelInput(RunFiles& files, const Preset& scene, const fs::path& folder, const fs::path& owner) {
+    if (!scene.model.gltf.empty()) {
+        fs::path model = folder / scene.model.gltf;
+        files.input(model, "the model " + model.string() + " of " + owner.string());
     }
 }
 

@@ -15,7 +15,24 @@ namespace lab {
 namespace fs = std::filesystem;
 
 namespace {
-void addExerciseInputs(RunFiles& files, const LoadedExercise& exercise);
+
+// An exercise's file and the glTF models its start and target name (cli/run_files.h).
+void addExerciseInputs(RunFiles& files, const LoadedExercise& exercise) {
+    files.input(exercise.file, "the exercise " + exercise.file.string());
+    for (const Preset* p : {&exercise.exercise.start, &exercise.exercise.target}) {
+        addModelInput(files, *p, exercise.folder(), exercise.file);
+    }
+}
+
+// The file's name when it is one of the shipped presets (or exercises) itself: the link names it.
+std::optional<std::string> shippedName(const fs::path& file, const fs::path& folder) {
+    std::error_code ec;
+    if (folder.empty() || !fs::is_directory(folder, ec) || !fs::equivalent(fs::absolute(file).parent_path(), folder, ec)) {
+        return std::nullopt;
+    }
+    return file.stem().string();
+}
+
 } // namespace
 
 int runExerciseCheck(const fs::path& exerciseFile, const fs::path& attemptFile, const std::optional<fs::path>& diffOut) {
@@ -77,29 +94,6 @@ int runExerciseCheck(const fs::path& exerciseFile, const fs::path& attemptFile, 
     return score.solved ? kExitOk : kExitFailure;
 }
 
-namespace {
-
-// An exercise's file and the glTF models its start and target name (cli/run_files.h).
-void addExerciseInputs(RunFiles& files, const LoadedExercise& exercise) {
-    files.input(exercise.file, "the exercise " + exercise.file.string());
-    for (const Preset* p : {&exercise.exercise.start, &exercise.exercise.target}) {
-        if (!p->model.gltf.empty()) {
-            fs::path model = exercise.folder() / p->model.gltf;
-            files.input(model, "the model " + model.string() + " of " + exercise.file.string());
-        }
-    }
-}
-
-// The file's name when it is one of the shipped presets (or exercises) itself: the link names it.
-std::optional<std::string> shippedName(const fs::path& file, const fs::path& folder) {
-    std::error_code ec;
-    if (folder.empty() || !fs::is_directory(folder, ec) || !fs::equivalent(fs::absolute(file).parent_path(), folder, ec)) {
-        return std::nullopt;
-    }
-    return file.stem().string();
-}
-
-} // namespace
 
 namespace {
 

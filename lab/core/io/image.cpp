@@ -35,8 +35,6 @@ bool writePng(const Image& image, const std::filesystem::path& file, std::string
 
 namespace {
 
-constexpr std::size_t kMaxPngBytes = std::size_t{256} << 20;
-
 // The header's size, from bytes in memory (stb reads the IHDR chunk only).
 std::optional<ImageSize> pngSize(std::string_view bytes, std::string& error) {
     int w = 0, h = 0, channels = 0;

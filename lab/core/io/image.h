@@ -18,6 +18,7 @@ struct Image {
 };
 
 inline constexpr int kMaxImageSide = 16384;
+inline constexpr std::size_t kMaxPngBytes = std::size_t{256} << 20; // the largest PNG file read
 
 // PNG bytes in memory; empty on failure.
 std::string encodePng(const Image& image);
