@@ -34,17 +34,10 @@ Preset factorPreset(BrdfModel brdf, Distribution d, FresnelMode f, bool geometry
     p.material.shininess = 24.0f;
     p.material.specular = {0.7f, 0.5f, 0.3f};
     p.camera.eye = {0.0f, 0.0f, 5.0f};
-    LightDesc spot;
-    spot.type = LightType::Spot;
-    spot.position = {0.5f, 2.5f, 3.0f};
-    spot.direction = glm::normalize(glm::vec3(-0.1f, -0.6f, -1.0f));
-    spot.cutoffDeg = 35.0f;
-    spot.exponent = 3.0f;
+    LightDesc spot = test::spotLight({0.5f, 2.5f, 3.0f}, glm::normalize(glm::vec3(-0.1f, -0.6f, -1.0f)), 3.0f);
     spot.attenuation = {0.6f, 0.15f, 0.04f};
     spot.specular = {0.9f, 0.8f, 1.0f};
-    LightDesc point;
-    point.position = {-3.0f, 1.0f, 2.0f};
-    point.attenuation = {1.0f, 0.1f, 0.0f};
+    LightDesc point = test::pointLight({-3.0f, 1.0f, 2.0f}, {1.0f, 0.1f, 0.0f}, glm::vec3(0.0f)); // no ambient
     p.lights = oneLight ? std::vector<LightDesc>{spot} : std::vector<LightDesc>{spot, point};
     return p;
 }

@@ -96,23 +96,22 @@ const Corner kCorners[] = {
      }},
 };
 
-struct Variant {
-    const char* name;
-    BrdfModel brdf;
-    Distribution distribution;
-    FresnelMode fresnel;
-    bool geometry;
-};
+using test::Variant;
 
-const Variant kVariants[] = {
-    {"phong", BrdfModel::Phong, Distribution::Beckmann, FresnelMode::Schlick, true},
-    {"blinnphong", BrdfModel::BlinnPhong, Distribution::Beckmann, FresnelMode::Schlick, true},
-    {"ct_beckmann_schlick", BrdfModel::CookTorrance, Distribution::Beckmann, FresnelMode::Schlick, true},
-    {"ct_beckmann_full", BrdfModel::CookTorrance, Distribution::Beckmann, FresnelMode::Full, true},
-    {"ct_gaussian_full", BrdfModel::CookTorrance, Distribution::Gaussian, FresnelMode::Full, true},
-    {"ct_ggx_schlick", BrdfModel::CookTorrance, Distribution::Ggx, FresnelMode::Schlick, false},
-    {"ct_ggx_full", BrdfModel::CookTorrance, Distribution::Ggx, FresnelMode::Full, true},
-};
+// Every BRDF once: the CPU's corners take the preset's shading, GpuCorners draws each with two.
+// GGX with Schlick and no geometry term keeps the name "ct_ggx_schlick" in this test's names.
+constexpr Variant named(Variant v, const char* name) {
+    v.name = name;
+    return v;
+}
+
+const Variant kVariants[] = {test::kPhong,
+                             test::kBlinnPhong,
+                             test::kCtBeckmannSchlick,
+                             test::kCtBeckmannFull,
+                             test::kCtGaussianFull,
+                             named(test::kCtGgxSchlickNoGeometry, "ct_ggx_schlick"),
+                             test::kCtGgxFull};
 
 // A scene with one light of each type, every term on.
 Preset basePreset(const Variant& v) {
@@ -122,20 +121,7 @@ Preset basePreset(const Variant& v) {
     p.cookTorrance.fresnel = v.fresnel;
     p.cookTorrance.geometry = v.geometry;
     p.material.emissive = glm::vec3(0.05f);
-    LightDesc point;
-    point.position = {2.0f, 3.0f, 2.0f};
-    point.attenuation = {1.0f, 0.1f, 0.02f};
-    point.ambient = glm::vec3(0.05f);
-    LightDesc spot;
-    spot.type = LightType::Spot;
-    spot.position = {-1.0f, 3.0f, 3.0f};
-    spot.direction = {0.3f, -0.6f, -0.5f};
-    spot.cutoffDeg = 35.0f;
-    spot.exponent = 4.0f;
-    LightDesc sun;
-    sun.type = LightType::Directional;
-    sun.direction = {-0.5f, -1.0f, -0.3f};
-    p.lights = {point, spot, sun};
+    p.lights = {test::pointLight(), test::spotLight(), test::sunLight()};
     return p;
 }
 

@@ -35,27 +35,16 @@ Preset probePreset(const Variant& v) {
     p.camera.eye = {1.0f, 2.0f, 5.0f};
     p.material = {{0.05f, 0.02f, 0.0f}, {0.3f, 0.3f, 0.4f}, {0.5f, 0.4f, 0.3f}, {0.6f, 0.6f, 0.5f}, 24.0f};
     p.ambientLight = {0.1f, 0.1f, 0.1f};
-    LightDesc point;
-    point.position = {2.0f, 3.0f, 2.0f};
-    point.attenuation = {1.0f, 0.1f, 0.02f};
-    point.ambient = {0.05f, 0.05f, 0.05f};
-    LightDesc spot;
-    spot.type = LightType::Spot;
-    spot.position = {-1.0f, 3.0f, 3.0f};
-    spot.direction = {0.3f, -0.6f, -0.5f};
-    spot.cutoffDeg = 35.0f;
-    spot.exponent = 4.0f;
+    LightDesc spot = test::spotLight();
     spot.diffuse = {0.6f, 0.6f, 0.9f};
     spot.specular = {0.5f, 0.5f, 0.5f};
-    LightDesc sun;
-    sun.type = LightType::Directional;
-    sun.direction = {-0.5f, -1.0f, -0.3f};
+    LightDesc sun = test::sunLight();
     sun.diffuse = {0.3f, 0.25f, 0.2f};
     sun.specular = {0.4f, 0.4f, 0.4f};
     LightDesc off; // disabled lights must not count on either side
     off.enabled = false;
     off.diffuse = glm::vec3(10.0f);
-    p.lights = {point, off, spot, sun};
+    p.lights = {test::pointLight(), off, spot, sun};
     return p;
 }
 

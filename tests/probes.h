@@ -1,5 +1,5 @@
 // probes.h — single-pixel probes that compare the shaders with the C++ face of the lighting model
-// (gpu_parity_test.cpp, finite_test.cpp).
+// (gpu_parity_test.cpp, finite_test.cpp, factor_view_test.cpp), and the BRDFs and lights they draw.
 //
 // One probe per pixel centre of a size × size view: an eye-space point on that pixel's ray at a
 // depth the caller draws, with a random normal, mostly towards the viewer, some grazing or turned
@@ -11,6 +11,7 @@
 #include "core/io/image.h"
 #include "core/lighting/lighting.h"
 #include "core/scene/mesh.h"
+#include "core/scene/preset.h"
 #include "render/offscreen.h"
 #include "render/renderer.h"
 
@@ -24,28 +25,41 @@
 
 namespace lab::test {
 
-// One BRDF and shading mode the probe tests run: Phong, Blinn-Phong and three Cook-Torrance
-// variants (each distribution and Fresnel, the geometry term on and off).
+// One BRDF and shading mode the probe tests run.
 struct Variant {
     const char* name;
     BrdfModel brdf;
     Distribution distribution;
     FresnelMode fresnel;
     bool geometry;
-    Shading shading;
+    Shading shading = Shading::Phong; // the preset's default
 };
 
 inline void PrintTo(const Variant& v, std::ostream* os) { *os << v.name << "/" << toString(v.shading); }
 
-// The five BRDF variants under each of `shadings`.
+// The BRDFs: Phong, Blinn-Phong, and Cook-Torrance with each distribution and Fresnel, the geometry
+// term on and off.
+inline constexpr Variant kPhong{"phong", BrdfModel::Phong, Distribution::Beckmann, FresnelMode::Schlick, true};
+inline constexpr Variant kBlinnPhong{"blinnphong", BrdfModel::BlinnPhong, Distribution::Beckmann, FresnelMode::Schlick, true};
+inline constexpr Variant kCtBeckmannSchlick{"ct_beckmann_schlick", BrdfModel::CookTorrance, Distribution::Beckmann,
+                                            FresnelMode::Schlick, true};
+inline constexpr Variant kCtBeckmannFull{"ct_beckmann_full", BrdfModel::CookTorrance, Distribution::Beckmann, FresnelMode::Full,
+                                         true};
+inline constexpr Variant kCtGaussianFull{"ct_gaussian_full", BrdfModel::CookTorrance, Distribution::Gaussian, FresnelMode::Full,
+                                         true};
+inline constexpr Variant kCtGgxSchlickNoGeometry{"ct_ggx_schlick_nogeometry", BrdfModel::CookTorrance, Distribution::Ggx,
+                                                 FresnelMode::Schlick, false};
+inline constexpr Variant kCtGgxFull{"ct_ggx_full", BrdfModel::CookTorrance, Distribution::Ggx, FresnelMode::Full, true};
+
+// Five of them (Phong, Blinn-Phong and three Cook-Torrance: each distribution and Fresnel, the
+// geometry term on and off) under each of `shadings`.
 inline std::vector<Variant> brdfVariants(std::initializer_list<Shading> shadings) {
     std::vector<Variant> v;
     for (Shading s : shadings) {
-        v.push_back({"phong", BrdfModel::Phong, Distribution::Beckmann, FresnelMode::Schlick, true, s});
-        v.push_back({"blinnphong", BrdfModel::BlinnPhong, Distribution::Beckmann, FresnelMode::Schlick, true, s});
-        v.push_back({"ct_beckmann_schlick", BrdfModel::CookTorrance, Distribution::Beckmann, FresnelMode::Schlick, true, s});
-        v.push_back({"ct_gaussian_full", BrdfModel::CookTorrance, Distribution::Gaussian, FresnelMode::Full, true, s});
-        v.push_back({"ct_ggx_schlick_nogeometry", BrdfModel::CookTorrance, Distribution::Ggx, FresnelMode::Schlick, false, s});
+        for (Variant b : {kPhong, kBlinnPhong, kCtBeckmannSchlick, kCtGaussianFull, kCtGgxSchlickNoGeometry}) {
+            b.shading = s;
+            v.push_back(b);
+        }
     }
     return v;
 }
@@ -53,6 +67,36 @@ inline std::vector<Variant> brdfVariants(std::initializer_list<Shading> shadings
 // "phong_Gouraud": a test's name suffix.
 template <typename Info> std::string variantName(const Info& info) {
     return std::string(info.param.name) + "_" + std::string(toString(info.param.shading));
+}
+
+// The probe scenes' lights. With no arguments, the three of finite_test's and gpu_parity_test's
+// scene: a point light with attenuation and a little ambient, a spot light, a sun; white unless a
+// test colours them.
+inline LightDesc pointLight(glm::vec3 position = {2.0f, 3.0f, 2.0f}, glm::vec3 attenuation = {1.0f, 0.1f, 0.02f},
+                            glm::vec3 ambient = glm::vec3(0.05f)) {
+    LightDesc l;
+    l.position = position;
+    l.attenuation = attenuation;
+    l.ambient = ambient;
+    return l;
+}
+
+inline LightDesc spotLight(glm::vec3 position = {-1.0f, 3.0f, 3.0f}, glm::vec3 direction = {0.3f, -0.6f, -0.5f},
+                           float exponent = 4.0f, float cutoffDeg = 35.0f) {
+    LightDesc l;
+    l.type = LightType::Spot;
+    l.position = position;
+    l.direction = direction;
+    l.cutoffDeg = cutoffDeg;
+    l.exponent = exponent;
+    return l;
+}
+
+inline LightDesc sunLight(glm::vec3 direction = {-0.5f, -1.0f, -0.3f}) {
+    LightDesc l;
+    l.type = LightType::Directional;
+    l.direction = direction;
+    return l;
 }
 
 struct Probes {
