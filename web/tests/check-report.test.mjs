@@ -8,14 +8,12 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
-import { repo } from './page.mjs';
+import { repo, withBrowser } from './page.mjs';
 
 const lab = process.env.LAB_EXE || path.join(repo, 'build/lab');
-const chromiumArgs = ['--headless=new', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
-  '--disable-component-update', '--disable-sync', '--force-device-scale-factor=1', '--allow-file-access-from-files'];
-let browser, dir;
+const env = withBrowser({ serve: false, args: ['--allow-file-access-from-files'] }); // the report, from the file system
+let dir;
 
 // A check with one failing preset: its golden is another preset's render.
 before(async () => {
@@ -35,13 +33,9 @@ before(async () => {
   } catch (e) {
     assert.equal(e.status, 1, String(e.stderr));
   }
-  browser = await chromium.launch({ executablePath: process.env.LAB_CHROMIUM || '/usr/bin/chromium', args: chromiumArgs });
 });
 
-after(async () => {
-  await browser?.close();
-  fs.rmSync(dir, { recursive: true, force: true });
-});
+after(() => fs.rmSync(dir, { recursive: true, force: true }));
 
 function centre(png) {
   const i = ((png.height >> 1) * png.width + (png.width >> 1)) * 4;
@@ -60,7 +54,7 @@ function near(a, b, what) {
 
 test('the report opens from the file system, its images load, slider and flip show actual and golden', async () => {
   const report = path.join(dir, 'report');
-  const context = await browser.newContext({ viewport: { width: 1000, height: 700 } });
+  const context = await env.browser.newContext({ viewport: { width: 1000, height: 700 } });
   const page = await context.newPage();
   const problems = [];
   page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });

@@ -12,27 +12,18 @@
 // The reason is read from what ImGui draws: the vertices of each frame's UI, caught on their way to
 // WebGL (bufferData), hold one quad per visible glyph, coloured as the error window colours the
 // reasons (ui/dialogs.cpp), with the glyph's place in the font atlas as texture coordinates.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { PNG } from 'pngjs';
-import { repo, startBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare } from './page.mjs';
+import { repo, withBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare } from './page.mjs';
 
 const seeds = path.join(repo, 'tests/fuzz/seeds/gltf');
 
-let env, browser, base;
-
-before(async () => {
-  env = await startBrowser();
-  ({ browser, base } = env);
-});
-
-after(async () => {
-  await env?.close();
-});
+const env = withBrowser();
 
 // Before the page's own scripts: keeps a copy of the vertex data given to WebGL while
 // window.labCatchVertices is an array. Emscripten passes the heap, an offset and a length
@@ -59,7 +50,7 @@ function catchVertices() {
 
 // A fresh page with the lab running (page.mjs), catching what ImGui sends to WebGL.
 function openLab(fragment = '', { width = 1024, height = 640 } = {}) {
-  return newLabPage(browser, base + fragment, { width, height, initScript: catchVertices });
+  return newLabPage(env.browser, env.base + fragment, { width, height, initScript: catchVertices });
 }
 
 // A seed file opened through the page's file picker (the File section's "Open preset…"), as a

@@ -5,24 +5,16 @@
 // preset (build/lab, which tools/dev test builds first).
 //
 //   node --test --test-name-pattern="figures" web/tests/
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { repo, startBrowser, newLabPage, widgets } from './page.mjs';
+import { repo, withBrowser, newLabPage, widgets } from './page.mjs';
 
-let env;
-
-before(async () => {
-  env = await startBrowser();
-});
-
-after(async () => {
-  await env?.close();
-});
+const env = withBrowser();
 
 test('figures: Export figures downloads each plot as SVG, PNG and CSV', async () => {
   const { page, context, problems } = await newLabPage(env.browser, env.base + '#preset=05-full-phong', { width: 1280, height: 760 });

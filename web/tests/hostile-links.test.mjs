@@ -2,17 +2,15 @@
 // 36): the page stays alive, keeps drawing, says why in words (its live region mirrors the lab's
 // error dialog), throws nothing, and the scene is the one it had. A fragment far longer than any the
 // lab makes is refused by the page itself before the lab sees it.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
-import { repo, startBrowser, newLabPage, settle, frames, widgets, press } from './page.mjs';
+import { repo, withBrowser, newLabPage, settle, frames, widgets, press } from './page.mjs';
 
-let env;
-before(async () => { env = await startBrowser(); });
-after(async () => { await env?.close(); });
+const env = withBrowser();
 
 const packed = (text) => zlib.deflateSync(Buffer.from(text)).toString('base64url');
 const phong = fs.readFileSync(path.join(repo, 'presets/05-full-phong.json'), 'utf8');

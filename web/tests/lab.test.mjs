@@ -6,31 +6,22 @@
 //
 // Widgets are found through the rectangles the lab reports (lab_widgets), input is real
 // mouse and keyboard events, files go through real downloads and the page's file picker.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { PNG } from 'pngjs';
-import { repo, site, startBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare, sizeModelViewport } from './page.mjs';
+import { repo, site, withBrowser, newLabPage, settle, frames, widgets, press, viewShot, compare, sizeModelViewport } from './page.mjs';
 
 const goldens = path.join(repo, 'tests/golden-web');
 
-let env, browser, base;
-
-before(async () => {
-  env = await startBrowser();
-  ({ browser, base } = env);
-});
-
-after(async () => {
-  await env?.close();
-});
+const env = withBrowser();
 
 // A fresh page with the lab running (page.mjs), and what went wrong on it; the load time is kept.
 async function openLab(fragment = '', options = {}) {
-  const lab = await newLabPage(browser, base + fragment, options);
+  const lab = await newLabPage(env.browser, env.base + fragment, options);
   openLab.lastLoadMs = lab.loadMs;
   return lab;
 }
@@ -234,7 +225,7 @@ test('the scene survives a reload', async () => {
   await frames(page, 3);
   const link = await page.evaluate(() => location.hash);
   assert.match(link, /^#z=/);
-  await page.goto(base); // no fragment: the state comes back from localStorage
+  await page.goto(env.base); // no fragment: the state comes back from localStorage
   await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
   await frames(page, 3);
   assert.equal(await page.evaluate(() => location.hash), link);
@@ -409,7 +400,7 @@ test('touch: one finger orbits, two fingers pinch to zoom and pan, and a drag th
 
 test('Copy link puts the scene\'s address on the clipboard, and the link opens the same scene', async () => {
   const { page, context } = await openLab('#preset=05-full-phong');
-  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: base });
+  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: env.base });
   const button = (await widgets(page))['file.copy-link'];
   await page.mouse.click(...centre(button));
   await settle(page);

@@ -1,22 +1,14 @@
 // lobe3d.test.mjs — the plots window's 3D lobe view in the browser build: the tab opens, a lobe is
 // drawn (a bright, compact blob on the dark canvas, brightest near R's side, not a blank or a
 // filled rectangle), and a mouse drag orbits it. LAB_WEB_SHOTS=DIR saves what it saw.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { startBrowser, newLabPage, settle, frames, widgets, compare } from './page.mjs';
+import { withBrowser, newLabPage, settle, frames, widgets, compare } from './page.mjs';
 
-let env;
-
-before(async () => {
-  env = await startBrowser();
-});
-
-after(async () => {
-  await env?.close();
-});
+const env = withBrowser();
 
 // The page's pixels inside rectangle r.
 async function shot(page, r) {

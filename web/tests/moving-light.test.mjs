@@ -3,22 +3,14 @@
 // screenshot (F12) shows the preset's own light position, as the native golden does.
 //
 //   node --test --test-name-pattern="moving light" web/tests/
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { repo, startBrowser, newLabPage, frames, widgets, viewShot, compare, sizeModelViewport } from './page.mjs';
+import { repo, withBrowser, newLabPage, frames, widgets, viewShot, compare, sizeModelViewport } from './page.mjs';
 
-let env;
-
-before(async () => {
-  env = await startBrowser();
-});
-
-after(async () => {
-  await env?.close();
-});
+const env = withBrowser();
 
 test('moving light: the orbiting preset moves its highlight over time, and its screenshot is the preset position', async () => {
   const { page, context, problems } = await newLabPage(env.browser, env.base + '#preset=25-moving-light', { width: 1024, height: 640 });

@@ -15,22 +15,28 @@ const chromiumArgs = ['--headless=new', '--no-sandbox', '--use-angle=swiftshader
   '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
   '--disable-component-update', '--disable-sync', '--force-device-scale-factor=1'];
 
-// The built page served locally and Debian's Chromium; `close()` ends both.
-export async function startBrowser() {
-  assert.ok(fs.existsSync(path.join(site, 'index.html')), `no page in ${site}: build it first (tools/dev web)`);
-  const server = await serve(site);
-  const base = `http://127.0.0.1:${server.address().port}/`;
+// The built page served locally and Debian's Chromium; `close()` ends both. `serve: false`: the
+// browser alone, for a test that opens no page of the lab (no `server`, no `base`); `args`: more
+// of Chromium's switches.
+export async function startBrowser({ serve: servePage = true, args = [] } = {}) {
+  let server, base;
+  if (servePage) {
+    assert.ok(fs.existsSync(path.join(site, 'index.html')), `no page in ${site}: build it first (tools/dev web)`);
+    server = await serve(site);
+    base = `http://127.0.0.1:${server.address().port}/`;
+  }
   // A UTF-8 locale, as a student's browser has: in the C locale (a bare Debian root, CI) Chromium
   // cannot hand the page a file whose name is not ASCII ("scène (1).json" arrived as nothing).
   const env = { ...process.env, LANG: 'C.UTF-8', LC_ALL: 'C.UTF-8' };
-  const browser = await chromium.launch({ executablePath: process.env.LAB_CHROMIUM || '/usr/bin/chromium', args: chromiumArgs, env });
-  return { server, browser, base, close: async () => { await browser.close(); server.close(); } };
+  const browser = await chromium.launch({ executablePath: process.env.LAB_CHROMIUM || '/usr/bin/chromium',
+    args: [...chromiumArgs, ...args], env });
+  return { server, browser, base, close: async () => { await browser.close(); server?.close(); } };
 }
 
-// startBrowser() before a test file's tests and close() after them: `env.browser`, `env.base`.
-export function withBrowser() {
+// startBrowser(options) before a test file's tests and close() after them: `env.browser`, `env.base`.
+export function withBrowser(options) {
   const env = {};
-  before(async () => { Object.assign(env, await startBrowser()); });
+  before(async () => { Object.assign(env, await startBrowser(options)); });
   after(async () => { await env.close?.(); });
   return env;
 }

@@ -3,21 +3,13 @@
 // and on a phone every part of the window is on the screen.
 //
 //   node --test --test-name-pattern="sweep" web/tests/
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import { PNG } from 'pngjs';
-import { startBrowser, newLabPage, settle, widgets } from './page.mjs';
+import { withBrowser, newLabPage, settle, widgets } from './page.mjs';
 
-let env;
-
-before(async () => {
-  env = await startBrowser();
-});
-
-after(async () => {
-  await env?.close();
-});
+const env = withBrowser();
 
 async function openSweep(page) {
   await page.keyboard.down('Control');
