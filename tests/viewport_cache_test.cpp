@@ -102,7 +102,7 @@ TEST_F(ViewCacheTest, AMovingLightOnASlowMachineIsDrawnSmallerAndFullOnceItStops
     const ui::Rect p = *panel;
     const ui::Rect* box = nullptr;
     for (int i = 0; i < 80; ++i) {
-        box = ui::widgets().find("lights[0].orbit");
+        box = ui::widgets().find("lights[0].orbit.on");
         if (box && box->y >= p.y && box->y + box->h <= p.y + p.h) {
             break;
         }

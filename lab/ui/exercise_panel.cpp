@@ -14,29 +14,16 @@
 
 namespace lab::ui {
 
-namespace {
-
-// The exercise being solved or made during this controlPanel call (setFieldGate): which fields show.
-const ExerciseView* gExercise = nullptr;
-ExerciseDraftView* gDraft = nullptr;
-
-} // namespace
-
-void setFieldGate(const ExerciseView* exercise, ExerciseDraftView* draft) {
-    gExercise = exercise;
-    gDraft = draft;
-}
-
-// Whether the field at JSON path `path` (core/exercise/preset_fields.h) gets its widget: in an
+// Whether the field at JSON path `path` (core/scene/field_path.h) gets its widget: in an
 // exercise only the open ones (and the always free); while making one, every field, with a
 // checkbox before it that opens it to students.
-bool field(const std::string& path) {
-    if (gExercise) {
-        return alwaysFree(path) || std::any_of(gExercise->open.begin(), gExercise->open.end(),
+bool FieldGate::field(const std::string& path) const {
+    if (exercise) {
+        return alwaysFree(path) || std::any_of(exercise->open.begin(), exercise->open.end(),
                                                [&](const std::string& o) { return covers(o, path); });
     }
-    if (gDraft && gDraft->open) {
-        std::vector<std::string>& open = *gDraft->open;
+    if (draft && draft->open) {
+        std::vector<std::string>& open = *draft->open;
         auto at = std::find(open.begin(), open.end(), path);
         bool on = at != open.end();
         ImGui::PushID(path.c_str());
@@ -58,13 +45,13 @@ bool field(const std::string& path) {
 }
 
 // Whether a section holding the fields under these paths shows at all (in an exercise: some open).
-bool anyField(std::initializer_list<const char*> prefixes) {
-    if (!gExercise) {
+bool FieldGate::any(std::initializer_list<const char*> prefixes) const {
+    if (!exercise) {
         return true;
     }
     for (const char* p : prefixes) {
-        for (const std::string& o : gExercise->open) {
-            if (covers(o, p) || covers(p, o)) {
+        for (const std::string& o : exercise->open) {
+            if (overlaps(o, p)) {
                 return true;
             }
         }

@@ -15,14 +15,17 @@
 
 namespace lab::ui {
 
-// For the panel drawn next: the exercise being solved (only its open fields show), or the draft
-// being made (a checkbox before every field); both null: every field, no checkbox.
-void setFieldGate(const ExerciseView* exercise, ExerciseDraftView* draft);
-
-// Whether the field at JSON path `path` gets its widget (drawing the draft's checkbox first).
-bool field(const std::string& path);
-// Whether a section holding the fields under these paths shows at all.
-bool anyField(std::initializer_list<const char*> prefixes);
+// Which fields the panel draws: in an exercise being solved only its open fields (and the always
+// free); while one is being made, every field with a checkbox before it that opens it to students;
+// both null: every field, no checkbox.
+struct FieldGate {
+    const ExerciseView* exercise = nullptr;
+    ExerciseDraftView* draft = nullptr;
+    // Whether the field at JSON path `path` gets its widget (drawing the draft's checkbox first).
+    bool field(const std::string& path) const;
+    // Whether a section holding the fields under these paths shows at all.
+    bool any(std::initializer_list<const char*> prefixes) const;
+};
 
 void exerciseSection(const ExerciseView& exercise, std::vector<Request>& requests);
 // The shipped exercises, a button each ("exercises.<file stem>"): opens it like a file.

@@ -5,9 +5,12 @@
 #include "core/lighting/lighting.h"
 #include "core/scene/camera.h"
 #include "core/scene/limits.h"
+#include "core/scene/field_path.h"
+#include "core/scene/field_table.h"
 #include "core/scene/preset_choices.h"
 #include "ui/equation_panel.h"
 #include "ui/exercise_panel.h"
+#include "ui/field_widget.h"
 #include "ui/widgets.h"
 
 #include <glm/glm.hpp>
@@ -35,21 +38,6 @@ bool enumCombo(const char* label, E& value, const std::array<E, N>& values, cons
         value = values[current];
     }
     return changed;
-}
-
-template <typename E, std::size_t N>
-void enumRadios(const char* id, E& value, const std::array<E, N>& values, const char* const (&names)[N]) {
-    ImGui::PushID(id);
-    for (std::size_t i = 0; i < N; ++i) {
-        if (i > 0) {
-            sameLineIfFitsRadio(names[i]);
-        }
-        if (ImGui::RadioButton(names[i], value == values[i])) {
-            value = values[i];
-        }
-        mark(std::string(id) + "." + names[i]);
-    }
-    ImGui::PopID();
 }
 
 // Revert, Undo and Redo on one line, each enabled only when it would do something.
@@ -126,97 +114,62 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
     }
 }
 
-// A float slider over the range `r` allows (typed values too), clamped to what the validator accepts.
-bool limitedSlider(const char* label, float& value, const limits::Range& r, const char* format,
-                   ImGuiSliderFlags flags = ImGuiSliderFlags_None) {
-    bool changed = ImGui::SliderFloat(label, &value, r.sliderMin, r.sliderMax, format, flags);
-    value = limits::clamp(r, value);
-    return changed;
-}
-
-void materialSection(Preset& p) {
-    const std::pair<const char*, glm::vec3*> colors[] = {{"emissive", &p.material.emissive},
-                                                         {"ambient", &p.material.ambient},
-                                                         {"diffuse", &p.material.diffuse},
-                                                         {"specular", &p.material.specular}};
-    for (const auto& [name, color] : colors) {
-        const std::string path = std::string("material.") + name;
-        if (field(path)) {
-            colorEdit(name, *color);
-            mark(path);
+// The widgets of the rows of `object` ("material", "lights[]") that apply, in the table's order,
+// each behind the gate; `after(row, path)` adds what a field has beside its widget. Rows without
+// a widget of their own (kStyleHidden, custom) and those in `skip` are left to the caller.
+template <typename After>
+void fieldRowsOf(std::string_view object, Preset& p, LightDesc* light, int lightIndex, const FieldGate& gate,
+                 After after, std::initializer_list<std::string_view> skip = {}) {
+    for (const FieldRow& row : fieldRows()) {
+        if (!covers(object, row.path) || fieldObject(row).size() < object.size() || (row.style & kStyleHidden) ||
+            row.custom || !applies(row, p, light) ||
+            std::find(skip.begin(), skip.end(), fieldKey(row)) != skip.end()) {
+            continue;
+        }
+        const std::string path = fieldPath(row, lightIndex);
+        if (gate.field(path)) {
+            fieldWidget(row, p, light, path);
+            after(row, path);
         }
     }
-    if (p.brdf == BrdfModel::CookTorrance) {
-        return; // the exponent n has no effect there (the roughness m shapes the lobe), as m has none for Phong
-    }
-    if (field("material.shininess")) {
-        limitedSlider("shininess", p.material.shininess, limits::kShininess, "%.1f", ImGuiSliderFlags_Logarithmic);
-        mark("material.shininess");
-        helpMarker("The specular exponent n (logarithmic slider). Ctrl+click to type any value > 0.");
-    }
 }
 
-void brdfSection(Preset& p) {
-    if (field("brdf")) {
-        enumRadios("brdf", p.brdf, kBrdfModels, kBrdfLabels);
-    }
+void nothingAfter(const FieldRow&, const std::string&) {}
+
+void materialSection(Preset& p, const FieldGate& gate) {
+    // Shininess applies to Phong and Blinn-Phong only (the roughness m shapes Cook-Torrance's lobe).
+    fieldRowsOf("material", p, nullptr, 0, gate, nothingAfter);
+}
+
+void brdfSection(Preset& p, const FieldGate& gate) {
+    fieldRowsOf("brdf", p, nullptr, 0, gate, nothingAfter);
     if (p.brdf == BrdfModel::Phong) {
         ImGui::TextDisabled("S = max(0, R.V)^n");
     } else if (p.brdf == BrdfModel::BlinnPhong) {
         disabledWrapped("S = max(0, N.H)^n,  H = normalize(L + V)");
     } else {
         ImGui::TextDisabled("S = D F G / (4 N.V)");
-        static const char* const distributionNames[] = {"Beckmann", "Gaussian", "GGX"};
-        if (field("cook_torrance.distribution")) {
-            enumCombo("D: distribution", p.cookTorrance.distribution, kDistributions, distributionNames);
-            mark("cook_torrance.distribution");
-        }
-        if (field("cook_torrance.roughness")) {
-            limitedSlider("roughness m", p.cookTorrance.roughness, limits::kRoughness, "%.3f", ImGuiSliderFlags_Logarithmic);
-            mark("cook_torrance.roughness");
-        }
-        static const char* const fresnelNames[] = {"Schlick", "full (unpolarized)"};
-        if (field("cook_torrance.fresnel")) {
-            enumCombo("F: Fresnel", p.cookTorrance.fresnel, kFresnelModes, fresnelNames);
-            mark("cook_torrance.fresnel");
-        }
-        if (field("cook_torrance.ior")) {
-            limitedSlider("ior", p.cookTorrance.ior, limits::kIor, "%.3f");
-            mark("cook_torrance.ior");
+    }
+    fieldRowsOf("cook_torrance", p, nullptr, 0, gate, [&](const FieldRow& row, const std::string&) {
+        if (fieldKey(row) == "ior") {
             ImGui::SameLine();
             ImGui::TextDisabled("F0 = %.3f", glsl::fresnelF0(p.cookTorrance.ior));
         }
-        if (field("cook_torrance.geometry")) {
-            ImGui::Checkbox("G: geometry term", &p.cookTorrance.geometry);
-            mark("cook_torrance.geometry");
-        }
-    }
+    });
 }
 
-void shadingSection(Preset& p, ViewSettings& view) {
-    if (field("shading")) {
-        enumRadios("shading", p.shading, kShadings, kShadingLabels);
-    }
-    static const char* const modeNames[] = {"inverse-transpose (correct)", "model-view (wrong)"};
-    if (field("normal_matrix")) {
-        enumCombo("normal matrix", p.normalMatrix, kNormalMatrixModes, modeNames);
-        mark("normal_matrix");
-    }
-    if (anyField({"terms"})) {
+void shadingSection(Preset& p, ViewSettings& view, const FieldGate& gate) {
+    fieldRowsOf("shading", p, nullptr, 0, gate, nothingAfter);
+    fieldRowsOf("normal_matrix", p, nullptr, 0, gate, nothingAfter);
+    if (gate.any({"terms"})) {
         ImGui::TextUnformatted("terms");
-    }
-    const std::pair<const char*, bool*> terms[] = {{"emissive", &p.terms.emissive},
-                                                   {"ambient", &p.terms.ambient},
-                                                   {"diffuse", &p.terms.diffuse},
-                                                   {"specular", &p.terms.specular}};
-    for (const auto& [name, on] : terms) {
-        if (!anyField({"terms"})) {
-            break;
-        }
-        sameLineIfFitsRadio(name); // a checkbox is as wide as a radio button
-        if (field(std::string("terms.") + name)) {
-            ImGui::Checkbox((std::string(name) + "##t").c_str(), on);
-            mark(std::string("terms.") + name);
+        for (const FieldRow& row : fieldRows()) {
+            if (fieldObject(row) == "terms") {
+                sameLineIfFitsRadio(row.label.data()); // a checkbox is as wide as a radio button
+                if (gate.field(std::string(row.path))) {
+                    fieldWidget(row, p, nullptr, std::string(row.path));
+                }
+            }
         }
     }
     static const std::array<const char*, kViewModes.size()> viewNames = [] {
@@ -238,23 +191,16 @@ void shadingSection(Preset& p, ViewSettings& view) {
     sameLineIfFitsRadio("vertex normals (N)");
     ImGui::Checkbox("vertex normals (N)", &view.vertexNormals);
     mark("view.vertex_normals");
-    if (field("ambient_light")) {
-        lightColorEdit("global ambient", p.ambientLight);
-        mark("ambient_light");
-    }
-    if (field("background")) {
-        colorEdit("background", p.background);
-        mark("background");
-    }
+    fieldRowsOf("ambient_light", p, nullptr, 0, gate, nothingAfter);
+    fieldRowsOf("background", p, nullptr, 0, gate, nothingAfter);
 }
 
-void modelSection(Preset& p, const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
-    bool builtin = p.model.gltf.empty();
-    static const char* const builtinNames[] = {"sphere", "cube", "plane", "torus"};
-    if (builtin && field("model.builtin")) {
+// The model's source: a built-in shape and its subdivisions, or the glTF file and a way back.
+void modelSource(Preset& p, const PanelInfo& info, PanelState& state, std::vector<Request>& requests, const FieldGate& gate) {
+    const FieldRow& builtinRow = *fieldRow("model.builtin");
+    if (p.model.gltf.empty() && gate.field("model.builtin")) {
         Builtin before = p.model.builtin;
-        enumCombo("built-in", p.model.builtin, kBuiltins, builtinNames);
-        mark("model.builtin");
+        fieldWidget(builtinRow, p, nullptr, "model.builtin");
         if (p.model.builtin != before) {
             p.model.subdivisions = defaultSubdivisions(p.model.builtin);
         }
@@ -266,7 +212,7 @@ void modelSection(Preset& p, const PanelInfo& info, PanelState& state, std::vect
         ImGui::SliderInt2(label, &p.model.subdivisions.x, range.min, 256);
         mark("model.subdivisions");
         p.model.subdivisions = {limits::clamp(range, p.model.subdivisions.x), limits::clamp(range, p.model.subdivisions.y)};
-    } else if (!builtin) {
+    } else if (!p.model.gltf.empty()) {
         ImGui::Text("glTF: %s", p.model.gltf.c_str());
         if (ImGui::Button("Use a built-in shape")) {
             p.model.gltf.clear();
@@ -277,25 +223,11 @@ void modelSection(Preset& p, const PanelInfo& info, PanelState& state, std::vect
         pathField("##model", "model.glb (or drop one on the window)", state.modelPath, Command::LoadModel, requests);
         mark("model.path");
     }
-    glm::vec3 scale = p.model.scale;
-    if (field("model.scale") && dragVec3("scale", scale, 0.01f, -10.0f, 10.0f)) {
-        // A zero factor would make the normal matrix singular: step over it.
-        for (int i = 0; i < 3; ++i) {
-            if (std::abs(scale[i]) < 0.01f) {
-                scale[i] = p.model.scale[i] >= 0.0f ? 0.01f : -0.01f;
-            }
-        }
-        p.model.scale = scale;
-    }
-    mark("model.scale");
-    if (field("model.rotate_deg")) {
-        dragVec3("rotate (deg)", p.model.rotateDeg, 0.5f, limits::kRotationDeg.min, limits::kRotationDeg.max);
-        mark("model.rotate");
-    }
-    if (field("model.translate")) {
-        dragVec3("translate", p.model.translate, 0.01f, limits::kCoordinate.min, limits::kCoordinate.max);
-        mark("model.translate");
-    }
+}
+
+void modelSection(Preset& p, const PanelInfo& info, PanelState& state, std::vector<Request>& requests, const FieldGate& gate) {
+    modelSource(p, info, state, requests, gate);
+    fieldRowsOf("model", p, nullptr, 0, gate, nothingAfter);
 }
 
 // Direction as angles: θ from +y (0 = straight up), φ around +y from +z towards +x.
@@ -309,132 +241,66 @@ glm::vec3 fromAngles(const glm::vec2& a) {
     return {std::sin(t) * std::sin(f), std::cos(t), std::sin(t) * std::cos(f)};
 }
 
-// Attenuation with one-click choices, and the spot cone.
-void lightFalloffEditor(LightDesc& l, const std::string& prefix) {
-    if (l.type != LightType::Directional && field(prefix + "attenuation")) {
-        glm::vec3 c = l.attenuation;
-        const limits::Range& r = limits::kAttenuation;
-        if (ImGui::DragFloat3("c0, c1, c2", &c.x, 0.005f, r.sliderMin, r.sliderMax, "%.3f")) {
-            c = {limits::clamp(r, c.x), limits::clamp(r, c.y), limits::clamp(r, c.z)};
-            if (c != glm::vec3(0.0f)) { // all three zero is not a light
-                l.attenuation = c;
-            }
-        }
-        mark(prefix + "attenuation");
-        helpMarker("Att = min(1, 1 / (c0 + c1 d + c2 d^2))");
-        struct Choice {
-            const char* name;
-            glm::vec3 c;
-        };
-        static const Choice choices[] = {
-            {"none", {1, 0, 0}}, {"1/d", {0, 1, 0}}, {"1/d^2", {0, 0, 1}}, {"OpenGL", {1, 0.35f, 0.44f}}};
-        for (std::size_t i = 0; i < std::size(choices); ++i) {
-            if (i > 0) {
-                sameLineIfFits(ImGui::CalcTextSize(choices[i].name).x + ImGui::GetStyle().FramePadding.x * 2.0f);
-            }
-            if (ImGui::SmallButton(choices[i].name)) {
-                l.attenuation = choices[i].c;
-            }
-            mark(prefix + "attenuation." + choices[i].name);
-        }
-    }
-    if (l.type == LightType::Spot && field(prefix + "cutoff_deg")) {
-        limitedSlider("cut-off (deg)", l.cutoffDeg, limits::kCutoffDeg, "%.1f");
-        mark(prefix + "cutoff");
-    }
-    if (l.type == LightType::Spot && field(prefix + "exponent")) {
-        limitedSlider("exponent", l.exponent, limits::kSpotExponent, "%.1f");
-        mark(prefix + "exponent");
-    }
-}
-
-// The moving light (core/scene/light_orbit.h): on, its speed and its axis. The position above stays
-// where the orbit starts; only the live view moves.
-void lightOrbitEditor(LightDesc& l, const std::string& prefix) {
-    if (!field(prefix + "orbit")) {
-        return;
-    }
-    ImGui::Checkbox("orbit the model", &l.orbit.on);
-    mark(prefix + "orbit");
-    helpMarker("The light circles the axis through the model's centre, starting from the position "
-               "above, and pauses while you drag anything. Saved with the preset. Screenshots and "
-               "lab render show the light at the position above (no motion).");
-    if (!l.orbit.on) {
-        return;
-    }
-    limitedSlider("speed (deg/s)", l.orbit.degreesPerSecond, limits::kOrbitSpeed, "%.0f");
-    mark(prefix + "orbit.speed");
-    glm::vec3 before = l.orbit.axis;
-    if (dragVec3("axis", l.orbit.axis, 0.01f, limits::kCoordinate.min, limits::kCoordinate.max) &&
-        glm::length(l.orbit.axis) < limits::kMinDirectionLength) {
-        l.orbit.axis = before; // the validator's minimum length: keep the last valid axis
-    }
-    mark(prefix + "orbit.axis");
-    static const struct {
-        const char* name;
-        glm::vec3 axis;
-    } axes[] = {{"x", {1, 0, 0}}, {"y (up)", {0, 1, 0}}, {"z", {0, 0, 1}}};
-    for (std::size_t i = 0; i < std::size(axes); ++i) {
+// A row of small buttons, each setting `value` to its choice; named `path`.<choice's name>.
+struct Preset3 {
+    const char* name;
+    glm::vec3 value;
+};
+void presetButtons(std::span<const Preset3> choices, glm::vec3& value, const std::string& path) {
+    for (std::size_t i = 0; i < choices.size(); ++i) {
         if (i > 0) {
-            sameLineIfFits(ImGui::CalcTextSize(axes[i].name).x + ImGui::GetStyle().FramePadding.x * 2.0f);
+            sameLineIfFits(ImGui::CalcTextSize(choices[i].name).x + ImGui::GetStyle().FramePadding.x * 2.0f);
         }
-        if (ImGui::SmallButton(axes[i].name)) {
-            l.orbit.axis = axes[i].axis;
+        if (ImGui::SmallButton(choices[i].name)) {
+            value = choices[i].value;
         }
-        mark(prefix + "orbit.axis." + std::string(1, axes[i].name[0])); // widget names have no spaces
+        mark(path + "." + std::string(choices[i].name).substr(0, std::string(choices[i].name).find(' '))); // no spaces
     }
 }
 
-// Position, direction, colours of one light; `prefix` names its widgets ("lights[0].").
-void lightEditor(LightDesc& l, const std::string& prefix) {
-    if (field(prefix + "enabled")) {
-        ImGui::Checkbox("enabled", &l.enabled);
-        mark(prefix + "enabled");
-        ImGui::SameLine();
-    }
-    static const char* const typeNames[] = {"point", "directional", "spot"};
-    if (field(prefix + "type")) {
-        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
-        enumCombo("type", l.type, kLightTypes, typeNames);
-        mark(prefix + "type");
-    } else {
-        ImGui::NewLine();
-    }
-    if (l.type != LightType::Directional && field(prefix + "position")) {
-        dragVec3("position", l.position, 0.02f, limits::kCoordinate.min, limits::kCoordinate.max);
-        mark(prefix + "position");
-    }
-    if (l.type != LightType::Point && field(prefix + "direction")) {
-        glm::vec3 before = l.direction;
-        if (dragVec3("direction", l.direction, 0.01f, limits::kCoordinate.min, limits::kCoordinate.max) &&
-            glm::length(l.direction) < limits::kMinDirectionLength) {
-            l.direction = before; // the validator's minimum length: keep the last valid direction
-        }
-        mark(prefix + "direction");
+// What a light's field has beside its widget: the direction's angles, one-click attenuations, the orbit's axes.
+void lightFieldExtras(LightDesc& l, const FieldRow& row, const std::string& path) {
+    std::string_view key = row.path.substr(std::string_view("lights[].").size());
+    if (key == "direction") {
         glm::vec2 angles = toAngles(l.direction);
         if (ImGui::DragFloat2("theta, phi (deg)", &angles.x, 0.5f)) {
             angles.x = glm::clamp(angles.x, 0.0f, 180.0f);
             l.direction = fromAngles(angles) * glm::length(l.direction);
         }
-        mark(prefix + "angles");
+        mark(path.substr(0, path.size() - key.size()) + "angles");
         helpMarker("theta from +y (0 points up, 180 straight down), phi around +y from +z towards +x.");
+    } else if (key == "attenuation") {
+        static const Preset3 choices[] = {{"none", {1, 0, 0}}, {"1/d", {0, 1, 0}}, {"1/d^2", {0, 0, 1}}, {"OpenGL", {1, 0.35f, 0.44f}}};
+        presetButtons(choices, l.attenuation, path);
+    } else if (key == "orbit.axis") {
+        static const Preset3 axes[] = {{"x", {1, 0, 0}}, {"y (up)", {0, 1, 0}}, {"z", {0, 0, 1}}};
+        presetButtons(axes, l.orbit.axis, path);
     }
-    const std::pair<const char*, glm::vec3*> colors[] = {{"ambient", &l.ambient}, {"diffuse", &l.diffuse}, {"specular", &l.specular}};
-    for (const auto& [name, color] : colors) {
-        if (field(prefix + name)) {
-            lightColorEdit(name, *color);
-            mark(prefix + name);
-        }
-    }
-    lightFalloffEditor(l, prefix);
-    lightOrbitEditor(l, prefix);
 }
 
-void lightsSection(Preset& p, PanelState& state) {
-    if (!anyField({"lights"})) {
+// One light: enabled and its type on one line, then its other fields as the table orders them.
+void lightEditor(Preset& p, int index, const FieldGate& gate) {
+    LightDesc& l = p.lights[static_cast<std::size_t>(index)];
+    const std::string prefix = "lights[" + std::to_string(index) + "].";
+    if (gate.field(prefix + "enabled")) {
+        fieldWidget(*fieldRow("lights[].enabled"), p, &l, prefix + "enabled");
+        ImGui::SameLine();
+    }
+    if (gate.field(prefix + "type")) {
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+        fieldWidget(*fieldRow("lights[].type"), p, &l, prefix + "type");
+    } else {
+        ImGui::NewLine();
+    }
+    fieldRowsOf("lights[]", p, &l, index, gate,
+                [&](const FieldRow& row, const std::string& path) { lightFieldExtras(l, row, path); }, {"enabled", "type"});
+}
+
+void lightsSection(Preset& p, PanelState& state, const FieldGate& gate) {
+    if (!gate.any({"lights"})) {
         return;
     }
-    if (field("lights")) {
+    if (gate.field("lights")) {
         if (ImGui::Button("Add light") && p.lights.size() < static_cast<std::size_t>(limits::kMaxLights)) {
             p.lights.push_back(LightDesc{});
             state.selectedLight = static_cast<int>(p.lights.size()) - 1;
@@ -465,14 +331,12 @@ void lightsSection(Preset& p, PanelState& state) {
         ImGui::EndTabBar();
     }
     ImGui::PushID(state.selectedLight);
-    lightEditor(p.lights[static_cast<std::size_t>(state.selectedLight)], "lights[" + std::to_string(state.selectedLight) + "].");
+    lightEditor(p, state.selectedLight, gate);
     ImGui::PopID();
 }
 
 void cameraSection(Preset& p, std::vector<Request>& requests) {
-    dragVec3("eye", p.camera.eye, 0.02f, limits::kCoordinate.min, limits::kCoordinate.max);
-    dragVec3("target", p.camera.target, 0.02f, limits::kCoordinate.min, limits::kCoordinate.max);
-    limitedSlider("fovy (deg)", p.camera.fovyDeg, limits::kFovyDeg, "%.1f");
+    fieldRowsOf("camera", p, nullptr, 0, FieldGate{}, nothingAfter); // looking around is never an exercise's field
     commandButton(Command::ResetCamera, requests);
     sameLineIfFits(commandRow(Command::FrameModel).label);
     commandButton(Command::FrameModel, requests);
@@ -549,7 +413,7 @@ void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, Pan
                   std::vector<Request>& requests, PanelPart part) {
     const bool all = part == PanelPart::All, model = all || part == PanelPart::Model,
                material = all || part == PanelPart::Material, lights = all || part == PanelPart::Lights;
-    setFieldGate(info.exercise, info.exercise ? nullptr : info.draft);
+    const FieldGate gate{info.exercise, info.exercise ? nullptr : info.draft};
     if (info.exercise && ImGui::CollapsingHeader("Exercise", ImGuiTreeNodeFlags_DefaultOpen)) {
         exerciseSection(*info.exercise, requests);
     }
@@ -569,21 +433,21 @@ void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, Pan
         }
         toolButtons(state, requests, info.exercise != nullptr);
     }
-    if (material && anyField({"material"}) && ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
-        materialSection(preset);
+    if (material && gate.any({"material"}) && ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+        materialSection(preset, gate);
     }
-    if (material && anyField({"brdf", "cook_torrance"}) &&
+    if (material && gate.any({"brdf", "cook_torrance"}) &&
         ImGui::CollapsingHeader("Reflection model (BRDF)", ImGuiTreeNodeFlags_DefaultOpen)) {
-        brdfSection(preset);
+        brdfSection(preset, gate);
     }
     if (material && ImGui::CollapsingHeader("Shading and terms", ImGuiTreeNodeFlags_DefaultOpen)) {
-        shadingSection(preset, view);
+        shadingSection(preset, view, gate);
     }
-    if (lights && anyField({"lights"}) && ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) {
-        lightsSection(preset, state);
+    if (lights && gate.any({"lights"}) && ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) {
+        lightsSection(preset, state, gate);
     }
-    if (model && anyField({"model"}) && ImGui::CollapsingHeader("Model", all ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
-        modelSection(preset, info, state, requests);
+    if (model && gate.any({"model"}) && ImGui::CollapsingHeader("Model", all ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
+        modelSection(preset, info, state, requests, gate);
     }
     if (model && ImGui::CollapsingHeader("Camera")) {
         cameraSection(preset, requests);

@@ -31,24 +31,14 @@ std::string WidgetMap::text() const {
     return s;
 }
 
-namespace {
-
-bool limitedColorEdit(const char* label, glm::vec3& value, const limits::Range& r, ImGuiColorEditFlags flags) {
-    bool changed = ImGui::ColorEdit3(label, &value.x, ImGuiColorEditFlags_Float | flags);
+bool limitedColorEdit(const char* label, glm::vec3& value, const limits::Range& r) {
+    // A range above 1 (a light's intensity) lets the picker go past white.
+    ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float | (r.max > 1.0f ? ImGuiColorEditFlags_HDR : ImGuiColorEditFlags_None);
+    bool changed = ImGui::ColorEdit3(label, &value.x, flags);
     if (changed) {
         value = {limits::clamp(r, value.x), limits::clamp(r, value.y), limits::clamp(r, value.z)};
     }
     return changed;
-}
-
-} // namespace
-
-bool colorEdit(const char* label, glm::vec3& value) {
-    return limitedColorEdit(label, value, limits::kMaterialColor, ImGuiColorEditFlags_None);
-}
-
-bool lightColorEdit(const char* label, glm::vec3& value) {
-    return limitedColorEdit(label, value, limits::kLightColor, ImGuiColorEditFlags_HDR);
 }
 
 bool dragVec3(const char* label, glm::vec3& value, float speed, float min, float max, const char* format) {

@@ -3,6 +3,7 @@
 // ImGui only: no GL, no files. mark() (ui/widget_map.h) names the last item for the GUI tests.
 #pragma once
 
+#include "core/scene/limits.h"
 #include "ui/actions.h"
 #include "ui/widget_map.h"
 
@@ -14,10 +15,9 @@
 
 namespace lab::ui {
 
-// A material coefficient triplet: colour square plus typed R, G, B in [0, 1]. True if changed.
-bool colorEdit(const char* label, glm::vec3& value);
-// A light colour: as colorEdit, but any value ≥ 0 (lights may be brighter than 1).
-bool lightColorEdit(const char* label, glm::vec3& value);
+// A colour triplet: colour square plus typed R, G, B, each clamped into `range` (a reflectance's
+// [0, 1], a light's intensity, which may be brighter than 1). True if changed.
+bool limitedColorEdit(const char* label, glm::vec3& value, const limits::Range& range);
 // A vec3 dragged in `speed` steps, optionally clamped.
 bool dragVec3(const char* label, glm::vec3& value, float speed, float min = 0.0f, float max = 0.0f,
               const char* format = "%.3f");

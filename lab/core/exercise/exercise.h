@@ -30,8 +30,8 @@
 
 namespace lab {
 
-inline constexpr std::string_view kExerciseFormat = "lighting-lab-exercise";
-inline constexpr int kExerciseVersion = 1;
+inline constexpr std::string_view kExerciseFormat = kExerciseFile.format; // "lighting-lab-exercise" (core/scene/file_header.h)
+inline constexpr int kExerciseVersion = kExerciseFile.version;
 inline constexpr std::size_t kMaxExerciseBytes = 1u << 20;
 inline constexpr int kExerciseRenderSide = 256; // the attempt and the target are compared at this size
 inline constexpr std::size_t kMaxExerciseHints = 16;

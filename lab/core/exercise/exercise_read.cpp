@@ -6,6 +6,7 @@
 #include "core/io/json_text.h"
 #include "core/io/safe_text.h"
 #include "core/io/suggest.h"
+#include "core/scene/file_header.h"
 #include "core/scene/limits.h"
 
 #include <algorithm>
@@ -63,32 +64,11 @@ std::optional<PresetJson> parseJson(std::string_view text, const std::string& fi
 }
 
 bool readHeader(const PresetJson& json, Reading& r) {
-    const std::string expected = "\"" + std::string(kExerciseFormat) + "\"";
-    auto format = json.find("format");
-    if (format == json.end()) {
-        r.error("format", "missing; expected " + expected);
+    if (std::optional<HeaderProblem> problem = fileHeaderProblem(json, kExerciseFile)) {
+        r.error(problem->key, problem->message);
         return false;
     }
-    if (!format->is_string() || format->get<std::string>() != kExerciseFormat) {
-        std::string got = shortened(format->dump(), 80);
-        r.error("format", "expected " + expected + ", got " + got +
-                              (got == "\"" + std::string(kPresetFormat) + "\"" ? " (this is a preset, not an exercise)" : ""));
-        return false;
-    }
-    auto version = json.find("version");
-    if (version == json.end()) {
-        r.error("version", "missing; expected " + std::to_string(kExerciseVersion));
-    } else if (!version->is_number_integer() && !version->is_number_unsigned()) {
-        r.error("version", "expected an integer, got " + shortened(version->dump(), 40));
-    } else if (version->get<double>() > kExerciseVersion) {
-        r.error("version", "version " + version->dump() + " is newer than this program reads (" +
-                               std::to_string(kExerciseVersion) + "); update Lighting Lab");
-    } else if (version->get<double>() < 1) {
-        r.error("version", "expected " + std::to_string(kExerciseVersion) + ", got " + version->dump());
-    } else {
-        return true;
-    }
-    return false;
+    return true;
 }
 
 std::optional<std::string> readText(const PresetJson& json, std::string_view key, bool required, Reading& r) {
@@ -128,8 +108,9 @@ void readTolerance(const PresetJson& t, Exercise& e, const std::vector<const Pre
                 r.error(where, "expected an object of field paths and numbers, got " + describe(value));
                 continue;
             }
-            for (const auto& [field, within] : value.items()) {
-                std::string at = where + "." + printable(field, true);
+            for (const auto& [typed, within] : value.items()) {
+                std::string at = where + "." + printable(typed, true);
+                const std::string field = canonicalPath(typed);
                 const PresetJson* v = fieldAt(target, field);
                 if (!knownFieldPath(field, examples)) {
                     r.error(at, "no such field in a preset");
@@ -266,10 +247,10 @@ void readOpen(const PresetJson& json, Exercise& e, const std::vector<const Prese
         } else if (!knownFieldPath(path.get<std::string>(), examples)) {
             r.error(where, "no field " + inQuotes(path.get<std::string>()) + " in a preset" +
                                suggestion(path.get<std::string>(), known));
-        } else if (std::find(e.open.begin(), e.open.end(), path.get<std::string>()) != e.open.end()) {
+        } else if (std::find(e.open.begin(), e.open.end(), canonicalPath(path.get<std::string>())) != e.open.end()) {
             r.error(where, inQuotes(path.get<std::string>()) + " is listed twice");
         } else {
-            e.open.push_back(path.get<std::string>());
+            e.open.push_back(canonicalPath(path.get<std::string>())); // "lights[00]" is "lights[0]"
         }
     }
 }

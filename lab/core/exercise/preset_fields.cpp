@@ -1,7 +1,7 @@
 // preset_fields.cpp — preset fields by JSON path: differences, open paths, patches.
 #include "core/exercise/preset_fields.h"
 
-#include "core/scene/limits.h"
+#include "core/scene/field_table.h"
 
 #include <algorithm>
 
@@ -51,56 +51,6 @@ void collectChanges(const PresetJson& a, const PresetJson& b, const std::string&
     }
 }
 
-// The path's parts: "lights[1].attenuation" is {"lights", 1, "attenuation"}; nullopt if malformed.
-struct Part {
-    std::string key;
-    std::optional<std::size_t> index;
-};
-
-std::optional<std::vector<Part>> splitPath(std::string_view path) {
-    std::vector<Part> parts;
-    std::size_t i = 0;
-    bool needKey = true; // at the start and after a '.'
-    while (i < path.size()) {
-        if (path[i] == '[') {
-            std::size_t close = path.find(']', i);
-            if (parts.empty() || needKey || close == std::string_view::npos || close == i + 1 || close - i > 4 ||
-                (path[i + 1] == '0' && close > i + 2)) { // no leading zeros: "lights[00]" names nothing
-                return std::nullopt;
-            }
-            std::size_t index = 0;
-            for (std::size_t k = i + 1; k < close; ++k) {
-                if (path[k] < '0' || path[k] > '9') {
-                    return std::nullopt;
-                }
-                index = index * 10 + std::size_t(path[k] - '0');
-            }
-            parts.push_back({"", index});
-            i = close + 1;
-        } else if (path[i] == '.') {
-            if (needKey) {
-                return std::nullopt;
-            }
-            needKey = true;
-            ++i;
-            continue;
-        } else {
-            if (!needKey) {
-                return std::nullopt;
-            }
-            std::size_t end = path.find_first_of(".[", i);
-            end = end == std::string_view::npos ? path.size() : end;
-            parts.push_back({std::string(path.substr(i, end - i)), std::nullopt});
-            i = end;
-        }
-        needKey = false;
-    }
-    if (parts.empty() || needKey) {
-        return std::nullopt;
-    }
-    return parts;
-}
-
 // `full` marked as a whole preset (mergePreset takes it as it is).
 PresetJson whole(const PresetJson& full) {
     PresetJson j = {{"format", kPresetFormat}, {"version", kPresetVersion}};
@@ -125,13 +75,6 @@ std::vector<std::string> changedFields(const PresetJson& a, const PresetJson& b)
     return out;
 }
 
-bool covers(std::string_view prefix, std::string_view path) {
-    if (!path.starts_with(prefix)) {
-        return false;
-    }
-    return path.size() == prefix.size() || path[prefix.size()] == '.' || path[prefix.size()] == '[';
-}
-
 bool alwaysFree(std::string_view path) {
     for (std::string_view free : {"name", "description", "camera", "plot", "check", "sweep"}) {
         if (covers(free, path)) {
@@ -142,22 +85,22 @@ bool alwaysFree(std::string_view path) {
 }
 
 const PresetJson* fieldAt(const PresetJson& json, std::string_view path) {
-    std::optional<std::vector<Part>> parts = splitPath(path);
-    if (!parts) {
+    std::optional<std::vector<PathStep>> steps = parseFieldPath(path);
+    if (!steps) {
         return nullptr;
     }
     const PresetJson* at = &json;
-    for (const Part& part : *parts) {
-        if (part.index) {
-            if (!at->is_array() || *part.index >= at->size()) {
+    for (const PathStep& part : *steps) {
+        if (part.isIndex()) {
+            if (!at->is_array() || part.index >= at->size()) {
                 return nullptr;
             }
-            at = &(*at)[*part.index];
+            at = &(*at)[part.index];
         } else {
             if (!at->is_object()) {
                 return nullptr;
             }
-            auto it = at->find(part.key);
+            auto it = at->find(part.name);
             if (it == at->end()) {
                 return nullptr;
             }
@@ -168,20 +111,7 @@ const PresetJson* fieldAt(const PresetJson& json, std::string_view path) {
 }
 
 bool knownFieldPath(std::string_view path, const std::vector<const PresetJson*>& examples) {
-    // Every field a preset can have: the defaults (a built-in model, one light), a glTF model,
-    // a light with an orbit, as many lights as a preset may hold.
-    static const PresetJson all = [] {
-        Preset p;
-        p.lights.assign(static_cast<std::size_t>(limits::kMaxLights), LightDesc{});
-        p.lights.front().orbit.on = true;
-        PresetJson j = presetValue(p);
-        j["model"]["gltf"] = "model.glb";
-        for (PresetJson& light : j["lights"]) {
-            light["orbit"] = j["lights"][0]["orbit"];
-        }
-        return j;
-    }();
-    if (fieldAt(all, path)) {
+    if (isFieldPath(path)) {
         return true;
     }
     return std::any_of(examples.begin(), examples.end(), [&](const PresetJson* e) { return e && fieldAt(*e, path); });

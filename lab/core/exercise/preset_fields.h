@@ -7,6 +7,7 @@
 // tolerances name fields, or whole objects above them ("lights[0]", "material").
 #pragma once
 
+#include "core/scene/field_path.h" // the path grammar, covers()
 #include "core/scene/preset.h"
 
 #include <nlohmann/json.hpp>
@@ -27,16 +28,12 @@ PresetJson presetValue(const Preset& preset);
 // light only one of them has is one path ("lights[2]").
 std::vector<std::string> changedFields(const PresetJson& a, const PresetJson& b);
 
-// True when `path` is `prefix` or lies below it ("lights[0]" covers "lights[0].attenuation",
-// "material" covers "material.diffuse"; "material.diffuse" does not cover "material.diffuse_x").
-bool covers(std::string_view prefix, std::string_view path);
-
 // Fields a student may always change: looking around, naming and describing is never cheating,
 // and `check`/`sweep` only tell `lab check` what to compare.
 bool alwaysFree(std::string_view path);
 
-// Whether `path` names a field or an object of fields a preset can have (checked against the
-// defaults, `examples` and every light up to limits::kMaxLights).
+// Whether `path` names a field or an object of fields a preset can have (the field table's,
+// core/scene/field_table.h, with up to limits::kMaxLights lights), or a value one of `examples` holds.
 bool knownFieldPath(std::string_view path, const std::vector<const PresetJson*>& examples);
 
 // The value at `path` in `json`, or nullptr.

@@ -1,16 +1,17 @@
 // preset.cpp — the preset's names, defaults and JSON writing.
 //
-// Owns toString for every enumeration (the names preset files use, from preset_names.h),
-// defaultSubdivisions, presetToJson and savePreset: every key in the documented order (a
-// light's `orbit`, `check` and `sweep` only when given), numbers
-// as the shortest decimal that reads back as the same float, written atomically.
+// Owns toString for every enumeration (the names preset files use, from the field table),
+// defaultSubdivisions, presetToJson and savePreset: every key of the field table in its order
+// (core/scene/field_table.h: a light's `orbit` only when given), then `check` and `sweep` when
+// given, numbers as the shortest decimal that reads back as the same float, written atomically.
 //
 // It does not read or validate presets (preset_read.cpp).
 #include "core/scene/preset.h"
 
 #include "core/io/file_io.h"
 #include "core/io/number_format.h"
-#include "core/scene/preset_names.h"
+#include "core/scene/field_path.h"
+#include "core/scene/field_table.h"
 
 #include <nlohmann/json.hpp>
 
@@ -26,20 +27,6 @@ using Json = nlohmann::ordered_json;
 // Names and defaults
 //----------------------------------------------------------------------------------------
 
-namespace {
-
-template <typename E, std::size_t N>
-std::string_view nameOf(const preset_names::NameTable<E, N>& table, E value) {
-    for (const auto& [v, name] : table) {
-        if (v == value) {
-            return name;
-        }
-    }
-    return "?";
-}
-
-} // namespace
-
 glm::ivec2 defaultSubdivisions(Builtin builtin) {
     switch (builtin) {
     case Builtin::Sphere: return {64, 32};
@@ -50,13 +37,13 @@ glm::ivec2 defaultSubdivisions(Builtin builtin) {
     return {1, 1};
 }
 
-std::string_view toString(Builtin v) { return nameOf(preset_names::kBuiltin, v); }
-std::string_view toString(Shading v) { return nameOf(preset_names::kShading, v); }
-std::string_view toString(NormalMatrixMode v) { return nameOf(preset_names::kNormalMatrix, v); }
-std::string_view toString(BrdfModel v) { return nameOf(preset_names::kBrdf, v); }
-std::string_view toString(Distribution v) { return nameOf(preset_names::kDistribution, v); }
-std::string_view toString(FresnelMode v) { return nameOf(preset_names::kFresnel, v); }
-std::string_view toString(LightType v) { return nameOf(preset_names::kLightType, v); }
+std::string_view toString(Builtin v) { return choiceName(kBuiltinChoices, static_cast<int>(v)); }
+std::string_view toString(Shading v) { return choiceName(kShadingChoices, static_cast<int>(v)); }
+std::string_view toString(NormalMatrixMode v) { return choiceName(kNormalMatrixChoices, static_cast<int>(v)); }
+std::string_view toString(BrdfModel v) { return choiceName(kBrdfChoices, static_cast<int>(v)); }
+std::string_view toString(Distribution v) { return choiceName(kDistributionChoices, static_cast<int>(v)); }
+std::string_view toString(FresnelMode v) { return choiceName(kFresnelChoices, static_cast<int>(v)); }
+std::string_view toString(LightType v) { return choiceName(kLightTypeChoices, static_cast<int>(v)); }
 
 //----------------------------------------------------------------------------------------
 // Writing
@@ -149,63 +136,68 @@ Json checkJson(const CheckSettings& c) {
     return check;
 }
 
-Json presetJson(const Preset& p) {
+// A row's value as the file writes it.
+Json rowJson(const FieldRow& row, Preset& p, LightDesc* light) {
+    switch (row.kind) {
+    case FieldKind::Number: return number(fieldValue<float>(row, p, light));
+    case FieldKind::Vec3:
+    case FieldKind::Color:
+    case FieldKind::Direction: return vec3(fieldValue<glm::vec3>(row, p, light));
+    case FieldKind::Int2: {
+        const glm::ivec2& v = fieldValue<glm::ivec2>(row, p, light);
+        return Json::array({v.x, v.y});
+    }
+    case FieldKind::Switch: return fieldValue<bool>(row, p, light);
+    case FieldKind::Text: return fieldValue<std::string>(row, p, light);
+    case FieldKind::Choice: return choiceName(row.choices, choiceValue(row, p, light));
+    }
+    return nullptr;
+}
+
+// The rows of `object` ("" for the top level, "lights[]" for one light) and the objects below it,
+// in the table's order; an object none of whose rows is written is left out (a light's orbit).
+Json rowsJson(std::string_view object, Preset& p, LightDesc* light) {
+    Json j = Json::object();
+    for (const FieldRow& row : fieldRows()) {
+        std::string_view below = fieldObject(row);
+        if (below == object) {
+            if (!row.written || row.written(p, light)) {
+                j[std::string(fieldKey(row))] = rowJson(row, p, light);
+            }
+            continue;
+        }
+        if (!object.empty() && !covers(object, below)) {
+            continue;
+        }
+        std::string_view rest = object.empty() ? row.path : row.path.substr(object.size() + 1);
+        std::string_view child = rest.substr(0, rest.find('.'));
+        std::string key(child.ends_with("[]") ? child.substr(0, child.size() - 2) : child);
+        if (j.contains(key)) {
+            continue; // written where its first row came
+        }
+        std::string_view childObject = row.path.substr(0, row.path.size() - rest.size() + child.size());
+        if (child.ends_with("[]")) {
+            Json lights = Json::array();
+            for (LightDesc& l : p.lights) {
+                lights.push_back(rowsJson(childObject, p, &l));
+            }
+            j[key] = lights;
+        } else if (Json sub = rowsJson(childObject, p, light); !sub.empty()) {
+            j[key] = sub;
+        }
+    }
+    return j;
+}
+
+Json presetJson(const Preset& preset) {
+    Preset p = preset; // the rows' addresses are of a Preset to edit; writing changes nothing
     Json j;
     j["format"] = kPresetFormat;
     j["version"] = kPresetVersion;
-    j["name"] = p.name;
-    j["description"] = p.description;
-    Json model;
-    if (p.model.gltf.empty()) {
-        model["builtin"] = toString(p.model.builtin);
-        model["subdivisions"] = Json::array({p.model.subdivisions.x, p.model.subdivisions.y});
-    } else {
-        model["gltf"] = p.model.gltf;
+    Json rows = rowsJson("", p, nullptr);
+    for (auto& [key, value] : rows.items()) {
+        j[key] = std::move(value);
     }
-    model["scale"] = vec3(p.model.scale);
-    model["rotate_deg"] = vec3(p.model.rotateDeg);
-    model["translate"] = vec3(p.model.translate);
-    j["model"] = model;
-    j["camera"] = {{"eye", vec3(p.camera.eye)},       {"target", vec3(p.camera.target)},
-                   {"up", vec3(p.camera.up)},         {"fovy_deg", number(p.camera.fovyDeg)},
-                   {"near", number(p.camera.near)},   {"far", number(p.camera.far)}};
-    j["shading"] = toString(p.shading);
-    j["normal_matrix"] = toString(p.normalMatrix);
-    j["brdf"] = toString(p.brdf);
-    j["cook_torrance"] = {{"distribution", toString(p.cookTorrance.distribution)},
-                          {"roughness", number(p.cookTorrance.roughness)},
-                          {"fresnel", toString(p.cookTorrance.fresnel)},
-                          {"ior", number(p.cookTorrance.ior)},
-                          {"geometry", p.cookTorrance.geometry}};
-    j["material"] = {{"emissive", vec3(p.material.emissive)}, {"ambient", vec3(p.material.ambient)},
-                     {"diffuse", vec3(p.material.diffuse)},   {"specular", vec3(p.material.specular)},
-                     {"shininess", number(p.material.shininess)}};
-    j["ambient_light"] = vec3(p.ambientLight);
-    Json lights = Json::array();
-    for (const LightDesc& l : p.lights) {
-        lights.push_back({{"type", toString(l.type)},
-                          {"position", vec3(l.position)},
-                          {"direction", vec3(l.direction)},
-                          {"ambient", vec3(l.ambient)},
-                          {"diffuse", vec3(l.diffuse)},
-                          {"specular", vec3(l.specular)},
-                          {"attenuation", vec3(l.attenuation)},
-                          {"cutoff_deg", number(l.cutoffDeg)},
-                          {"exponent", number(l.exponent)},
-                          {"enabled", l.enabled}});
-        if (l.orbit != LightOrbit{}) { // presets without motion are written as they were before it existed
-            lights.back()["orbit"] = {{"on", l.orbit.on},
-                                      {"axis", vec3(l.orbit.axis)},
-                                      {"degrees_per_second", number(l.orbit.degreesPerSecond)}};
-        }
-    }
-    j["lights"] = lights;
-    j["terms"] = {{"emissive", p.terms.emissive},
-                  {"ambient", p.terms.ambient},
-                  {"diffuse", p.terms.diffuse},
-                  {"specular", p.terms.specular}};
-    j["background"] = vec3(p.background);
-    j["plot"] = {{"incident_deg", number(p.plotIncidentDeg)}};
     // `check` and `sweep` only when given: presets without them are written as before they existed.
     if (!p.check.empty()) {
         j["check"] = checkJson(p.check);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/io/diagnostics.h"
+#include "core/scene/file_header.h"
 #include "core/scene/limits.h"
 
 #include <glm/vec2.hpp>
@@ -22,8 +23,8 @@
 
 namespace lab {
 
-inline constexpr std::string_view kPresetFormat = "lighting-lab-preset";
-inline constexpr int kPresetVersion = 1;
+inline constexpr std::string_view kPresetFormat = kPresetFile.format; // "lighting-lab-preset" (file_header.h)
+inline constexpr int kPresetVersion = kPresetFile.version;
 using limits::kMaxLights; // core/scene/limits.h holds every range a preset is validated against
 
 enum class Builtin { Sphere, Cube, Plane, Torus };

@@ -4,6 +4,7 @@
 // written anywhere else. The names in preset files are preset.h's toString().
 #pragma once
 
+#include "core/scene/field_table.h"
 #include "core/scene/preset.h"
 
 #include <array>
@@ -20,13 +21,10 @@ inline constexpr std::array kDistributions{Distribution::Beckmann, Distribution:
 inline constexpr std::array kFresnelModes{FresnelMode::Schlick, FresnelMode::Full};
 inline constexpr std::array kLightTypes{LightType::Point, LightType::Directional, LightType::Spot};
 
-// Names as the GUI shows them (preset files use preset.h's toString: "gouraud", "blinn-phong").
-inline constexpr const char* kShadingLabels[] = {"flat", "Gouraud", "Phong"};
-inline constexpr const char* kBrdfLabels[] = {"Phong", "Blinn-Phong", "Cook-Torrance"};
-static_assert(std::size(kShadingLabels) == kShadings.size() && std::size(kBrdfLabels) == kBrdfModels.size());
-static_assert(kShadings[2] == Shading::Phong && kBrdfModels[2] == BrdfModel::CookTorrance); // label() indexes by value
-inline const char* label(Shading v) { return kShadingLabels[static_cast<int>(v)]; }
-inline const char* label(BrdfModel v) { return kBrdfLabels[static_cast<int>(v)]; }
+// Names as the GUI shows them (preset files use preset.h's toString: "gouraud", "blinn-phong"),
+// from the field table's choices, which are in the order of the values.
+inline const char* label(Shading v) { return kShadingChoices[static_cast<std::size_t>(v)].label; }
+inline const char* label(BrdfModel v) { return kBrdfChoices[static_cast<std::size_t>(v)].label; }
 
 // The value after `value` in `all`, wrapping around.
 template <typename E, std::size_t N>

@@ -16,7 +16,9 @@
 #include "core/io/paths.h"
 #include "core/io/safe_text.h"
 #include "core/scene/limits.h"
-#include "core/scene/preset_names.h"
+#include "core/scene/field_path.h"
+#include "core/scene/field_table.h"
+#include "core/scene/file_header.h"
 #include "core/scene/sweep.h"
 #include "core/scene/view_mode.h"
 
@@ -87,51 +89,12 @@ std::optional<Json> parseObject(std::string_view text, const std::string& file, 
 // The preset's sections
 //----------------------------------------------------------------------------------------
 
-// Format and version first: a file that is not a preset gets one clear message, not fifty.
-bool readFormatAndVersion(Reader& r) {
-    const std::string expectedFormat = "\"" + std::string(kPresetFormat) + "\"";
-    const Json* format = r.find("format");
-    if (!format) {
-        r.error("format", "missing; expected " + expectedFormat);
-        return false;
-    }
-    if (!format->is_string() || format->get<std::string>() != kPresetFormat) {
-        r.error("format", "expected " + expectedFormat + ", got " + format->dump());
-        return false;
-    }
-    const Json* version = r.find("version");
-    if (!version) {
-        r.error("version", "missing; expected " + std::to_string(kPresetVersion));
-    } else if (!version->is_number_integer() && !version->is_number_unsigned()) {
-        r.error("version", "expected an integer, got " + version->dump());
-    } else if (version->get<double>() > kPresetVersion) {
-        r.error("version", "version " + version->dump() + " is newer than this program reads (" +
-                               std::to_string(kPresetVersion) + "); update Lighting Lab");
-    } else if (version->get<double>() < 1) {
-        r.error("version", "expected " + std::to_string(kPresetVersion) + ", got " + version->dump());
-    } else {
-        return true;
-    }
-    return false;
-}
-
-// The keys of each object, for finish(): anything else is reported as unknown.
-constexpr std::string_view kPresetKeys[] = {
-    "format", "version",       "name",     "description",   "model",  "camera", "shading",    "normal_matrix",
-    "brdf",   "cook_torrance", "material", "ambient_light", "lights", "terms",  "background", "plot",
-    "check",  "sweep"};
-constexpr std::string_view kModelKeys[] = {"builtin", "gltf", "subdivisions", "scale", "rotate_deg", "translate"};
-constexpr std::string_view kCameraKeys[] = {"eye", "target", "up", "fovy_deg", "near", "far"};
-constexpr std::string_view kCookTorranceKeys[] = {"distribution", "roughness", "fresnel", "ior", "geometry"};
-constexpr std::string_view kMaterialKeys[] = {"emissive", "ambient", "diffuse", "specular", "shininess"};
-constexpr std::string_view kLightKeys[] = {"type",     "position",    "direction",  "ambient",  "diffuse",
-                                           "specular", "attenuation", "cutoff_deg", "exponent", "enabled",
-                                           "orbit"};
-constexpr std::string_view kOrbitKeys[] = {"on", "axis", "degrees_per_second"};
-constexpr std::string_view kTermsKeys[] = {"emissive", "ambient", "diffuse", "specular"};
-constexpr std::string_view kPlotKeys[] = {"incident_deg"};
+// The keys of `check` and its views (scene fields' keys come from the field table).
 constexpr std::string_view kCheckKeys[] = {"pixel_tolerance", "max_failing", "max_mean", "plot_tolerance", "views"};
 constexpr std::string_view kCheckViewKeys[] = {"view", "light"};
+
+void readCheck(Reader& r, CheckSettings& check);
+void readSweep(Reader& top, std::vector<std::string>& sweep);
 
 // model.gltf: a .gltf or .glb file in or below the preset's folder.
 void readGltfPath(Reader& r, Model& model, const std::optional<fs::path>& folder) {
@@ -163,12 +126,16 @@ void readGltfPath(Reader& r, Model& model, const std::optional<fs::path>& folder
     }
 }
 
-void readModel(Reader& r, Model& model, const std::optional<fs::path>& folder) {
+// The model's source, read together: a built-in with its subdivisions, or a glTF file (which
+// has none).
+void readModelSource(Reader& r, Model& model, const std::optional<fs::path>& folder) {
     bool hasGltf = r.has("gltf");
     if (r.has("builtin") && hasGltf) {
         r.error("gltf", "a model has either \"builtin\" or \"gltf\", not both");
     }
-    r.readEnum("builtin", model.builtin, preset_names::kBuiltin);
+    int builtin = static_cast<int>(model.builtin);
+    r.readChoice("builtin", builtin, kBuiltinChoices);
+    model.builtin = static_cast<Builtin>(builtin);
     model.subdivisions = defaultSubdivisions(model.builtin);
     if (hasGltf) {
         readGltfPath(r, model, folder);
@@ -179,77 +146,44 @@ void readModel(Reader& r, Model& model, const std::optional<fs::path>& folder) {
             r.error("subdivisions", "a sphere needs at least 2 stacks");
         }
     }
-    r.readVec3("scale", model.scale, limits::kCoordinate);
-    if (std::abs(model.scale.x) < limits::kMinScale || std::abs(model.scale.y) < limits::kMinScale ||
-        std::abs(model.scale.z) < limits::kMinScale) {
-        r.error("scale", "scale factors must be at least 0.0001 in magnitude (at 0 the normal matrix would not exist)");
-    }
-    r.readVec3("rotate_deg", model.rotateDeg, limits::kRotationDeg);
-    r.readVec3("translate", model.translate, limits::kCoordinate);
 }
 
-void readCamera(Reader& r, Camera& camera) {
-    r.readVec3("eye", camera.eye, limits::kCoordinate);
-    r.readVec3("target", camera.target, limits::kCoordinate);
-    r.readVec3("up", camera.up, limits::kCoordinate);
-    r.readNumber("fovy_deg", camera.fovyDeg, limits::kFovyDeg);
-    r.readNumber("near", camera.near, limits::kNear);
-    r.readNumber("far", camera.far, limits::kFar);
-    if (camera.far <= camera.near) {
-        r.error("far", "must be greater than near");
+// What a preset reads besides its rows: the model's source, and the lights.
+struct Sections {
+    Preset& preset;
+    const std::optional<fs::path>& folder;
+};
+
+void readRows(Reader& r, std::string_view object, Sections& s, LightDesc* light);
+
+// One row's value, by its kind, then its rule.
+void readRow(Reader& r, const FieldRow& row, Preset& p, LightDesc* light) {
+    std::string_view key = fieldKey(row);
+    switch (row.kind) {
+    case FieldKind::Number: r.readNumber(key, fieldValue<float>(row, p, light), *row.range); break;
+    case FieldKind::Vec3:
+    case FieldKind::Color: r.readVec3(key, fieldValue<glm::vec3>(row, p, light), *row.range); break;
+    case FieldKind::Direction: r.readDirection(key, fieldValue<glm::vec3>(row, p, light)); break;
+    case FieldKind::Int2: r.readInt2(key, fieldValue<glm::ivec2>(row, p, light), *row.intRange); break;
+    case FieldKind::Switch: r.readBool(key, fieldValue<bool>(row, p, light)); break;
+    case FieldKind::Text: r.readString(key, fieldValue<std::string>(row, p, light)); break;
+    case FieldKind::Choice: {
+        int value = choiceValue(row, p, light);
+        r.readChoice(key, value, row.choices);
+        setChoice(row, p, light, value);
+        break;
     }
-    glm::vec3 forward = camera.target - camera.eye;
-    if (glm::length(camera.up) < limits::kMinDirectionLength) {
-        r.error("up", "must be at least 0.001 long (it is normalized)");
-    } else if (glm::length(forward) < limits::kMinDirectionLength) {
-        r.error("target", "must be at least 0.001 from eye");
-    } else {
-        glm::vec3 side = glm::cross(forward, camera.up);
-        if (glm::dot(side, side) <= 1e-12f * glm::dot(forward, forward) * glm::dot(camera.up, camera.up)) {
-            r.error("up", "must not be parallel to the viewing direction (or zero)");
+    }
+    if (row.rule) {
+        std::vector<FieldProblem> problems;
+        row.rule(p, light, problems);
+        for (const FieldProblem& problem : problems) {
+            r.error(problem.key, problem.message);
         }
     }
 }
 
-void readCookTorrance(Reader& r, CookTorrance& ct) {
-    r.readEnum("distribution", ct.distribution, preset_names::kDistribution);
-    r.readNumber("roughness", ct.roughness, limits::kRoughness);
-    r.readEnum("fresnel", ct.fresnel, preset_names::kFresnel);
-    r.readNumber("ior", ct.ior, limits::kIor);
-    r.readBool("geometry", ct.geometry);
-}
-
-void readMaterial(Reader& r, MaterialDesc& material) {
-    for (auto [key, color] : {std::pair{"emissive", &material.emissive}, std::pair{"ambient", &material.ambient},
-                              std::pair{"diffuse", &material.diffuse}, std::pair{"specular", &material.specular}}) {
-        r.readVec3(key, *color, limits::kMaterialColor);
-    }
-    r.readNumber("shininess", material.shininess, limits::kShininess);
-}
-
-void readLight(Reader& r, LightDesc& light) {
-    r.readEnum("type", light.type, preset_names::kLightType);
-    r.readVec3("position", light.position, limits::kCoordinate);
-    r.readDirection("direction", light.direction);
-    for (auto [key, color] : {std::pair{"ambient", &light.ambient}, std::pair{"diffuse", &light.diffuse},
-                              std::pair{"specular", &light.specular}}) {
-        r.readVec3(key, *color, limits::kLightColor);
-    }
-    r.readVec3("attenuation", light.attenuation, limits::kAttenuation);
-    if (light.attenuation == glm::vec3(0.0f)) {
-        r.error("attenuation", "c0, c1 and c2 must not all be 0");
-    }
-    r.readNumber("cutoff_deg", light.cutoffDeg, limits::kCutoffDeg);
-    r.readNumber("exponent", light.exponent, limits::kSpotExponent);
-    r.readBool("enabled", light.enabled);
-    r.readObject("orbit", kOrbitKeys, [&](Reader& o) {
-        o.readBool("on", light.orbit.on);
-        o.readDirection("axis", light.orbit.axis);
-        o.readNumber("degrees_per_second", light.orbit.degreesPerSecond, limits::kOrbitSpeed);
-    });
-}
-
-void readLights(Reader& top, std::vector<LightDesc>& lights) {
+void readLights(Reader& top, Sections& s) {
     const Json* json = top.find("lights");
     if (!json) {
         return;
@@ -262,6 +196,7 @@ void readLights(Reader& top, std::vector<LightDesc>& lights) {
         top.error("lights", "at most " + std::to_string(kMaxLights) + " lights, got " + std::to_string(json->size()));
         return;
     }
+    std::vector<LightDesc>& lights = s.preset.lights;
     lights.assign(json->size(), LightDesc{});
     for (std::size_t i = 0; i < json->size(); ++i) {
         const Json& light = (*json)[i];
@@ -270,16 +205,50 @@ void readLights(Reader& top, std::vector<LightDesc>& lights) {
             continue;
         }
         Reader r = top.child(light, top.elementPath("lights", i));
-        readLight(r, lights[i]);
-        r.finish(kLightKeys);
+        readRows(r, "lights[]", s, &lights[i]);
     }
 }
 
-void readTerms(Reader& r, TermSwitches& terms) {
-    for (auto [key, on] : {std::pair{"emissive", &terms.emissive}, std::pair{"ambient", &terms.ambient},
-                           std::pair{"diffuse", &terms.diffuse}, std::pair{"specular", &terms.specular}}) {
-        r.readBool(key, *on);
+// The rows of `object` ("material", "lights[]", "" for the top level) in the table's order, the
+// objects below it as they come, then its unknown keys.
+void readRows(Reader& r, std::string_view object, Sections& s, LightDesc* light) {
+    std::vector<std::string_view> seen;
+    for (const FieldRow& row : fieldRows()) {
+        std::string_view below = fieldObject(row);
+        if (below == object) {
+            if (row.custom && fieldKey(row) == "builtin") {
+                readModelSource(r, s.preset.model, s.folder);
+            } else if (!row.custom) {
+                readRow(r, row, s.preset, light);
+            }
+            seen.push_back(fieldKey(row));
+            continue;
+        }
+        if (!covers(object, below) && !object.empty()) {
+            continue;
+        }
+        // A row of an object below this one: that object is read once, where its first row comes.
+        std::string_view rest = object.empty() ? row.path : row.path.substr(object.size() + 1);
+        std::string_view child = rest.substr(0, rest.find('.'));
+        std::string_view key = child.ends_with("[]") ? child.substr(0, child.size() - 2) : child;
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+            continue;
+        }
+        seen.push_back(key);
+        std::string_view childObject = row.path.substr(0, row.path.size() - rest.size() + child.size());
+        if (child.ends_with("[]")) {
+            readLights(r, s);
+        } else {
+            r.readObject(key, [&](Reader& c) { readRows(c, childObject, s, light); });
+        }
     }
+    if (object.empty()) {
+        r.readObject("check", kCheckKeys, [&](Reader& c) { readCheck(c, s.preset.check); });
+        readSweep(r, s.preset.sweep);
+        seen.insert(seen.begin(), {"format", "version"});
+        seen.insert(seen.end(), {"check", "sweep"});
+    }
+    r.finish(seen);
 }
 
 // `check.views`: view names ("d"), or {"view": "spot", "light": 2}; each name a view of
@@ -374,28 +343,6 @@ void readSweep(Reader& top, std::vector<std::string>& sweep) {
     }
 }
 
-// Every key after format and version, in the documented order.
-void readPresetKeys(Reader& r, Preset& p, const std::optional<fs::path>& folder) {
-    r.readString("name", p.name);
-    r.readString("description", p.description);
-    r.readObject("model", kModelKeys, [&](Reader& m) { readModel(m, p.model, folder); });
-    r.readObject("camera", kCameraKeys, [&](Reader& c) { readCamera(c, p.camera); });
-    r.readEnum("shading", p.shading, preset_names::kShading);
-    r.readEnum("normal_matrix", p.normalMatrix, preset_names::kNormalMatrix);
-    r.readEnum("brdf", p.brdf, preset_names::kBrdf);
-    r.readObject("cook_torrance", kCookTorranceKeys, [&](Reader& c) { readCookTorrance(c, p.cookTorrance); });
-    r.readObject("material", kMaterialKeys, [&](Reader& m) { readMaterial(m, p.material); });
-    r.readVec3("ambient_light", p.ambientLight, limits::kAmbientLight);
-    readLights(r, p.lights);
-    r.readObject("terms", kTermsKeys, [&](Reader& t) { readTerms(t, p.terms); });
-    r.readVec3("background", p.background, limits::kBackground);
-    r.readObject("plot", kPlotKeys,
-                 [&](Reader& pl) { pl.readNumber("incident_deg", p.plotIncidentDeg, limits::kPlotIncidentDeg); });
-    r.readObject("check", kCheckKeys, [&](Reader& c) { readCheck(c, p.check); });
-    readSweep(r, p.sweep);
-    r.finish(kPresetKeys);
-}
-
 } // namespace
 
 //----------------------------------------------------------------------------------------
@@ -446,10 +393,17 @@ std::optional<Preset> readPreset(std::string_view text, const std::string& displ
     Diagnostics out;
     Reader r(*json, where, displayName, out);
     Preset preset;
-    if ((inlined && !r.has("format") && !r.has("version")) || readFormatAndVersion(r)) {
-        r.find("format");
+    std::optional<HeaderProblem> header;
+    if (!(inlined && !r.has("format") && !r.has("version"))) {
+        header = fileHeaderProblem(*json, kPresetFile);
+    }
+    if (header) {
+        r.error(header->key, header->message);
+    } else {
+        r.find("format"); // checked above (or left to the file around an inline preset)
         r.find("version");
-        readPresetKeys(r, preset, folder);
+        Sections sections{preset, folder};
+        readRows(r, "", sections, nullptr);
     }
     if (!out.empty()) {
         diagnostics.insert(diagnostics.end(), out.begin(), out.end());

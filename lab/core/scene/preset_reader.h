@@ -9,7 +9,7 @@
 #include "core/io/safe_text.h"
 #include "core/io/suggest.h"
 #include "core/scene/limits.h"
-#include "core/scene/preset_names.h"
+#include "core/scene/field_table.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -26,7 +26,6 @@ namespace lab::preset_detail {
 
 using Json = nlohmann::ordered_json;
 using Keys = std::span<const std::string_view>;
-using preset_names::NameTable;
 
 class Reader {
 public:
@@ -84,6 +83,18 @@ public:
         }
     }
 
+    // Reads the object under `key` with `read(Reader&)`, which reports its unknown keys itself.
+    template <typename Read>
+    void readObject(std::string_view key, Read read) {
+        const Json* v = find(key);
+        if (v && !v->is_object()) {
+            error(key, "expected an object, got " + describe(*v));
+        } else if (v) {
+            Reader r = child(*v, pathOf(key));
+            read(r);
+        }
+    }
+
     // A finite number within `range`.
     void readNumber(std::string_view key, float& dst, const limits::Range& range = limits::kFinite) {
         if (const Json* v = find(key)) {
@@ -127,25 +138,24 @@ public:
     void readBool(std::string_view key, bool& dst) { readScalar(key, dst, &Json::is_boolean, "true or false"); }
     void readString(std::string_view key, std::string& dst) { readScalar(key, dst, &Json::is_string, "a string"); }
 
-    template <typename E, std::size_t N>
-    void readEnum(std::string_view key, E& dst, const NameTable<E, N>& table) {
+    // One of `choices`, by name (core/scene/field_table.h): its value into `dst`.
+    void readChoice(std::string_view key, int& dst, std::span<const FieldChoice> choices) {
         const Json* v = find(key);
         if (!v) {
             return;
         }
-        std::string choices;
-        std::vector<std::string_view> names;
-        for (const auto& [value, name] : table) {
-            choices += (choices.empty() ? "" : ", ") + inQuotes(name);
-            names.push_back(name);
-            if (v->is_string() && v->get<std::string>() == name) {
-                dst = value;
+        std::string names;
+        std::vector<std::string_view> list;
+        for (const FieldChoice& c : choices) {
+            names += (names.empty() ? "" : ", ") + inQuotes(c.name);
+            list.push_back(c.name);
+            if (v->is_string() && v->get<std::string>() == c.name) {
+                dst = c.value;
                 return;
             }
         }
         std::string got = v->is_string() ? inQuotes(v->get<std::string>()) : describe(*v);
-        error(key, "expected one of " + choices + ", got " + got +
-                       (v->is_string() ? suggestion(v->get<std::string>(), names) : ""));
+        error(key, "expected one of " + names + ", got " + got + (v->is_string() ? suggestion(v->get<std::string>(), list) : ""));
     }
 
     static std::string describe(const Json& v) {

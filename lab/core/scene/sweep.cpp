@@ -1,9 +1,10 @@
 // sweep.cpp — sweep arguments, their validation by the preset reader, the cells and the grid.
 #include "core/scene/sweep.h"
 
-#include "core/io/suggest.h"
-
 #include "core/io/safe_text.h"
+#include "core/io/suggest.h"
+#include "core/scene/field_path.h"
+#include "core/scene/field_table.h"
 
 #include <nlohmann/json.hpp>
 
@@ -36,52 +37,6 @@ std::string_view trimmed(std::string_view s) {
 // A key or value as it goes into a message: escaped, one line, bounded.
 std::string shown(std::string_view text) { return printable(shortened(text, 80), true); }
 
-// One step of a key's path: an object's member, or an array's element.
-struct Step {
-    std::string name; // empty for an element
-    std::size_t index = 0;
-};
-
-// "lights[0].attenuation[2]" → lights, [0], attenuation, [2]; nullopt unless every name is
-// [a-z0-9_]+ and every index a decimal number.
-std::optional<std::vector<Step>> keySteps(std::string_view key) {
-    std::vector<Step> steps;
-    std::size_t i = 0;
-    auto nameChar = [](char c) { return std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_'; };
-    while (i < key.size()) {
-        std::size_t start = i;
-        while (i < key.size() && nameChar(key[i])) {
-            ++i;
-        }
-        if (i == start) {
-            return std::nullopt;
-        }
-        steps.push_back({std::string(key.substr(start, i - start))});
-        while (i < key.size() && key[i] == '[') {
-            std::size_t close = key.find(']', i);
-            if (close == std::string_view::npos || close == i + 1 || close - i > 4) {
-                return std::nullopt;
-            }
-            std::size_t index = 0;
-            for (std::size_t k = i + 1; k < close; ++k) {
-                if (!std::isdigit(static_cast<unsigned char>(key[k]))) {
-                    return std::nullopt;
-                }
-                index = index * 10 + static_cast<std::size_t>(key[k] - '0');
-            }
-            steps.push_back({"", index});
-            i = close + 1;
-        }
-        if (i < key.size()) {
-            if (key[i] != '.' || i + 1 == key.size()) {
-                return std::nullopt;
-            }
-            ++i;
-        }
-    }
-    return steps;
-}
-
 // Every key a sweep could name in `json` (the leaves, and the triplets whole), for suggestions.
 void leafKeys(const Json& json, const std::string& path, std::vector<std::string>& out) {
     if (json.is_object()) {
@@ -110,7 +65,7 @@ std::string keySuggestion(std::string_view key, const Json& json) {
 
 // The value `key` names in `json`, or nullptr with `error`.
 Json* findKey(Json& json, const std::string& key, std::string& error) {
-    std::optional<std::vector<Step>> steps = keySteps(key);
+    std::optional<std::vector<PathStep>> steps = parseFieldPath(key);
     if (!steps) {
         error = shown(key) + ": not a preset key (a path such as material.shininess or lights[0].attenuation)";
         return nullptr;
@@ -126,19 +81,19 @@ Json* findKey(Json& json, const std::string& key, std::string& error) {
         error = shown(key) + ": changes no render (it is the plots' incident angle); a sweep varies what the renders show";
         return nullptr;
     }
-    if (std::any_of(steps->begin(), steps->end(), [](const Step& s) { return s.name == "orbit"; })) {
+    if (std::any_of(steps->begin(), steps->end(), [](const PathStep& s) { return s.name == "orbit"; })) {
         error = shown(key) + ": changes no render (a moving light is rendered where the preset puts it); a sweep "
                              "varies what the renders show";
         return nullptr;
     }
     Json* at = &json;
-    for (const Step& s : *steps) {
-        if (!s.name.empty() && at->is_object() && at->contains(s.name)) {
+    for (const PathStep& s : *steps) {
+        if (!s.isIndex() && at->is_object() && at->contains(s.name)) {
             at = &(*at)[s.name];
-        } else if (s.name.empty() && at->is_array() && s.index < at->size()) {
+        } else if (s.isIndex() && at->is_array() && s.index < at->size()) {
             at = &(*at)[s.index];
         } else {
-            error = shown(key) + ": unknown key" + (s.name.empty() && at->is_array()
+            error = shown(key) + ": unknown key" + (s.isIndex() && at->is_array()
                                                         ? " (the preset has " + std::to_string(at->size()) + ")"
                                                         : keySuggestion(key, json));
             return nullptr;
@@ -165,27 +120,6 @@ Json valueJson(const std::string& text, const Json& target) {
         return Json::array_t(target.size(), value);
     }
     return value;
-}
-
-// `key` spelt one way (lights[00] is lights[0]), so that two spellings of one key are seen as one;
-// a key that is no path stays as it is (findKey says why).
-std::string canonicalKey(std::string_view key) {
-    std::optional<std::vector<Step>> steps = keySteps(key);
-    if (!steps) {
-        return std::string(key);
-    }
-    std::string out;
-    for (const Step& s : *steps) {
-        out += s.name.empty() ? "[" + std::to_string(s.index) + "]" : (out.empty() ? "" : ".") + s.name;
-    }
-    return out;
-}
-
-bool overlap(std::string_view a, std::string_view b) {
-    if (a.size() > b.size()) {
-        std::swap(a, b);
-    }
-    return b.starts_with(a) && (a.size() == b.size() || b[a.size()] == '.' || b[a.size()] == '[');
 }
 
 } // namespace
@@ -245,8 +179,8 @@ std::optional<SweepCells> sweepCells(const LoadedPreset& base, const std::vector
         return std::nullopt;
     }
     if (axes.size() == 2) {
-        const std::string first = canonicalKey(axes[0].key), second = canonicalKey(axes[1].key);
-        if (overlap(first, second)) {
+        const std::string first = canonicalPath(axes[0].key), second = canonicalPath(axes[1].key);
+        if (overlaps(first, second)) {
             error = first == second ? shown(axes[0].key) + (axes[0].key == axes[1].key ? "" : " and " + shown(axes[1].key)) +
                                           ": the same key twice"
                                     : shown(axes[0].key) + " and " + shown(axes[1].key) + " overlap";
@@ -324,39 +258,65 @@ std::optional<SweepCells> sweepCells(const LoadedPreset& base, const std::vector
 // Keys for the GUI
 //----------------------------------------------------------------------------------------
 
+namespace {
+
+// Where a row's suggestions come in the list: the reflection model's parameters first, then the
+// shading and the lights, the camera last.
+int suggestionRank(FieldGroup group) {
+    switch (group) {
+    case FieldGroup::Brdf:
+    case FieldGroup::Material: return 0;
+    case FieldGroup::Shading: return 1;
+    case FieldGroup::Lights: return 2;
+    default: return 3;
+    }
+}
+
+// A row's suggestions for `path`: its `sweep` text, alternatives split at ';', each optionally
+// "[i]=..." for one part of the field.
+void addSuggestions(const FieldRow& row, const std::string& path, std::vector<SweepKeySuggestion>& keys) {
+    std::string_view text = row.sweep;
+    while (!text.empty()) {
+        std::string_view one = text.substr(0, text.find(';'));
+        text.remove_prefix(std::min(text.size(), one.size() + 1));
+        std::size_t equals = one.starts_with('[') ? one.find('=') : std::string_view::npos;
+        keys.push_back(equals == std::string_view::npos
+                           ? SweepKeySuggestion{path, std::string(one)}
+                           : SweepKeySuggestion{path + std::string(one.substr(0, equals)), std::string(one.substr(equals + 1))});
+    }
+}
+
+} // namespace
+
 std::vector<SweepKeySuggestion> sweepKeySuggestions(const Preset& preset) {
-    // The preset's own BRDF's parameters first, the other BRDF's lobe parameter after the material.
-    const SweepKeySuggestion shininess{"material.shininess", "10,20,30,50"};
-    const SweepKeySuggestion roughness{"cook_torrance.roughness", "0.1,0.2,0.4,0.8"};
-    const bool cookTorrance = preset.brdf == BrdfModel::CookTorrance;
+    // The rows with suggestions that apply to this preset (its BRDF, each light's type), by rank
+    // and then in the table's order; after them the lobe parameter of the other kind of BRDF
+    // (shininess for Cook-Torrance, roughness for the others), for a grid across BRDFs.
+    std::vector<std::pair<int, SweepKeySuggestion>> ranked;
+    for (const FieldRow& row : fieldRows()) {
+        if (row.sweep.empty()) {
+            continue;
+        }
+        std::vector<SweepKeySuggestion> keys;
+        int rank = suggestionRank(row.group);
+        if (!isLightRow(row)) {
+            addSuggestions(row, std::string(row.path), keys);
+            rank += applies(row, preset, nullptr) ? 0 : 10;
+        }
+        for (std::size_t i = 0; isLightRow(row) && i < preset.lights.size(); ++i) {
+            if (applies(row, preset, &preset.lights[i])) {
+                addSuggestions(row, fieldPath(row, static_cast<int>(i)), keys);
+            }
+        }
+        for (SweepKeySuggestion& k : keys) {
+            ranked.emplace_back(rank, std::move(k));
+        }
+    }
+    std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<SweepKeySuggestion> keys;
-    if (cookTorrance) {
-        keys.push_back(roughness);
-        keys.push_back({"cook_torrance.ior", "1.2,1.5,2,3"});
-    } else {
-        keys.push_back(shininess);
+    for (auto& [rank, key] : ranked) {
+        keys.push_back(std::move(key));
     }
-    keys.push_back({"material.specular", "0.2,0.5,1"});
-    keys.push_back({"material.diffuse", "0.2,0.5,0.8"});
-    keys.push_back({"material.ambient", "0,0.2,0.5"});
-    keys.push_back(cookTorrance ? shininess : roughness);
-    keys.push_back({"brdf", "phong,blinn-phong,cook-torrance"});
-    keys.push_back({"shading", "flat,gouraud,phong"});
-    keys.push_back({"ambient_light", "0,0.1,0.3"});
-    for (std::size_t i = 0; i < preset.lights.size(); ++i) {
-        const LightDesc& l = preset.lights[i];
-        std::string light = "lights[" + std::to_string(i) + "].";
-        if (l.type != LightType::Directional) {
-            keys.push_back({light + "attenuation[1]", "0,0.2,0.5,1"});
-            keys.push_back({light + "attenuation[2]", "0,0.1,0.3"});
-        }
-        if (l.type == LightType::Spot) {
-            keys.push_back({light + "cutoff_deg", "10,20,30,45"});
-            keys.push_back({light + "exponent", "1,8,32,128"});
-        }
-        keys.push_back({light + "diffuse", "0.25,0.5,1"});
-    }
-    keys.push_back({"camera.fovy_deg", "20,45,70"});
     return keys;
 }
 
