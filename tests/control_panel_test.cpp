@@ -1,7 +1,7 @@
 // control_panel_test.cpp — the control panel drawn on the CPU (tests/cpu_imgui.h): what it shows
 // for a preset and a list of files.
 #include "cpu_imgui.h"
-#include "ui/panel.h"
+#include "ui/panel/panel.h"
 #include "ui/widget_map.h"
 
 #include <gtest/gtest.h>

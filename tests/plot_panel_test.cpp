@@ -3,7 +3,7 @@
 // makes the window scroll, and every canvas lies inside the window.
 #include "cpu_imgui.h"
 #include "ui/layout.h"
-#include "ui/plots.h"
+#include "ui/plots/plots.h"
 #include "core/plots/energy.h"
 #include "ui/widget_map.h"
 
@@ -210,7 +210,7 @@ TEST(PlotPanel, TheCacheNeverShowsStaleData) {
     }
 }
 
-// The 3D lobe view (ui/plots_3d.h) fits the same windows: its canvases and controls inside the
+// The 3D lobe view (ui/plots/plots_3d.h) fits the same windows: its canvases and controls inside the
 // window, nothing scrolled, the surface and the map drawn (more vertices than the grid has) and
 // ImGui's 16-bit indices never overflowed (under 65536 vertices in the window's list).
 TEST(PlotPanel, TheLobe3dViewFitsItsWindowAtEverySizeAndScale) {

@@ -1,6 +1,6 @@
 // shader_editor_test.cpp — the shader editor's pure helpers: which file and line a compile log
 // line names, and which lines of each tab to mark.
-#include "ui/shader_editor.h"
+#include "ui/tools/shader_editor.h"
 
 #include <gtest/gtest.h>
 

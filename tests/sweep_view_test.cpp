@@ -1,6 +1,6 @@
 // sweep_view_test.cpp — the sweep window shows a preset's own sweep (issue 23), and keeps the
 // user's edits until another preset's sweep comes.
-#include "ui/sweep_view.h"
+#include "ui/tools/sweep_view.h"
 
 #include <gtest/gtest.h>
 

@@ -46,7 +46,7 @@ std::map<int, std::string> viewportShapes() {
             ui::Layout l = ui::computeLayout({s.w, s.h, scale, panel, true});
             for (bool compare : {false, true}) {
                 ui::TextRoom room;
-                room.header = font + 0.8f * font; // one line (ui/viewport.cpp headerText)
+                room.header = font + 0.8f * font; // one line (ui/viewport/viewport.cpp headerText)
                 room.footer = 2.0f * font + 0.8f * font; // a message on two lines
                 room.label = compare ? font + 0.8f * font : 0.0f;
                 if (presenter) { // a caption of about 180 characters: a title and two lines

@@ -551,7 +551,7 @@ FrameOutput App::frame(const FrameInput& in) {
     bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);
     bool scoreOwed = m.scorer.update(m.renderer, ws, events.gesture || events.dragging, m.clock, in.targetFramebuffer);
     bindFramebuffer(in.targetFramebuffer);
-    // Owed a frame: a toast whose time is up, a lagging plots readout (ui/plot_cache.h), the legend, the
+    // Owed a frame: a toast whose time is up, a lagging plots readout (ui/plots/plot_cache.h), the legend, the
     // score. A reduced view is drawn full by the frame that ends the motion; nothing else changes by itself.
     m.interacting = events.gesture || events.dragging || orbiting;
     bool owed = sweepDrawn || legendOwed || scoreOwed || (layout.plots.w > 0 && m.plots.cache.owed());

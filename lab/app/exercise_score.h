@@ -13,8 +13,8 @@
 #include "core/scene/mesh.h"
 #include "core/share/qr_code.h"
 #include "render/renderer.h"
-#include "ui/panel.h"
-#include "ui/share_code.h"
+#include "ui/panel/panel.h"
+#include "ui/tools/share_code.h"
 
 #include <memory>
 #include <optional>

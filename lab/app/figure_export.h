@@ -7,7 +7,7 @@
 #pragma once
 
 #include "app/workspace.h"
-#include "ui/plots.h"
+#include "ui/plots/plots.h"
 
 #include <vector>
 

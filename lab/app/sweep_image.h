@@ -1,4 +1,4 @@
-// sweep_image.h — the sweep view's grid (ui/sweep_view.h), rendered by the app's renderer.
+// sweep_image.h — the sweep view's grid (ui/tools/sweep_view.h), rendered by the app's renderer.
 //
 // While the sweep window is open, the grid is rendered again when what it shows changes: the
 // keys and values, the cell size, the scene (set A as the panel edits it) or the shader programs;
@@ -14,7 +14,7 @@
 #include "core/scene/preset.h"
 #include "render/image_texture.h"
 #include "render/renderer.h"
-#include "ui/sweep_view.h"
+#include "ui/tools/sweep_view.h"
 
 #include <memory>
 #include <optional>

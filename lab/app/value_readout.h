@@ -5,7 +5,7 @@
 #pragma once
 
 #include "app/viewport_cache.h"
-#include "ui/view_legend.h"
+#include "ui/viewport/view_legend.h"
 
 #include <optional>
 #include <utility>

@@ -45,7 +45,7 @@ struct Layout {
     // header or a column at the view's left, whichever leaves the model more room), the footer
     // strip at the bottom (toasts, the frame time) and, in compare mode, each half's label.
     Rect header, caption, footer;
-    Rect legend;                // a value view's legend (ui/view_legend.h), above the footer; empty without
+    Rect legend;                // a value view's legend (ui/viewport/view_legend.h), above the footer; empty without
     Rect captionBand;           // the caption's strip (across the view) or column (down to the footer)
     std::array<Rect, 2> labels;
     bool plotsBelow = false;
@@ -68,7 +68,7 @@ bool isCompact(float width, float height);
 // places out of it.
 Layout computeLayout(const LayoutInput& input);
 
-// What the view's text needs (window units; ui/viewport.h measures it with the font).
+// What the view's text needs (window units; ui/viewport/viewport.h measures it with the font).
 struct TextRoom {
     float header = 0;   // the header strip's height
     float footer = 0;   // the footer strip's height

@@ -11,13 +11,13 @@
 #include "core/plots/probe_lobe.h"
 #include "ui/actions.h"
 #include "ui/layout.h"
-#include "ui/panel.h"
-#include "ui/share_code.h"
-#include "ui/plots.h"
-#include "ui/shader_editor.h"
-#include "ui/small_windows.h"
-#include "ui/sweep_view.h"
-#include "ui/viewport.h"
+#include "ui/panel/panel.h"
+#include "ui/tools/share_code.h"
+#include "ui/plots/plots.h"
+#include "ui/tools/shader_editor.h"
+#include "ui/tools/small_windows.h"
+#include "ui/tools/sweep_view.h"
+#include "ui/viewport/viewport.h"
 
 #include <optional>
 #include <string>

@@ -31,7 +31,7 @@
 #include "platform/headless_gl.h"
 #include "render/renderer.h"
 #include "render/shader.h"
-#include "ui/plots.h"
+#include "ui/plots/plots.h"
 #include "ui/widgets.h"
 
 #include <benchmark/benchmark.h>

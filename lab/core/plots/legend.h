@@ -1,6 +1,6 @@
 // legend.h — a value view's legend: the palette as a bar, the values at its ends and middle, and
 // what the view shows. `lab render --legend` adds it under the render; the GUI draws the same
-// parts with ImGui (ui/viewport.cpp), from legendTicks().
+// parts with ImGui (ui/viewport/viewport.cpp), from legendTicks().
 #pragma once
 
 #include "core/io/image.h"

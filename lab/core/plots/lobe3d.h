@@ -1,5 +1,5 @@
 // lobe3d.h — the reflected intensity over the whole hemisphere of outgoing directions: the data
-// behind the plots window's 3D lobe and its intensity map (ui/plots_3d.cpp).
+// behind the plots window's 3D lobe and its intensity map (ui/plots/plots_3d.cpp).
 //
 // The same light and lighting function as the plane-of-incidence plots (core/plots/plot_data.h): N = (0, 1, 0),
 // a directional light from L = (-sin θi, cos θi, 0) (unit white, or LobeInputs' colours), each sample the Rec. 709 luminance
@@ -12,7 +12,7 @@
 // (91 meridians, the last one repeating the first so that the mesh closes without wrapping); and a
 // draft of it (θo by 5°, φ by 12°: 19 × 31, 7% of the samples) that the 3D lobe draws while its
 // inputs change frame after frame (a drag), whose in-plane meridians are the plot's samples too.
-// What it does not do: draw, project or cache (ui/plots_3d.cpp does; the UI keeps grids by
+// What it does not do: draw, project or cache (ui/plots/plots_3d.cpp does; the UI keeps grids by
 // LobeInputs).
 #pragma once
 

@@ -1,7 +1,7 @@
 // plot_drawing.h — the plots' one drawing vocabulary. The lab's plots on screen (lab/ui) and the
 // figures (figures.h) are built with it as a Figure (figure.h): shapes, text and colours, in
 // window pixels or page pixels. A Figure is painted twice: onto ImGui's draw list for the screen
-// (ui/plot_kit.h's paint) and into SVG and PNG for the figures (figure.h's writers).
+// (ui/plots/plot_kit.h's paint) and into SVG and PNG for the figures (figure.h's writers).
 //
 // Colours are roles (Ink); a Palette gives each its colour: the screen's, light on the plots'
 // near-black background, bright enough for a projector; the print palette, dark on white. Sizes

@@ -3,7 +3,7 @@
 // the rings and axis ticks, and how readout text wraps into lines.
 //
 // Lengths are in window units (ImGui's pixels); nothing here knows ImGui, fonts or the preset.
-// ui/plots.cpp measures its text and rows, asks these functions where things go, and draws.
+// ui/plots/plots.cpp measures its text and rows, asks these functions where things go, and draws.
 // The rule they keep: whatever the area, the plots fit it — a plot that has no room is shown as a
 // tab, never scrolled to.
 #pragma once

@@ -1,7 +1,7 @@
 // point_lobe.cpp — the probed point's lobe, projected onto the model's viewport.
-#include "ui/point_lobe.h"
+#include "ui/viewport/point_lobe.h"
 
-#include "ui/plot_kit.h"
+#include "ui/plots/plot_kit.h"
 
 #include <imgui.h>
 

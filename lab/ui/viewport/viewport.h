@@ -8,7 +8,7 @@
 // viewport. viewOverlay() draws the header (file, shading, BRDF, view mode), the caption, the
 // footer (toast, frame time) and the compare labels, each in its own strip beside the model
 // (ui/layout.h placeText), and the probe's marker on the model, with the point's lobe in "plots at
-// the probe" mode (ui/point_lobe.h). All of it goes under ImGui's
+// the probe" mode (ui/viewport/point_lobe.h). All of it goes under ImGui's
 // windows and dialogs (the background draw list). ImGui only: the model's viewport itself is
 // drawn by the renderer.
 #pragma once
@@ -18,7 +18,7 @@
 #include "core/scene/preset.h"
 #include "core/scene/view_mode.h"
 #include "ui/layout.h"
-#include "ui/view_legend.h"
+#include "ui/viewport/view_legend.h"
 
 #include <optional>
 #include <string>
@@ -71,7 +71,7 @@ struct OverlayModel {
     bool caption = false;                      // the preset's name and description beside the model
     std::optional<glm::vec3> probePoint;       // the probed point (world), marked while the probe is open
     const ProbeLobe* probeLobe = nullptr;      // plots at the probe: the point's lobe, drawn there
-    std::optional<LegendModel> legend;         // a value view's legend (ui/view_legend.h), in its strip
+    std::optional<LegendModel> legend;         // a value view's legend (ui/viewport/view_legend.h), in its strip
     std::optional<float> wipeAt;               // the wipe's divider, while the wipe is on
     bool exercise = false;                     // compare mode's halves are an exercise's attempt and target: their labels say so, not the target's settings
     bool wipeDragged = false;

@@ -1,8 +1,8 @@
 // plots.cpp — the plots window: the views' selector, and the chosen view drawn below it (the
 // Plane view, plots_plane.cpp; the 3D lobe, plots_3d.cpp; Energy, plots_energy.cpp).
-#include "ui/plots.h"
-#include "ui/plots_energy.h"
-#include "ui/plots_plane.h"
+#include "ui/plots/plots.h"
+#include "ui/plots/plots_energy.h"
+#include "ui/plots/plots_plane.h"
 
 #include "ui/widgets.h"
 

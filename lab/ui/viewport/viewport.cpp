@@ -1,13 +1,13 @@
 // viewport.cpp — gestures, light markers and overlay text of the model's viewport.
-#include "ui/viewport.h"
+#include "ui/viewport/viewport.h"
 
 #include "core/io/safe_text.h"
 #include "core/lighting/lighting.h"
 #include "core/scene/camera.h"
 #include "core/scene/limits.h"
 #include "core/scene/preset_choices.h"
-#include "ui/point_lobe.h"
-#include "ui/view_legend.h"
+#include "ui/viewport/point_lobe.h"
+#include "ui/viewport/view_legend.h"
 #include "ui/widgets.h"
 
 #include <imgui.h>

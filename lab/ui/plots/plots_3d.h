@@ -15,7 +15,7 @@
 // the projected, sorted mesh once per view (inputs, component, scale, camera and canvas), both
 // kept in Lobe3dState's cache with the peak: a frame in which nothing changed copies the kept
 // mesh (the surface and the map are 8,281 vertices each: ImGui's 16-bit indices have room). While
-// the inputs change (a drag: ui/plot_cache.h's ChangeWatch), the view draws the draft grid
+// the inputs change (a drag: ui/plots/plot_cache.h's ChangeWatch), the view draws the draft grid
 // (kLobeDraftGrid, 589 samples) and its peak, the numbers muted, and owes the app a frame: the first
 // frame after the change draws the full grid. What it does not do: call GL
 // (ImGui draw lists only), or scroll (it fits the region it is given).
@@ -25,7 +25,7 @@
 #include "core/plots/plot_data.h"
 #include "core/plots/probe_lobe.h"
 #include "core/scene/preset.h"
-#include "ui/plot_cache.h"
+#include "ui/plots/plot_cache.h"
 
 #include <imgui.h>
 
@@ -75,7 +75,7 @@ struct Lobe3dState {
 };
 
 // Draws the 3D lobe view into the current window's remaining content region; at the probed point
-// `point` when given (plots at the probe, ui/plots.h: its θi, arriving light and real V).
+// `point` when given (plots at the probe, ui/plots/plots.h: its θi, arriving light and real V).
 void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& settings, const ProbeLobe* point = nullptr);
 
 } // namespace lab::ui

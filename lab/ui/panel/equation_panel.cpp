@@ -1,5 +1,5 @@
 // equation_panel.cpp — the equation with a button for each factor.
-#include "ui/equation_panel.h"
+#include "ui/panel/equation_panel.h"
 
 #include "ui/widget_map.h"
 #include "ui/widgets.h"

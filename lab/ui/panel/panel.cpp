@@ -1,5 +1,5 @@
 // panel.cpp — the control panel's sections.
-#include "ui/panel.h"
+#include "ui/panel/panel.h"
 
 #include "core/io/safe_text.h"
 #include "core/lighting/lighting.h"
@@ -8,9 +8,9 @@
 #include "core/scene/field_path.h"
 #include "core/scene/field_table.h"
 #include "core/scene/preset_choices.h"
-#include "ui/equation_panel.h"
-#include "ui/exercise_panel.h"
-#include "ui/field_widget.h"
+#include "ui/panel/equation_panel.h"
+#include "ui/panel/exercise_panel.h"
+#include "ui/panel/field_widget.h"
 #include "ui/widgets.h"
 
 #include <glm/glm.hpp>

@@ -14,7 +14,7 @@
 // never scrolls.
 #pragma once
 
-#include "ui/plots.h"
+#include "ui/plots/plot_settings.h"
 
 namespace lab::ui {
 

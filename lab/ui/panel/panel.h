@@ -9,6 +9,7 @@
 #include "core/scene/preset.h"
 #include "core/scene/view_mode.h"
 #include "ui/actions.h"
+#include "ui/panel/exercise_panel.h"
 #include "ui/layout.h"
 
 #include <filesystem>
@@ -16,27 +17,6 @@
 #include <vector>
 
 namespace lab::ui {
-
-// An exercise being solved (core/exercise/exercise.h), as the panel shows it: only its open
-// fields can be edited, and its own section says what to do and how close the attempt is.
-struct ExerciseView {
-    std::string title, instructions;
-    std::vector<std::string> hints; // those shown so far
-    int hintsLeft = 0;
-    std::vector<std::string> open; // JSON paths (core/exercise/preset_fields.h)
-    std::string score;             // "87% of the model's pixels match ...", empty before the first score
-    double closeness = 0.0;        // 0..1
-    bool solved = false;
-};
-
-// "Make exercise": the author's draft, edited in place (a checkbox beside every field opens it).
-struct ExerciseDraftView {
-    std::vector<std::string>* open = nullptr;
-    std::string* title = nullptr;
-    std::string* instructions = nullptr;
-    std::string* hints = nullptr;
-    std::string problem; // why the draft is not an exercise yet (the first reason), empty when it is
-};
 
 // What the panel shows about the workspace (read-only for the panel).
 struct PanelInfo {

@@ -1,5 +1,5 @@
 // sweep_view.cpp — the sweep window: two rows of key and values, the cell size, Save PNG, the grid.
-#include "ui/sweep_view.h"
+#include "ui/tools/sweep_view.h"
 
 #include "core/io/safe_text.h"
 #include "core/scene/sweep.h"

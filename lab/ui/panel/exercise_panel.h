@@ -1,4 +1,4 @@
-// exercise_panel.h — the control panel's exercise parts (ui/panel.cpp calls them).
+// exercise_panel.h — the control panel's exercise parts (ui/panel/panel.cpp calls them).
 //
 // An exercise being solved shows only its open fields (core/exercise/preset_fields.h paths; the
 // widgets are named by the same paths) and a section with its instructions, score, hints, start
@@ -6,7 +6,6 @@
 #pragma once
 
 #include "ui/actions.h"
-#include "ui/panel.h"
 
 #include <filesystem>
 #include <initializer_list>
@@ -14,6 +13,27 @@
 #include <vector>
 
 namespace lab::ui {
+
+// An exercise being solved (core/exercise/exercise.h), as the panel shows it: only its open
+// fields can be edited, and its own section says what to do and how close the attempt is.
+struct ExerciseView {
+    std::string title, instructions;
+    std::vector<std::string> hints; // those shown so far
+    int hintsLeft = 0;
+    std::vector<std::string> open; // JSON paths (core/exercise/preset_fields.h)
+    std::string score;             // "87% of the model's pixels match ...", empty before the first score
+    double closeness = 0.0;        // 0..1
+    bool solved = false;
+};
+
+// "Make exercise": the author's draft, edited in place (a checkbox beside every field opens it).
+struct ExerciseDraftView {
+    std::vector<std::string>* open = nullptr;
+    std::string* title = nullptr;
+    std::string* instructions = nullptr;
+    std::string* hints = nullptr;
+    std::string problem; // why the draft is not an exercise yet (the first reason), empty when it is
+};
 
 // Which fields the panel draws: in an exercise being solved only its open fields (and the always
 // free); while one is being made, every field with a checkbox before it that opens it to students;

@@ -1,13 +1,13 @@
 // plots_plane.cpp — the plots window's Plane view: the lobe, the incident angles overlaid, Att(d).
 //
 // One frame: sample the lighting model (core/plots/plot_data.h), or find the samples and curves of an
-// earlier frame with the same inputs (ui/plot_cache.h); write the readouts as tokens and measure
+// earlier frame with the same inputs (ui/plots/plot_cache.h); write the readouts as tokens and measure
 // them, ask core/plots/plot_layout.h where each plot goes in the room left in the window, then draw
 // each plot's block there — readout strip, canvas, controls — with the cursor set explicitly, so
 // nothing reaches past the region and the window never scrolls.
-#include "ui/plots_plane.h"
-#include "ui/plot_kit.h"
-#include "ui/plots_probe.h"
+#include "ui/plots/plots_plane.h"
+#include "ui/plots/plot_kit.h"
+#include "ui/plots/plots_probe.h"
 
 #include "ui/widgets.h"
 
@@ -32,7 +32,7 @@ namespace lab::ui {
 
 namespace {
 
-using namespace plotkit; // the drawing kit (ui/plot_kit.h)
+using namespace plotkit; // the drawing kit (ui/plots/plot_kit.h)
 
 //----------------------------------------------------------------------------------------
 // The plots' data, computed once a frame before anything is measured or drawn

@@ -1,5 +1,5 @@
 // plots_probe.cpp — the readouts and greyed sliders of plots at the probe.
-#include "ui/plots_probe.h"
+#include "ui/plots/plots_probe.h"
 
 #include "core/plots/lobe3d.h"
 #include "ui/widgets.h"

@@ -8,8 +8,8 @@
 // colour bar) goes straight to the draw list, in the same palette.
 #pragma once
 
-#include "ui/plot_cache.h"
-#include "ui/plots.h"
+#include "ui/plots/plot_cache.h"
+#include "ui/plots/plot_settings.h"
 
 #include "core/plots/plot_drawing.h"
 #include "core/plots/plot_layout.h"

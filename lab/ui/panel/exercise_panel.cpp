@@ -1,5 +1,5 @@
 // exercise_panel.cpp — the panel's exercise parts: which fields show, the Exercise section, Make exercise.
-#include "ui/exercise_panel.h"
+#include "ui/panel/exercise_panel.h"
 
 #include "core/exercise/preset_fields.h"
 #include "ui/widget_map.h"

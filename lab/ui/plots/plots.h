@@ -1,5 +1,5 @@
 // plots.h — the live plots beside the model, drawn every frame from the lighting functions (the
-// samples and curves kept from frame to frame while their inputs stay the same: ui/plot_cache.h).
+// samples and curves kept from frame to frame while their inputs stay the same: ui/plots/plot_cache.h).
 //
 //   * the reflection lobe in the plane of incidence for the preset's incident angle: diffuse,
 //     specular and total, with N, L, R, V (and H for Blinn-Phong and Cook-Torrance) as arrows;
@@ -25,36 +25,12 @@
 
 #include "core/lighting/probe.h"
 #include "core/plots/probe_lobe.h"
-#include "core/plots/plot_data.h"
-#include "ui/plot_cache.h"
-#include "ui/plots_3d.h"
-
-#include <array>
-#include <optional>
+#include "ui/plots/plot_settings.h"
 
 namespace lab::ui {
 
-// The plots window's views, one tab each in this order (plots.cpp's table names and draws them).
-enum class PlotView { Plane, Lobe3d, Energy };
-
-struct PlotSettings {
-    PlotView view = PlotView::Plane;
-    int shownView = -1; // the view whose tab was open last frame (-1: none yet)
-    RadialScale scale = RadialScale::Linear;
-    bool cartesian = false;
-    bool lockScale = false;                    // the outer circle stays where it was when locked
-    float lobeScale = 0.0f, overlayScale = 0.0f; // the outer circles' intensities (held while locked)
-    float viewerDeg = 20.0f;                   // V in the lobe plot
-    glm::vec3 overlayDeg{60.0f, 25.0f, 10.0f}; // the overlaid incident angles
-    std::array<ChangeWatch, 3> overlayChanges; // the overlay draws drafts while its lobes change
-    int attenuationLight = 0;
-    int dragging = 0; // 0 none, 1 L, 2 V
-    PlotCache cache;  // samples and curves of earlier frames, found again by their inputs
-    Lobe3dState lobe3d; // the 3D lobe's camera, component and kept meshes (ui/plots_3d.h)
-};
-
 // Draws the view selector and the chosen view into the current ImGui window's remaining content
-// region: "Plane" (the plots below), "3D lobe" (ui/plots_3d.h) or "Energy" (ui/plots_energy.h).
+// region: "Plane" (the plots below), "3D lobe" (ui/plots/plots_3d.h) or "Energy" (ui/plots/plots_energy.h).
 // Dragging L edits a.plotIncidentDeg (part of the preset, so it is undoable and saved). `b` is the
 // compare set, overlaid when given. The probe's vectors are drawn only when `probe` is given;
 // `point`, the probed point's lobe, turns plots at the probe on.

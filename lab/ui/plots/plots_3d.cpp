@@ -5,9 +5,8 @@
 // by side in a wide region and stacked in a tall one. The meshes (the surface projected by the
 // orbit camera and sorted far to near, the map's disc, B's wireframe) are made once per view and
 // copied into the draw list each frame; the grid lines, arrows and labels are drawn on top.
-#include "ui/plots_3d.h"
-#include "ui/plot_kit.h"
-#include "ui/plots.h"
+#include "ui/plots/plots_3d.h"
+#include "ui/plots/plot_kit.h"
 #include "ui/widgets.h"
 
 #include "core/lighting/lighting.h"

@@ -5,7 +5,7 @@
 // where the gutter cannot follow it. So each tab is one scrolling child window holding the
 // gutter and a text box tall enough for all of its text: the text box never scrolls, the child
 // scrolls both, and the child follows the text cursor when it moves or the text changes.
-#include "ui/shader_editor.h"
+#include "ui/tools/shader_editor.h"
 
 #include "ui/widgets.h"
 

@@ -1,5 +1,5 @@
 // small_windows.cpp — probe and help windows.
-#include "ui/small_windows.h"
+#include "ui/tools/small_windows.h"
 
 #include "ui/widgets.h"
 

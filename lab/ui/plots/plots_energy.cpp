@@ -5,8 +5,8 @@
 // the readout as tokens measured and wrapped into a strip, the canvas below it taking the rest
 // of the region. x is θi from 0° to 90° (the curve ends at 89°: at 90° no light arrives), y the
 // albedo from 0 to a nice value at or above both 1 and the largest total.
-#include "ui/plots_energy.h"
-#include "ui/plot_kit.h"
+#include "ui/plots/plots_energy.h"
+#include "ui/plots/plot_kit.h"
 #include "ui/widgets.h"
 
 #include "core/lighting/lighting.h"

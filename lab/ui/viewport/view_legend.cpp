@@ -1,5 +1,5 @@
 // view_legend.cpp — the legend strip and the wipe's divider, drawn with ImGui's draw list.
-#include "ui/view_legend.h"
+#include "ui/viewport/view_legend.h"
 
 #include "core/lighting/lighting.h"
 #include "core/plots/legend.h"

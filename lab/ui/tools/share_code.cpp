@@ -1,5 +1,5 @@
 // share_code.cpp — the QR code window.
-#include "ui/share_code.h"
+#include "ui/tools/share_code.h"
 
 #include "ui/widget_map.h"
 #include "ui/widgets.h"

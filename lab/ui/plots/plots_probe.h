@@ -1,4 +1,4 @@
-// plots_probe.h — the Plane view's words and controls for plots at the probe (ui/plots.h).
+// plots_probe.h — the Plane view's words and controls for plots at the probe (ui/plots/plots.h).
 //
 // At a probed point the lobe plot says where it is: which light, θi, what of that light arrives
 // (Att and the spot factor), where V lies — in words how far out of the plane of incidence, when
@@ -9,7 +9,7 @@
 #pragma once
 
 #include "core/plots/probe_lobe.h"
-#include "ui/plot_kit.h"
+#include "ui/plots/plot_kit.h"
 
 namespace lab::ui {
 

@@ -1,5 +1,5 @@
 // field_widget.cpp — a field's widget from its row (field_widget.h).
-#include "ui/field_widget.h"
+#include "ui/panel/field_widget.h"
 
 #include "ui/widgets.h"
 

@@ -6,18 +6,18 @@
 //   * the lobes at three incident angles overlaid, each in its colour;
 //   * Att(d) of a light, with the model's distance marked.
 // One frame: sample the lighting model (core/plots/plot_data.h), or find the samples and curves
-// of an earlier frame with the same inputs (ui/plot_cache.h); write the readouts as tokens and
+// of an earlier frame with the same inputs (ui/plots/plot_cache.h); write the readouts as tokens and
 // measure them, ask core/plots/plot_layout.h where each plot goes in the room left in the window,
 // then draw each plot's block there — readout strip, canvas, controls — with the cursor set
 // explicitly, so nothing reaches past the region and the window never scrolls.
 #pragma once
 
-#include "ui/plots.h"
+#include "ui/plots/plot_settings.h"
 
 namespace lab::ui {
 
 // Draws the Plane view into the current window's remaining content region; at the probed point
-// `point` when given (plots at the probe, ui/plots.h).
+// `point` when given (plots at the probe, ui/plots/plots.h).
 void planeView(Preset& a, const Preset* b, PlotSettings& settings, const ProbeResult* probe, const ProbeLobe* point);
 
 } // namespace lab::ui

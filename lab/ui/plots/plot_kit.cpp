@@ -1,6 +1,6 @@
 // plot_kit.cpp — the screen's style, the painter of Figures onto ImGui's draw list, readouts and
 // canvases.
-#include "ui/plot_kit.h"
+#include "ui/plots/plot_kit.h"
 
 #include "ui/widgets.h"
 

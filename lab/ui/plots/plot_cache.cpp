@@ -1,5 +1,5 @@
 // plot_cache.cpp — the plots' samples and curves, computed when their inputs are new.
-#include "ui/plot_cache.h"
+#include "ui/plots/plot_cache.h"
 
 #include "core/plots/plot_layout.h"
 

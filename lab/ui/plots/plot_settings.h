@@ -1,0 +1,34 @@
+// plot_settings.h — what the plots window keeps between frames: the tab shown, the radial scale,
+// the dragged vectors, the overlaid angles, the plot cache and the 3D lobe's state. Every plot tab
+// (plots_plane, plots_3d, plots_energy) and the plot kit read it; plots.h draws the window.
+#pragma once
+
+#include "core/plots/plot_data.h"
+#include "ui/plots/plot_cache.h"
+#include "ui/plots/plots_3d.h"
+
+#include <array>
+#include <optional>
+
+namespace lab::ui {
+
+// The plots window's views, one tab each in this order (plots.cpp's table names and draws them).
+enum class PlotView { Plane, Lobe3d, Energy };
+
+struct PlotSettings {
+    PlotView view = PlotView::Plane;
+    int shownView = -1; // the view whose tab was open last frame (-1: none yet)
+    RadialScale scale = RadialScale::Linear;
+    bool cartesian = false;
+    bool lockScale = false;                    // the outer circle stays where it was when locked
+    float lobeScale = 0.0f, overlayScale = 0.0f; // the outer circles' intensities (held while locked)
+    float viewerDeg = 20.0f;                   // V in the lobe plot
+    glm::vec3 overlayDeg{60.0f, 25.0f, 10.0f}; // the overlaid incident angles
+    std::array<ChangeWatch, 3> overlayChanges; // the overlay draws drafts while its lobes change
+    int attenuationLight = 0;
+    int dragging = 0; // 0 none, 1 L, 2 V
+    PlotCache cache;  // samples and curves of earlier frames, found again by their inputs
+    Lobe3dState lobe3d; // the 3D lobe's camera, component and kept meshes (ui/plots/plots_3d.h)
+};
+
+} // namespace lab::ui
