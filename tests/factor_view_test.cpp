@@ -2,6 +2,7 @@
 // what the shaders write for each factor is equationFactor() of lighting.glsl, within one level in
 // grey; the factors compose to the specular term; gouraud-error is the difference of the Phong- and
 // Gouraud-shaded renders; the automatic range spans the values on the model.
+#include "core/scene/transforms.h"
 #include "core/lighting/lighting.h"
 #include "core/scene/view_mode.h"
 #include "gl_suite.h"

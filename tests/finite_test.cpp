@@ -9,6 +9,7 @@
 #include "gl_suite.h"
 #include "probes.h"
 
+#include "core/scene/transforms.h"
 #include "core/lighting/lighting.h"
 #include "core/plots/plot_data.h"
 #include "core/scene/limits.h"

@@ -2,6 +2,7 @@
 //
 // The expected numbers come from the formulas in the README, evaluated independently in double
 // precision (a few lines of Python, noted beside each), not from this code.
+#include "core/scene/transforms.h"
 #include "core/lighting/lighting.h"
 
 #include <gtest/gtest.h>

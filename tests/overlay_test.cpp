@@ -4,6 +4,7 @@
 //
 // Renders with headless EGL (llvmpipe) at a small size; where a line is is computed in C++ from
 // the same transforms (computeTransforms), so the tests need no golden image.
+#include "core/scene/transforms.h"
 #include "core/lighting/lighting.h"
 #include "gl_suite.h"
 #include "render/overlay.h"

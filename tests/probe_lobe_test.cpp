@@ -1,4 +1,5 @@
 // probe_lobe_test.cpp — "plots at the probe": a probed point's θi, incoming light and V, in the plots' frame.
+#include "core/scene/transforms.h"
 #include "core/plots/probe_lobe.h"
 
 #include "core/plots/lobe3d.h"

@@ -1,4 +1,5 @@
 // probe_test.cpp — the pixel probe hits the right surface point and reports the model's terms.
+#include "core/scene/transforms.h"
 #include "core/lighting/probe.h"
 
 #include <gtest/gtest.h>

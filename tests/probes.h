@@ -8,6 +8,7 @@
 // through the same matrices.
 #pragma once
 
+#include "core/scene/transforms.h"
 #include "core/io/image.h"
 #include "core/lighting/lighting.h"
 #include "core/scene/mesh.h"

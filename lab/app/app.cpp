@@ -2,6 +2,7 @@
 #include "app/app.h"
 
 #include "app/exercise_score.h"
+#include "app/share_code.h"
 #include "app/figure_export.h"
 #include "app/frame_speed.h"
 #include "app/orbit_clock.h"
@@ -18,7 +19,6 @@
 #include "ui/screen.h"
 #include "ui/widget_map.h"
 
-#include <imgui.h>
 
 #include <algorithm>
 #include <array>
@@ -143,7 +143,7 @@ struct App::Impl {
     bool updateViewports(const ui::Layout& layout, const FrameInput& in, float scale);
     std::vector<std::pair<const CachedViewport*, Viewport>> shown; // this frame's renders and where they go
     void screenshot(const ui::Layout& layout, const FrameInput& in);
-    bool updateReadout(const FrameInput& in, const std::optional<ui::LegendModel>& shownLegend);
+    bool updateReadout(const FrameInput& in, const ui::ScreenEvents& events, const std::optional<ui::LegendModel>& shownLegend);
     void timeLastFrame(const FrameInput& in);
     std::map<int, float> captionHeights; // the caption's tallest strip at each width, while the view keeps its size
     std::array<float, 3> captionView{};  // that size and the font's
@@ -401,11 +401,11 @@ bool App::Impl::updateViewports(const ui::Layout& layout, const FrameInput& in, 
 
 // After the renders: the value under the pointer (app/value_readout.h). True when the legend this
 // frame showed (`shownLegend`, made before the render) is owed a frame: the range or value changed.
-bool App::Impl::updateReadout(const FrameInput& in, const std::optional<ui::LegendModel>& shownLegend) {
+bool App::Impl::updateReadout(const FrameInput& in, const ui::ScreenEvents& events,
+                              const std::optional<ui::LegendModel>& shownLegend) {
     if (!shown.empty()) {
-        ImVec2 pointer = ImGui::GetIO().MousePos;
         readout.update(renderer, renders[0], shown[0].second, static_cast<float>(in.framebufferWidth) / in.windowWidth,
-                       in.windowHeight, pointer.x, pointer.y, workspace.view);
+                       in.windowHeight, events.pointerX, events.pointerY, workspace.view);
     }
     bool rangeChanged = shownLegend && shownLegend->note.empty() && shownLegend->range != renders[0].range();
     return readout.takeChanged() || rangeChanged;
@@ -547,7 +547,7 @@ FrameOutput App::frame(const FrameInput& in) {
     // A moving light is drawn within the frame budget as a drag is (ViewportResolution).
     float scale = m.resolution.update(events.dragging || orbiting, in.lastFrameSeconds, m.options.frameBudgetSeconds);
     m.viewportDrawn = m.updateViewports(layout, in, scale);
-    bool legendOwed = m.updateReadout(in, model.overlay.legend);
+    bool legendOwed = m.updateReadout(in, events, model.overlay.legend);
     bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);
     bool scoreOwed = m.scorer.update(m.renderer, ws, events.gesture || events.dragging, m.clock, in.targetFramebuffer);
     bindFramebuffer(in.targetFramebuffer);

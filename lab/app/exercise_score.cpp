@@ -82,37 +82,4 @@ ui::ExerciseDraftView draftViewOf(Workspace& workspace) {
     return {&draft.open, &draft.title, &draft.instructions, &draft.hints, problem};
 }
 
-const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& workspace) {
-    const std::optional<ExerciseSession>& exercise = workspace.exercise();
-    model_.title = exercise ? "Exercise: " + printable(exercise->exercise.title, true)
-                            : printable(workspace.document().displayName(), true) +
-                                  (workspace.document().dirty() ? " (modified)" : "");
-    std::string url = base.empty() ? std::string{} : shareUrl(base, workspace.link());
-    if (made_ && url == url_) {
-        return model_;
-    }
-    made_ = true;
-    url_ = url;
-    code_.reset();
-    model_.code = nullptr;
-    model_.link = url;
-    model_.problem.clear();
-    if (url.empty()) {
-        model_.problem = "The QR code needs the course page's address. Start the lab once with\n"
-                         "  lab --share-base https://your-course.example.org/lab/\n"
-                         "(it is remembered), or use the page's Copy link.";
-        return model_;
-    }
-    std::string error;
-    code_ = encodeQr(url, error);
-    if (code_) {
-        model_.code = &*code_;
-    } else {
-        model_.problem = "This scene's link is too long for a QR code that can be read across a room: " + error +
-                         ". Shorten the description or the exercise's text, or publish the exercise with the course "
-                         "page and link it by name (lab share prints such links).";
-    }
-    return model_;
-}
-
 } // namespace lab

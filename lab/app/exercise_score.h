@@ -1,5 +1,5 @@
-// exercise_score.h — what the lab shows of exercises: the live "how close" of the attempt, the
-// panel's view of the exercise and of a draft, and the scene's link as a QR code (Q).
+// exercise_score.h — what the lab shows of exercises: the live "how close" of the attempt, and the
+// panel's view of the exercise and of a draft. The scene's link as a QR code is share_code.h.
 //
 // The score: the attempt and the target rendered as `lab exercise check` renders them (256 x 256,
 // the target's camera, the lit view) and compared (core/exercise/exercise.h scoreExercise). The
@@ -11,10 +11,8 @@
 #include "app/workspace.h"
 #include "core/exercise/exercise.h"
 #include "core/scene/mesh.h"
-#include "core/share/qr_code.h"
 #include "render/renderer.h"
 #include "ui/panel/panel.h"
-#include "ui/tools/share_code.h"
 
 #include <memory>
 #include <optional>
@@ -43,19 +41,5 @@ private:
 ui::ExerciseView exerciseViewOf(const ExerciseSession& session, const std::optional<ExerciseScore>& score);
 // The panel's view of the workspace's draft (draft() must hold one), with why it is not an exercise yet.
 ui::ExerciseDraftView draftViewOf(Workspace& workspace);
-
-// The scene's link on the course page (AppOptions::shareBase) as a QR code, made again only when
-// the link changes; or why there is none (no address, a link too long for kMaxQrVersion).
-class ShareCode {
-public:
-    bool shown = false;
-    const ui::ShareCodeModel& update(const std::string& base, Workspace& workspace);
-
-private:
-    std::string url_;
-    bool made_ = false;
-    std::optional<QrCode> code_;
-    ui::ShareCodeModel model_;
-};
 
 } // namespace lab

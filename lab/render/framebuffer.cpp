@@ -1,10 +1,20 @@
-// framebuffer.cpp — renderer.h's offscreen targets: Framebuffer (a colour and depth renderbuffer
-// pair, read back as RGB) and ViewportTarget (the viewport cache's texture-backed copy of a view).
-#include "render/renderer.h"
+// framebuffer.cpp — framebuffer.h: binding and clearing, Framebuffer (a colour and depth
+// renderbuffer pair, read back as RGB) and ViewportTarget (the viewport cache's texture-backed copy of a view).
+#include "render/framebuffer.h"
+
 
 #include "render/gl.h"
 
 namespace lab {
+
+void bindFramebuffer(unsigned id) { glBindFramebuffer(GL_FRAMEBUFFER, id); }
+
+void clearFramebuffer(const glm::vec3& color, int width, int height) {
+    glViewport(0, 0, width, height);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(color.r, color.g, color.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
 
 //----------------------------------------------------------------------------------------
 // Framebuffer

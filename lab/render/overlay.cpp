@@ -1,6 +1,7 @@
 // overlay.cpp — the wireframe's and the normals' line buffers, and their draw.
 #include "render/overlay.h"
 
+#include "core/scene/transforms.h"
 #include "core/lighting/lighting.h"
 
 #include <glm/geometric.hpp>

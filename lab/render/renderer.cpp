@@ -1,6 +1,7 @@
 // renderer.cpp — programs, uniforms, mesh buffers and the draw.
 #include "render/renderer.h"
 
+#include "core/scene/transforms.h"
 #include "core/io/image.h"
 #include "render/overlay.h"
 
@@ -410,14 +411,6 @@ void viewportPart(const Viewport& viewport, float fromX, float toX) {
     glDisable(GL_BLEND);
 }
 
-void bindFramebuffer(unsigned id) { glBindFramebuffer(GL_FRAMEBUFFER, id); }
-
-void clearFramebuffer(const glm::vec3& color, int width, int height) {
-    glViewport(0, 0, width, height);
-    glDisable(GL_SCISSOR_TEST);
-    glClearColor(color.r, color.g, color.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-}
 
 //----------------------------------------------------------------------------------------
 // GpuMesh

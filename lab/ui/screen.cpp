@@ -128,6 +128,8 @@ float uiScale() { return ImGui::GetFontSize() / 13.0f; }
 ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     ScreenEvents events;
     events.typing = ImGui::GetIO().WantTextInput;
+    events.pointerX = ImGui::GetIO().MousePos.x;
+    events.pointerY = ImGui::GetIO().MousePos.y;
     panels(layout, m, events);
     widgets().set("view", layout.viewport);
     widgets().set("view.area", layout.view);

@@ -59,6 +59,7 @@ struct ScreenEvents {
     bool gesture = false; // a widget or a view gesture is still active (one undo step when it ends)
     bool dragging = false; // ... with a mouse button held: a slider, a colour, the camera, a light
     bool typing = false;  // a text field has the keyboard: plain-key shortcuts are off
+    float pointerX = 0, pointerY = 0; // where the pointer is, in window units (the value readout's)
 };
 
 // The UI's size relative to ImGui's 13-pixel default font (presenter mode makes it larger).

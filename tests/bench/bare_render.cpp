@@ -3,6 +3,7 @@
 // No argument parsing beyond the output path, no preset file, no validation: just the work.
 //
 //   bare_render OUT.png
+#include "core/scene/transforms.h"
 #include "core/lighting/lighting.h"
 #include "core/scene/mesh.h"
 #include "render/gl.h"

@@ -23,6 +23,7 @@
 #include "../../tools/glb_writer.h"
 #include "../test_files.h"
 #include "app/app.h"
+#include "core/scene/transforms.h"
 #include "core/gltf/reader.h"
 #include "core/io/file_io.h"
 #include "core/lighting/lighting.h"

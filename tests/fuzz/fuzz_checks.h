@@ -9,6 +9,7 @@
 
 #include "cli/command_line.h"
 #include "cli/commands.h"
+#include "core/scene/transforms.h"
 #include "core/exercise/exercise.h"
 #include "core/gltf/reader.h"
 #include "core/io/file_io.h"

@@ -2,7 +2,7 @@
 #include "core/gltf/model_loader.h"
 
 #include "core/gltf/reader.h"
-#include "core/lighting/lighting.h"
+#include "core/scene/transforms.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -1,10 +1,10 @@
-// lighting.h — the C++ face of the lighting model, and the scene transforms.
+// lighting.h — the C++ face of the lighting model.
 //
 // The equations are not written here: lab::glsl is shaders/lighting_api.glsl and
 // shaders/lighting.glsl compiled as C++ with GLM, so the plots, `lab plot` and the tests run the
-// very code the GPU runs. This header adds what both faces need from a Preset: the matrices
-// (model, view, projection, normal matrix), the packing of material, BRDF and lights into the
-// structs the shaders take as uniforms, and those structs' fields as rows (ShaderField). The
+// very code the GPU runs. This header adds what both faces need from a Preset: the packing
+// of material, BRDF and lights into the structs the shaders take as uniforms (the matrices are
+// core/scene/transforms.h), and those structs' fields as rows (ShaderField). The
 // renderer uploads exactly what packShading returns, by those rows.
 #pragma once
 
@@ -59,23 +59,6 @@ extern const ShaderStruct kMaterialUniform, kBrdfUniform, kTermsUniform, kLightU
 // Every field of `a` and `b` equal by `shape`'s rows (floats exactly: a NaN is never equal).
 bool fieldsEqual(const void* a, const void* b, const ShaderStruct& shape);
 bool operator==(const Surface& x, const Surface& y);
-
-struct Transforms {
-    glm::mat4 model;
-    glm::mat4 view;
-    glm::mat4 projection;
-    glm::mat4 modelView;
-    glm::mat3 normalMatrix; // per the preset's normal_matrix mode
-};
-
-// Model = T·Rz·Ry·Rx·S; view = lookAt; projection = perspective(vertical field of view, aspect, near,
-// far), where the camera's fovy_deg is the field of view of the view's narrower side: vertical when
-// the view is at least as wide as tall (aspect = width / height >= 1), horizontal when it is taller
-// than wide (Blender's sensor fit "auto"), so what a camera frames stays whole in any shape.
-glm::mat4 modelMatrix(const Model& model);
-float verticalFovRadians(const Camera& camera, float aspect);
-glm::mat4 projectionMatrix(const Camera& camera, float aspect);
-Transforms computeTransforms(const Preset& preset, float aspect);
 
 // The preset's material, BRDF and term switches, as the shaders take them.
 Surface packSurface(const Preset& preset);

@@ -1,4 +1,5 @@
 // probe.cpp — ray cast and per-term evaluation.
+#include "core/scene/transforms.h"
 #include "core/lighting/probe.h"
 
 #include <limits>

@@ -1,4 +1,5 @@
 // probe_lobe.cpp — a probed point's N, L and V in the plots' frame.
+#include "core/scene/transforms.h"
 #include "core/plots/probe_lobe.h"
 
 #include "core/plots/lobe3d.h"

@@ -1,6 +1,8 @@
 // point_lobe.cpp — the probed point's lobe, projected onto the model's viewport.
 #include "ui/viewport/point_lobe.h"
 
+#include "core/scene/transforms.h"
+
 #include "ui/plots/plot_kit.h"
 
 #include <imgui.h>

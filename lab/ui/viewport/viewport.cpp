@@ -1,6 +1,7 @@
 // viewport.cpp — gestures, light markers and overlay text of the model's viewport.
 #include "ui/viewport/viewport.h"
 
+#include "core/scene/transforms.h"
 #include "core/io/safe_text.h"
 #include "core/lighting/lighting.h"
 #include "core/scene/camera.h"
