@@ -23,7 +23,7 @@ struct Drawn {
 Drawn drawPanel(Preset& preset, const std::vector<std::filesystem::path>& files) {
     CpuImGui imgui(1.0f);
     ImGui::GetIO().DisplaySize = ImVec2(400, 1600);
-    ViewSettings view;
+    DisplaySettings view;
     ui::PanelInfo info;
     info.presetFiles = &files;
     info.documentName = "x.json";

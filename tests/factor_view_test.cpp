@@ -201,7 +201,7 @@ INSTANTIATE_TEST_SUITE_P(EveryBrdf, FactorViews, testing::ValuesIn(test::brdfVar
 
 class ViewRenders : public GlSuite<testing::Test, OffscreenRenderer> {};
 
-Image renderAs(OffscreenRenderer& r, const LoadedPreset& preset, const ViewDraw& view, int size = 160) {
+Image renderAs(OffscreenRenderer& r, const LoadedPreset& preset, const ViewportDraw& view, int size = 160) {
     Diagnostics d;
     std::optional<Rendered> out = r.renderView(preset, size, size, view, d);
     EXPECT_TRUE(out) << toString(d);
@@ -220,7 +220,7 @@ TEST_F(ViewRenders, GouraudErrorIsTheDifferenceOfThePhongAndGouraudRenders) {
     phong.preset.shading = Shading::Phong;
     gouraud.preset.shading = Shading::Gouraud;
     Image a = renderAs(*renderer_, phong, {}), b = renderAs(*renderer_, gouraud, {});
-    ViewDraw error;
+    ViewportDraw error;
     error.options = DrawOptions{ViewMode::GouraudError, 0, ValuePalette::Grey, ValueRange{0.0f, 1.0f}};
     Image e = renderAs(*renderer_, coarse, error);
     ASSERT_EQ(e.rgb.size(), a.rgb.size());
@@ -244,7 +244,7 @@ TEST_F(ViewRenders, TheAutomaticRangeSpansTheValuesOnTheModel) {
     p.preset.camera.eye = {0.0f, 0.0f, 5.0f};
     p.preset.model.subdivisions = {128, 64};
     p.preset.lights[0].position = {0.0f, 0.0f, 3.0f};
-    ViewDraw view;
+    ViewportDraw view;
     view.options.view = ViewMode::Distance;
     view.automatic = true;
     Diagnostics d;
@@ -264,7 +264,7 @@ TEST_F(ViewRenders, TheAutomaticRangeSpansTheValuesOnTheModel) {
 TEST_F(ViewRenders, AValueViewIsDrawnOnBlack) {
     LoadedPreset p;
     p.preset.background = {0.3f, 0.6f, 0.9f};
-    ViewDraw view;
+    ViewportDraw view;
     view.options.view = ViewMode::NdotL;
     view.automatic = true;
     Image image = renderAs(*renderer_, p, view, 64);

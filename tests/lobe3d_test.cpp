@@ -59,10 +59,10 @@ std::vector<std::pair<std::string, Preset>> variety() {
 }
 
 // φ = 0 is the plot's θo > 0 half, φ = 180° its θo < 0 half: the same numbers, bit for bit, for
-// the full grid (every plot sample) and for the draft (every fifth).
+// the full grid (every plot sample) and for the coarse one (every fifth).
 TEST(Lobe3d, ThePlaneOfIncidenceIsThePlotsSamples) {
     ASSERT_EQ(kLobeThetaStepDeg, 1.0f); // one ring per plot sample
-    for (GridSteps steps : {kLobeGrid, kLobeDraftGrid}) {
+    for (GridSteps steps : {kLobeGrid, kLobeCoarseGrid}) {
         const int half = 180 / steps.phiDeg;
         for (const auto& [name, preset] : variety()) {
             for (float incident : {-70.0f, -15.0f, 0.0f, 30.0f, 45.0f, 89.0f}) {
@@ -94,21 +94,21 @@ TEST(Lobe3d, ThePlaneOfIncidenceIsThePlotsSamples) {
     }
 }
 
-// The draft is the full grid with rings and meridians left out: each of its samples is the full
+// The coarse one is the full grid with rings and meridians left out: each of its samples is the full
 // grid's at the same θo and φ, bit for bit.
-TEST(Lobe3d, TheDraftIsTheFullGridThinned) {
+TEST(Lobe3d, TheCoarseGridIsTheFullGridThinned) {
     for (const auto& [name, preset] : variety()) {
         const LobeInputs in = lobeInputs(preset, 35.0f);
-        const HemisphereGrid full = sampleHemisphere(in), draft = sampleHemisphere(in, kLobeDraftGrid);
-        EXPECT_EQ(draft.rings(), 19);
-        EXPECT_EQ(draft.meridians(), 31);
-        const int ringStep = kLobeDraftGrid.thetaDeg / kLobeGrid.thetaDeg, meridianStep = kLobeDraftGrid.phiDeg / kLobeGrid.phiDeg;
-        for (int ring = 0; ring < draft.rings(); ++ring) {
-            for (int meridian = 0; meridian < draft.meridians(); ++meridian) {
-                const std::size_t d = static_cast<std::size_t>(draft.index(ring, meridian));
+        const HemisphereGrid full = sampleHemisphere(in), coarse = sampleHemisphere(in, kLobeCoarseGrid);
+        EXPECT_EQ(coarse.rings(), 19);
+        EXPECT_EQ(coarse.meridians(), 31);
+        const int ringStep = kLobeCoarseGrid.thetaDeg / kLobeGrid.thetaDeg, meridianStep = kLobeCoarseGrid.phiDeg / kLobeGrid.phiDeg;
+        for (int ring = 0; ring < coarse.rings(); ++ring) {
+            for (int meridian = 0; meridian < coarse.meridians(); ++meridian) {
+                const std::size_t d = static_cast<std::size_t>(coarse.index(ring, meridian));
                 const std::size_t f = static_cast<std::size_t>(full.index(ring * ringStep, meridian * meridianStep));
-                ASSERT_EQ(draft.directions[d], full.directions[f]) << name << " ring " << ring << " meridian " << meridian;
-                ASSERT_EQ(draft.total[d], full.total[f]) << name << " ring " << ring << " meridian " << meridian;
+                ASSERT_EQ(coarse.directions[d], full.directions[f]) << name << " ring " << ring << " meridian " << meridian;
+                ASSERT_EQ(coarse.total[d], full.total[f]) << name << " ring " << ring << " meridian " << meridian;
             }
         }
     }
@@ -203,9 +203,9 @@ glm::vec3 whereHIsN(const glm::vec3& N, const glm::vec3& L) {
 // sqrt(1.2e-7/n) rad, so the search can only find the peak to about 0.02° for n = 1.
 constexpr float kPeakToleranceDeg = 0.05f;
 
-// From the full grid and from the draft (the search starts a draft cell away and still ends at R).
+// From the full grid and from the coarse one (the search starts a coarse cell away and still ends at R).
 TEST(Lobe3d, PhongPeaksAtR) {
-    for (GridSteps steps : {kLobeGrid, kLobeDraftGrid}) {
+    for (GridSteps steps : {kLobeGrid, kLobeCoarseGrid}) {
         for (float n : {1.0f, 8.0f, 32.0f, 200.0f, 2000.0f}) {
             for (float incident : {0.0f, 13.0f, 37.0f, -52.0f, 75.5f, 86.0f}) {
                 const LobeInputs in = lobeInputs(material(BrdfModel::Phong, n), incident);
@@ -227,7 +227,7 @@ TEST(Lobe3d, PhongPeaksAtR) {
 }
 
 TEST(Lobe3d, BlinnPhongPeaksWhereHIsN) {
-    for (GridSteps steps : {kLobeGrid, kLobeDraftGrid}) {
+    for (GridSteps steps : {kLobeGrid, kLobeCoarseGrid}) {
         for (float n : {1.0f, 8.0f, 64.0f, 500.0f}) {
             for (float incident : {0.0f, 21.0f, 44.5f, -63.0f, 80.0f}) {
                 const LobeInputs in = lobeInputs(material(BrdfModel::BlinnPhong, n), incident);
@@ -236,7 +236,7 @@ TEST(Lobe3d, BlinnPhongPeaksWhereHIsN) {
                 const std::string where = "n " + std::to_string(n) + ", incident " + std::to_string(incident) +
                                           ", grid step " + std::to_string(steps.phiDeg);
                 const LobeMaximum m = lobeMaximum(in, grid, PlotComponent::Total);
-                // From the draft the search takes another path over the flat top of n = 1's peak
+                // From the coarse one the search takes another path over the flat top of n = 1's peak
                 // and stops where float rounding stops it: 0.056° from it at 21°.
                 const float tolerance = steps == kLobeGrid ? kPeakToleranceDeg : 2.0f * kPeakToleranceDeg;
                 EXPECT_LT(angleDeg(m.V, whereHIsN(v.N, v.L)), tolerance) << where;

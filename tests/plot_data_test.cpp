@@ -21,20 +21,20 @@ TEST(Plot, SamplesEveryDegreeFromMinus90To90) {
     EXPECT_EQ(s.back().thetaOutDeg, 90.0f);
 }
 
-// A draft (the overlay's while it changes) is the same samples at every 3rd degree; a step that
+// A coarse plot (the overlay's while it changes) is the same samples at every 3rd degree; a step that
 // does not divide 90 gives every degree.
-TEST(Plot, ADraftIsEveryStepDegreesOfTheSamples) {
+TEST(Plot, ACoarseLobeIsEveryStepDegreesOfTheSamples) {
     Preset p;
     p.material.shininess = 60.0f;
     const LobeInputs in = lobeInputs(p, 30.0f);
-    const std::vector<PlotSample> full = reflectedIntensity(in), draft = reflectedIntensity(in, 3);
-    ASSERT_EQ(draft.size(), 61u);
-    for (std::size_t i = 0; i < draft.size(); ++i) {
+    const std::vector<PlotSample> full = reflectedIntensity(in), coarse = reflectedIntensity(in, 3);
+    ASSERT_EQ(coarse.size(), 61u);
+    for (std::size_t i = 0; i < coarse.size(); ++i) {
         const PlotSample& f = full[3 * i];
-        EXPECT_EQ(draft[i].thetaOutDeg, f.thetaOutDeg);
-        EXPECT_EQ(draft[i].diffuse, f.diffuse);
-        EXPECT_EQ(draft[i].specular, f.specular);
-        EXPECT_EQ(draft[i].total, f.total);
+        EXPECT_EQ(coarse[i].thetaOutDeg, f.thetaOutDeg);
+        EXPECT_EQ(coarse[i].diffuse, f.diffuse);
+        EXPECT_EQ(coarse[i].specular, f.specular);
+        EXPECT_EQ(coarse[i].total, f.total);
     }
     EXPECT_EQ(reflectedIntensity(in, 7).size(), 181u);
     EXPECT_EQ(reflectedIntensity(in, 0).size(), 181u);

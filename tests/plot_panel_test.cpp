@@ -220,7 +220,7 @@ TEST(PlotPanel, TheLobe3dViewFitsItsWindowAtEverySizeAndScale) {
         Preset a, b;
         b.brdf = BrdfModel::CookTorrance;
         ui::PlotSettings settings;
-        settings.view = ui::PlotView::Lobe3d;
+        settings.view = ui::PlotTab::Lobe3d;
         Outcome out = drawPlots(r, W, H, a, &b, settings);
         std::map<std::string, ui::Rect> m = rects(out.widgets);
         ASSERT_TRUE(m.count("plot.lobe3d") && m.count("plot.lobe3d.map")) << where << "\n" << out.widgets;
@@ -244,7 +244,7 @@ TEST(PlotPanel, TheLobe3dViewNeverShowsStaleData) {
     b.brdf = BrdfModel::BlinnPhong;
     const Preset* compare = nullptr;
     ui::PlotSettings warm;
-    warm.view = ui::PlotView::Lobe3d;
+    warm.view = ui::PlotTab::Lobe3d;
     drawPlots(r, 1280, 800, a, compare, warm);
     const std::size_t computed = warm.lobe3d.computed();
     EXPECT_GT(computed, 0u);
@@ -279,7 +279,7 @@ TEST(PlotPanel, TheLobe3dViewNeverShowsStaleData) {
 // The Energy view at every window and UI scale: it fits, shows its canvas, and never scrolls.
 TEST(PlotPanel, TheEnergyViewFitsItsWindowAtEverySizeAndScale) {
     ui::PlotSettings settings; // one for all: the curves (35 ms each) are computed once, the layout every time
-    settings.view = ui::PlotView::Energy;
+    settings.view = ui::PlotTab::Energy;
     forEachPlotsWindow({1.0f, 2.0f, 2.5f}, {{1024, 768}, {1280, 800}, {1920, 1080}, {390, 844}},
                        [&](const ui::Rect& r, float W, float H, const std::string& where) {
         Preset a, b;
@@ -301,7 +301,7 @@ TEST(PlotPanel, TheEnergyViewKeepsItsCurveAndAClickSetsTheIncidentAngle) {
     ui::Rect r{800, 0, 480, 800};
     Preset a;
     ui::PlotSettings warm;
-    warm.view = ui::PlotView::Energy;
+    warm.view = ui::PlotTab::Energy;
     drawPlots(r, 1280, 800, a, nullptr, warm);
     const std::size_t computed = warm.cache.computed();
     EXPECT_GT(computed, 0u);
@@ -316,7 +316,7 @@ TEST(PlotPanel, TheEnergyViewKeepsItsCurveAndAClickSetsTheIncidentAngle) {
     EXPECT_GT(warm.cache.computed(), computed) << "a new shininess must give a new curve";
     EXPECT_FALSE(sameDrawing(moved, cached)) << "the curve did not change with the shininess";
     ui::PlotSettings cold;
-    cold.view = ui::PlotView::Energy;
+    cold.view = ui::PlotTab::Energy;
     EXPECT_TRUE(sameDrawing(cached, drawPlots(r, 1280, 800, a, nullptr, cold)));
 
     // A click at 1/3 of the plot's width from its left axis... found from the canvas's rectangle:
@@ -481,12 +481,12 @@ TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
 }
 
 // The panel during a drag, one frame per change as the app draws it: each view owes a frame while
-// its readouts lag (the 3D lobe draws its draft grid), and the frame after the change ends draws
+// its readouts lag (the 3D lobe draws its coarse grid), and the frame after the change ends draws
 // exactly what a cold cache draws.
 TEST(PlotPanel, AfterADragTheNextFrameDrawsWhatAColdCacheDraws) {
     CpuImGui imgui(1.0f);
     ui::Rect r{900, 0, 380, 800};
-    for (ui::PlotView view : {ui::PlotView::Plane, ui::PlotView::Lobe3d, ui::PlotView::Energy}) {
+    for (ui::PlotTab view : {ui::PlotTab::Plane, ui::PlotTab::Lobe3d, ui::PlotTab::Energy}) {
         Preset a;
         ui::PlotSettings warm;
         warm.view = view;
@@ -496,15 +496,15 @@ TEST(PlotPanel, AfterADragTheNextFrameDrawsWhatAColdCacheDraws) {
             a.material.shininess = 20.0f + float(i);
             const Outcome during = drawPlots(r, 1280, 800, a, nullptr, warm, 1);
             owed = owed || warm.cache.owed();
-            if (view == ui::PlotView::Lobe3d && i > 1) {
-                // The draft grid: fewer vertices than the full grid's surface alone.
+            if (view == ui::PlotTab::Lobe3d && i > 1) {
+                // The coarse grid: fewer vertices than the full grid's surface alone.
                 EXPECT_LT(during.vertices.size(), std::size_t(kLobeRings * kLobeMeridians)) << "frame " << i << " of the drag";
             }
         }
         EXPECT_TRUE(owed) << "view " << int(view) << ": a drag's readouts lag, and ask for a frame";
         Outcome next = drawPlots(r, 1280, 800, a, nullptr, warm, 1);
         EXPECT_FALSE(warm.cache.owed()) << "view " << int(view);
-        if (view == ui::PlotView::Lobe3d) {
+        if (view == ui::PlotTab::Lobe3d) {
             EXPECT_GT(next.vertices.size(), std::size_t(2 * kLobeRings * kLobeMeridians)) << "the full surface and map";
         }
         ui::PlotSettings cold;

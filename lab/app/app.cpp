@@ -97,8 +97,8 @@ struct App::Impl {
 
     // Exercises: the live score, what the panel shows of the exercise and of a draft (app/exercise_score.h).
     ExerciseScorer scorer;
-    ui::ExerciseView exerciseView;
-    ui::ExerciseDraftView draftView;
+    ui::ExercisePanelModel exerciseView;
+    ui::DraftPanelModel draftView;
     ShareCode shareCode; // the scene's link as a QR code (Q)
     unsigned exerciseShown = 0; // the last exercise whose section the panel was turned to
 
@@ -179,18 +179,18 @@ ui::ScreenModel App::Impl::screenModel() {
     m.showHelp = &showHelp;
     m.problem = problem ? &*problem : nullptr;
     m.unsavedQuestion = workspace.question() ? &*workspace.question() : nullptr;
-    m.overlay = {name, doc.dirty(), m.a, m.b, workspace.view.mode, frameTimeShown() ? speed.shownMs(clock) : std::nullopt,
+    m.captions = {name, doc.dirty(), m.a, m.b, workspace.view.mode, frameTimeShown() ? speed.shownMs(clock) : std::nullopt,
                  toastLeft > 0.0f ? toast.c_str() : nullptr, caption,
                  probe.shown() ? std::optional<glm::vec3>(probe.result()->positionWorld) : std::nullopt, probe.lobe(),
                  readout.legend(workspace.view, workspace.a(), renders[0].range()), std::nullopt, false};
     m.lightShapes = lightShapes;
     m.motion = anyOrbit(workspace.a()) ? &orbits.motion(0) : nullptr;
     if (const std::optional<ExerciseSession>& ex = workspace.exercise()) {
-        exerciseView = exerciseViewOf(*ex, scorer.score());
+        exerciseView = exercisePanelModel(*ex, scorer.score());
         m.panelInfo.exercise = &exerciseView;
-        m.overlay.exercise = true;
+        m.captions.exercise = true;
     } else if (workspace.draft()) {
-        draftView = draftViewOf(workspace);
+        draftView = draftPanelModel(workspace);
         m.panelInfo.draft = &draftView;
     }
     if (shareCode.shown) {
@@ -367,7 +367,7 @@ Viewport toViewport(const ui::Rect& r, float toPixels, float windowHeight, float
 // Draws A (and B in compare mode) as the document has them at the layout's rectangles, shifted
 // by (dx, dy) window units, into a framebuffer whose height is `windowHeight` window units.
 void App::Impl::drawViewports(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy) {
-    const ViewSettings& view = workspace.view;
+    const DisplaySettings& view = workspace.view;
     for (const ShownSide& side : sides(layout, false)) {
         if (side.mesh) {
             drawView(renderer, side.shown, side.mesh, toViewport(side.rect, toPixels, windowHeight, dx, dy),
@@ -381,7 +381,7 @@ void App::Impl::drawViewports(const ui::Layout& layout, float toPixels, float wi
 // go in the window is kept for compose(). True when any was drawn.
 bool App::Impl::updateViewports(const ui::Layout& layout, const FrameInput& in, float scale) {
     float toPixels = static_cast<float>(in.framebufferWidth) / in.windowWidth;
-    const ViewSettings& view = workspace.view;
+    const DisplaySettings& view = workspace.view;
     shown.clear();
     bool drawn = false;
     std::vector<ShownSide> live = sides(layout, true);
@@ -516,7 +516,7 @@ FrameOutput App::frame(const FrameInput& in) {
         m.started = true;
     }
     ui::ScreenModel model = m.screenModel();
-    ui::placeText(layout, m.steadyCaption(ui::measureText(model.overlay, layout.view), layout.view)); // beside the model, never over it
+    ui::placeText(layout, m.steadyCaption(ui::measureText(model.captions, layout.view), layout.view)); // beside the model, never over it
     model.clicks = clicksOf(in.events, m.pressed);
     model.panelInfo.compareStacked = layout.compareStacked;
     ui::ScreenEvents events = ui::drawScreen(layout, model);
@@ -547,7 +547,7 @@ FrameOutput App::frame(const FrameInput& in) {
     // A moving light is drawn within the frame budget as a drag is (ViewportResolution).
     float scale = m.resolution.update(events.dragging || orbiting, in.lastFrameSeconds, m.options.frameBudgetSeconds);
     m.viewportDrawn = m.updateViewports(layout, in, scale);
-    bool legendOwed = m.updateReadout(in, events, model.overlay.legend);
+    bool legendOwed = m.updateReadout(in, events, model.captions.legend);
     bool sweepDrawn = m.sweepImage.update(m.sweep, m.renderer, ws.a(), ws.document().file(), ws.mesh(Side::A), events.dragging);
     bool scoreOwed = m.scorer.update(m.renderer, ws, events.gesture || events.dragging, m.clock, in.targetFramebuffer);
     bindFramebuffer(in.targetFramebuffer);

@@ -17,7 +17,7 @@ std::optional<Image> renderScored(Renderer& renderer, const Preset& preset, cons
         return std::nullopt;
     }
     target.bind();
-    drawView(renderer, preset, mesh, Viewport{0, 0, kExerciseRenderSide, kExerciseRenderSide}, ViewDraw{});
+    drawView(renderer, preset, mesh, Viewport{0, 0, kExerciseRenderSide, kExerciseRenderSide}, ViewportDraw{});
     return target.readRgb();
 }
 
@@ -57,9 +57,9 @@ bool ExerciseScorer::update(Renderer& renderer, Workspace& workspace, bool gestu
     return true;
 }
 
-ui::ExerciseView exerciseViewOf(const ExerciseSession& session, const std::optional<ExerciseScore>& score) {
+ui::ExercisePanelModel exercisePanelModel(const ExerciseSession& session, const std::optional<ExerciseScore>& score) {
     const Exercise& e = session.exercise;
-    ui::ExerciseView view{printable(e.title, true), printable(e.instructions, true), {},
+    ui::ExercisePanelModel view{printable(e.title, true), printable(e.instructions, true), {},
                           static_cast<int>(e.hints.size()) - session.hintsShown, e.open,
                           score ? score->summary() : std::string{}, score ? score->closeness : 0.0,
                           score && score->solved};
@@ -69,7 +69,7 @@ ui::ExerciseView exerciseViewOf(const ExerciseSession& session, const std::optio
     return view;
 }
 
-ui::ExerciseDraftView draftViewOf(Workspace& workspace) {
+ui::DraftPanelModel draftPanelModel(Workspace& workspace) {
     ExerciseDraft& draft = *workspace.draft();
     Diagnostics d;
     workspace.draftExercise(d);

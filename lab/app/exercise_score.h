@@ -38,8 +38,8 @@ private:
 };
 
 // The panel's view of an exercise being solved, with its last score.
-ui::ExerciseView exerciseViewOf(const ExerciseSession& session, const std::optional<ExerciseScore>& score);
+ui::ExercisePanelModel exercisePanelModel(const ExerciseSession& session, const std::optional<ExerciseScore>& score);
 // The panel's view of the workspace's draft (draft() must hold one), with why it is not an exercise yet.
-ui::ExerciseDraftView draftViewOf(Workspace& workspace);
+ui::DraftPanelModel draftPanelModel(Workspace& workspace);
 
 } // namespace lab

@@ -29,7 +29,7 @@ std::string PixelProbe::probe(const Preset& shown, const Mesh& mesh, glm::vec2 n
     return result_ ? "" : "No surface under the mouse: the probe is closed";
 }
 
-bool PixelProbe::follow(const Preset& shown, const ViewSettings& view, unsigned scene) {
+bool PixelProbe::follow(const Preset& shown, const DisplaySettings& view, unsigned scene) {
     if (result_ && scene_ != scene) {
         result_.reset(); // it belonged to the scene before
     }

@@ -3,7 +3,7 @@
 // A click on the model probes its pixel (core/lighting/probe.h); a click beside it closes the
 // probe. A drag that starts on the probe's marker moves it: the pixel under the pointer is probed
 // again each frame, and where the pointer leaves the model the probe stays where it last was. With
-// "plots at the probe" on (ViewSettings::plotsAtProbe) the probed point is followed: evaluated
+// "plots at the probe" on (DisplaySettings::plotsAtProbe) the probed point is followed: evaluated
 // again at the same point of the mesh for the scene as it is now shown (the camera orbited, a light
 // moved or moving), and its lobe (core/plots/probe_lobe.h) made for the view's light, which the
 // plots and the model's viewport then show. What it does not do: draw, or change the scene.
@@ -31,7 +31,7 @@ public:
     // Once a frame, after the frame's edits: forgets a probe of an earlier scene and, with plots
     // at the probe on and the probe open, follows the point in `shown` and makes its lobe. True
     // when what the plots or the viewport show of it changed: the frame drawn before did not show it.
-    bool follow(const Preset& shown, const ViewSettings& view, unsigned scene);
+    bool follow(const Preset& shown, const DisplaySettings& view, unsigned scene);
 
     const ProbeResult* result() const { return result_ ? &*result_ : nullptr; }
     bool& open() { return open_; }

@@ -9,7 +9,7 @@
 namespace lab {
 
 void ValueReadout::update(Renderer& renderer, const CachedViewport& a, const Viewport& dest, float toPixels,
-                          float windowHeight, float x, float y, const ViewSettings& view) {
+                          float windowHeight, float x, float y, const DisplaySettings& view) {
     const std::optional<ViewportKey>& key = a.key();
     std::optional<std::pair<int, int>> pixel;
     if (key && key->mesh && showsValue(view.mode) && dest.width > 0 && dest.height > 0) {
@@ -39,7 +39,7 @@ void ValueReadout::update(Renderer& renderer, const CachedViewport& a, const Vie
     key_ = key;
 }
 
-std::optional<ui::LegendModel> ValueReadout::legend(const ViewSettings& view, const Preset& preset,
+std::optional<ui::LegendModel> ValueReadout::legend(const DisplaySettings& view, const Preset& preset,
                                                     const std::optional<ValueRange>& range) const {
     if (!showsValue(view.mode)) {
         return std::nullopt;

@@ -18,11 +18,11 @@ public:
     // convention) of a window `windowHeight` units high at `toPixels` pixels a unit; the pointer at
     // (x, y) window units. Off the model, on the wipe's lit side or outside the view: no value.
     void update(Renderer& renderer, const CachedViewport& a, const Viewport& dest, float toPixels, float windowHeight,
-                float x, float y, const ViewSettings& view);
+                float x, float y, const DisplaySettings& view);
 
     // The legend for `view` of `preset` (A) with B's range in compare mode; none for a view that
     // shows no value.
-    std::optional<ui::LegendModel> legend(const ViewSettings& view, const Preset& preset,
+    std::optional<ui::LegendModel> legend(const DisplaySettings& view, const Preset& preset,
                                           const std::optional<ValueRange>& range) const;
 
     // True once after the value changed: the overlay showed the old one, a frame is owed.

@@ -22,7 +22,7 @@ struct ViewportKey {
     Preset preset;                     // as shown (the renderer applies the view)
     std::shared_ptr<const Mesh> mesh;  // held, so a new mesh can never reuse a cached one's address
     int width = 0, height = 0;         // the pixels drawn (less than the view's while dragging)
-    ViewDraw draw;
+    ViewportDraw draw;
     unsigned programs = 0;             // Renderer::generation()
     bool operator==(const ViewportKey&) const = default;
 };

@@ -91,7 +91,7 @@ public:
     Preset& b() { return doc_.compare; }
     Preset& preset(Side side) { return side == Side::A ? doc_.preset : doc_.compare; }
     Preset& edited() { return view.compare && view.editingB ? doc_.compare : doc_.preset; }
-    ViewSettings view; // the per-term view and compare mode
+    DisplaySettings view; // the per-term view and compare mode
 
     const std::vector<std::filesystem::path>& presetFiles() const { return presetFiles_; }
     // The shipped exercises (the first preset folder's exercises/), for the panel's list.

@@ -294,10 +294,10 @@ class Checker {
     // <stem>.<view>.png (<stem>.<view>.light<N>.png for a light other than the first).
     void checkView(const LoadedPreset& preset, const PlannedCase& planned, const Tolerances& tolerances) {
         const CheckView& v = preset.preset.check.views[std::size_t(planned.view)];
-        ViewSettings settings; // viridis over the automatic range
+        DisplaySettings settings; // viridis over the automatic range
         settings.mode = *viewFromName(v.view); // checked when the preset was read
         settings.light = v.light - 1;
-        const ViewDraw draw = viewDraw(settings);
+        const ViewportDraw draw = viewDraw(settings);
         std::string why = notApplicable(draw.options.view, preset.preset, draw.options.light);
         if (!why.empty()) {
             auto began = std::chrono::steady_clock::now();
@@ -310,7 +310,7 @@ class Checker {
     }
 
     void render(const LoadedPreset& preset, const PlannedCase& planned, const Tolerances& tolerances,
-                const ViewDraw& view = {}) {
+                const ViewportDraw& view = {}) {
         auto began = std::chrono::steady_clock::now();
         const std::string& stem = planned.name;
         CheckCase c = start(CheckCase::Kind::Render, stem, preset.file);

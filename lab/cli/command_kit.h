@@ -53,6 +53,6 @@ bool frameForCells(LoadedPreset& preset, Diagnostics& diagnostics);
 // failed (an internal failure) from a key or value the preset refuses (bad input). Each cell is
 // drawn as `view` says (the lit model by default).
 std::optional<Image> renderSweepGrid(Gpu& gpu, const LoadedPreset& preset, const std::vector<SweepAxis>& axes,
-                                     Size cell, std::string& error, bool& renderFailed, const ViewDraw& view = {});
+                                     Size cell, std::string& error, bool& renderFailed, const ViewportDraw& view = {});
 
 } // namespace lab

@@ -102,7 +102,7 @@ bool Gpu::start() {
 }
 
 std::optional<Image> renderSweepGrid(Gpu& gpu, const LoadedPreset& base, const std::vector<SweepAxis>& axes, Size cell,
-                                     std::string& error, bool& renderFailed, const ViewDraw& view) {
+                                     std::string& error, bool& renderFailed, const ViewportDraw& view) {
     renderFailed = false;
     auto renderCell = [&](const LoadedPreset& one, int width, int height, std::string& why) -> std::optional<Image> {
         Diagnostics problems;
@@ -144,8 +144,8 @@ std::optional<Size> parseSize(const std::string& text, std::string& error) {
 namespace {
 
 // The command line's view as the GUI's view settings would draw it (render/renderer.h viewDraw).
-ViewDraw viewDrawOf(const RenderView& v) {
-    ViewSettings settings;
+ViewportDraw viewDrawOf(const RenderView& v) {
+    DisplaySettings settings;
     settings.mode = v.mode;
     settings.light = v.light;
     settings.palette = v.palette;
@@ -262,9 +262,9 @@ namespace {
 // How a sweep's cells are drawn: a value view with one range for all (the fixed one, or the union of
 // the cells' automatic ranges, printed). Nullopt, with the message, when the view does not apply to
 // a cell.
-std::optional<ViewDraw> sweepViewDraw(Gpu& gpu, const LoadedPreset& base, const std::vector<SweepAxis>& sweeps,
+std::optional<ViewportDraw> sweepViewDraw(Gpu& gpu, const LoadedPreset& base, const std::vector<SweepAxis>& sweeps,
                                       Size size, const RenderView& view, const fs::path& out) {
-    ViewDraw draw = viewDrawOf(view);
+    ViewportDraw draw = viewDrawOf(view);
     if (!showsValue(view.mode)) {
         return draw;
     }
@@ -335,7 +335,7 @@ int runSweep(const std::vector<fs::path>& presets, const std::vector<SweepAxis>&
     if (!gpu.start()) {
         return kExitFailure;
     }
-    std::optional<ViewDraw> draw = sweepViewDraw(gpu, *preset, sweeps, size, view, out);
+    std::optional<ViewportDraw> draw = sweepViewDraw(gpu, *preset, sweeps, size, view, out);
     if (!draw) {
         return kExitBadInput;
     }

@@ -24,12 +24,12 @@ std::shared_ptr<const Mesh> OffscreenRenderer::mesh(LoadedPreset& framed, const 
 
 std::optional<Image> OffscreenRenderer::render(const LoadedPreset& preset, int width, int height,
                                                Diagnostics& diagnostics, std::vector<std::string>* notes) {
-    std::optional<Rendered> r = renderView(preset, width, height, ViewDraw{}, diagnostics, notes);
+    std::optional<Rendered> r = renderView(preset, width, height, ViewportDraw{}, diagnostics, notes);
     return r ? std::optional<Image>(std::move(r->image)) : std::nullopt;
 }
 
 std::optional<Rendered> OffscreenRenderer::renderView(const LoadedPreset& preset, int width, int height,
-                                                      const ViewDraw& view, Diagnostics& diagnostics,
+                                                      const ViewportDraw& view, Diagnostics& diagnostics,
                                                       std::vector<std::string>* notes) {
     LoadedPreset framed;
     std::shared_ptr<const Mesh> m = mesh(framed, preset, diagnostics, notes);
@@ -48,7 +48,7 @@ std::optional<Rendered> OffscreenRenderer::renderView(const LoadedPreset& preset
 }
 
 std::optional<ValueRange> OffscreenRenderer::autoRange(const LoadedPreset& preset, int width, int height,
-                                                       const ViewDraw& view, Diagnostics& diagnostics) {
+                                                       const ViewportDraw& view, Diagnostics& diagnostics) {
     LoadedPreset framed;
     std::shared_ptr<const Mesh> m = mesh(framed, preset, diagnostics, nullptr);
     return m ? renderer_.autoValueRange(framed.preset, m, width, height, view.options) : std::nullopt;

@@ -30,10 +30,10 @@ public:
 
     // The same as render(), drawn as `view` says (render/renderer.h drawView): a factor view, the
     // wipe, a fixed or automatic range. The caller checks that the view applies (notApplicable).
-    std::optional<Rendered> renderView(const LoadedPreset& preset, int width, int height, const ViewDraw& view,
+    std::optional<Rendered> renderView(const LoadedPreset& preset, int width, int height, const ViewportDraw& view,
                                        Diagnostics& diagnostics, std::vector<std::string>* notes = nullptr);
     // The automatic range `view` would find in such a render (nullopt: no value, or no model pixel).
-    std::optional<ValueRange> autoRange(const LoadedPreset& preset, int width, int height, const ViewDraw& view,
+    std::optional<ValueRange> autoRange(const LoadedPreset& preset, int width, int height, const ViewportDraw& view,
                                         Diagnostics& diagnostics);
 
     // Renders at width × height. Problems with the preset's model are reported with the

@@ -3,7 +3,7 @@
 
 #include "core/scene/transforms.h"
 #include "core/io/image.h"
-#include "render/overlay.h"
+#include "render/wireframe.h"
 
 #include <algorithm>
 #include <array>
@@ -208,7 +208,7 @@ Renderer::~Renderer() {
 }
 
 bool Renderer::init(Diagnostics& diagnostics) {
-    overlay_ = OverlayProgram::build(diagnostics);
+    overlay_ = WireframeProgram::build(diagnostics);
     return overlay_ && impl_->build(builtinStageSources(), diagnostics);
 }
 
@@ -339,7 +339,7 @@ void Renderer::draw(const Preset& preset, const std::shared_ptr<const Mesh>& mes
 }
 
 void Renderer::drawOverlay(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const Viewport& viewport,
-                           const OverlayOptions& options) {
+                           const WireframeOptions& options) {
     if (overlay_) { // none before init()
         overlay_->draw(preset, impl_->upload(mesh), viewport, options);
     }
@@ -365,8 +365,8 @@ void Renderer::drawPoints(const Preset& shown, const std::vector<FlatVertex>& ve
     glUseProgram(0);
 }
 
-ViewDraw viewDraw(const ViewSettings& view) {
-    ViewDraw d;
+ViewportDraw viewDraw(const DisplaySettings& view) {
+    ViewportDraw d;
     d.options.view = view.mode;
     d.options.light = view.light;
     d.options.palette = view.palette;
@@ -382,7 +382,7 @@ ViewDraw viewDraw(const ViewSettings& view) {
 }
 
 std::optional<ValueRange> drawView(Renderer& renderer, const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
-                                   const Viewport& viewport, const ViewDraw& draw) {
+                                   const Viewport& viewport, const ViewportDraw& draw) {
     DrawOptions options = draw.options;
     std::optional<ValueRange> range;
     bool valueView = showsValue(options.view) && notApplicable(options.view, preset, options.light).empty();

@@ -20,8 +20,8 @@
 
 namespace lab {
 
-class OverlayLines;   // render/overlay.h
-class OverlayProgram; // render/overlay.h
+class WireframeLines;   // render/wireframe.h
+class WireframeProgram; // render/wireframe.h
 
 // A mesh on the GPU: the indexed buffers for smooth shading, and the de-indexed copy for flat
 // shading, built the first time flat shading draws it. Shares the CPU mesh (the flat copy needs it).
@@ -36,14 +36,14 @@ public:
     void drawSmooth() const;
     void drawFlat();
     // The wireframe's and the normals' lines, made on first use (defined in overlay.cpp).
-    OverlayLines& overlay();
+    WireframeLines& wireframe();
 
 private:
     std::shared_ptr<const Mesh> mesh_;
     GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
     GLuint flatVao_ = 0, flatVbo_ = 0;
     GLsizei flatCount_ = 0;
-    std::unique_ptr<OverlayLines> overlay_; // after mesh_: it refers to the mesh
+    std::unique_ptr<WireframeLines> overlay_; // after mesh_: it refers to the mesh
 };
 
 // What a draw shows (core/scene/view_mode.h). The renderer applies the view itself: a term view
@@ -60,14 +60,14 @@ struct DrawOptions {
     bool operator==(const DrawOptions&) const = default;
 };
 
-// The shading-rate views over the model (render/overlay.h): the triangles' edges, each vertex's
+// The shading-rate views over the model (render/wireframe.h): the triangles' edges, each vertex's
 // normal as a short line. `background` is what the wireframe's colour contrasts with;
 // `fromX`..`toX` the part of the viewport's width drawn over, as in DrawOptions.
-struct OverlayOptions {
+struct WireframeOptions {
     bool wireframe = false, vertexNormals = false;
     glm::vec3 background{0.0f};
     float fromX = 0.0f, toX = 1.0f;
-    bool operator==(const OverlayOptions&) const = default;
+    bool operator==(const WireframeOptions&) const = default;
 };
 
 // The side of the automatic range's render: its longer side has at most this many pixels.
@@ -76,14 +76,14 @@ inline constexpr int kRangeRenderSize = 256;
 // How a viewport is drawn: the view (options; its range is the fixed one, replaced by the one
 // found when `automatic`), and with the wipe, the lit model left of options.fromX. The GUI, the
 // page and `lab render` all draw through drawView() below.
-struct ViewDraw {
+struct ViewportDraw {
     DrawOptions options;
     bool automatic = false; // a value view with an automatic range (Renderer::autoValueRange)
     bool wipe = false;
     bool wireframe = false, vertexNormals = false; // over the model, both sides of a wipe (drawOverlay)
-    bool operator==(const ViewDraw&) const = default;
+    bool operator==(const ViewportDraw&) const = default;
 };
-ViewDraw viewDraw(const ViewSettings& view);
+ViewportDraw viewDraw(const DisplaySettings& view);
 
 // Owns the GL programs and the GPU copies of meshes (not copyable: impl_ is unique).
 class Renderer {
@@ -117,10 +117,10 @@ public:
     std::optional<ValueRange> autoValueRange(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, int width,
                                              int height, const DrawOptions& options);
 
-    // Draws the overlays `options` asks for (render/overlay.h) over what draw() left in the bound
+    // Draws the overlays `options` asks for (render/wireframe.h) over what draw() left in the bound
     // framebuffer, its depth kept (so lines on the far side stay hidden); nothing when both are off.
     void drawOverlay(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const Viewport& viewport,
-                     const OverlayOptions& options);
+                     const WireframeOptions& options);
 
     // The value `options.view` has at pixel (x, y) (GL's convention: from the bottom left) of a
     // width × height view: that one pixel drawn as the value's float bits and read back, so it is
@@ -138,13 +138,13 @@ public:
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
-    std::unique_ptr<OverlayProgram> overlay_; // built by init()
+    std::unique_ptr<WireframeProgram> overlay_; // built by init()
 };
 
 // Draws a viewport as `draw` says into the bound framebuffer; the value view's range, when it
 // shows one.
 std::optional<ValueRange> drawView(Renderer& renderer, const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
-                                   const Viewport& viewport, const ViewDraw& draw);
+                                   const Viewport& viewport, const ViewportDraw& draw);
 
 // glViewport(viewport) with the scissor on its width's part fromX..toX (shares of the width, as
 // DrawOptions has them), no dithering, no blending: how the model and its overlays are drawn.

@@ -48,7 +48,7 @@ std::optional<GLuint> buildProgram(const StageSources& sources, const std::vecto
                                    Diagnostics& diagnostics);
 
 // A program of two embedded files of shaders/ that need no lighting (the overlay's lines:
-// overlay.vert, overlay.frag): each body after the version line and the precision only, compiled
+// wireframe.vert, wireframe.frag): each body after the version line and the precision only, compiled
 // and linked as buildProgram does, the log naming those files.
 std::optional<GLuint> buildPlainProgram(std::string_view vertexFile, std::string_view fragmentFile,
                                         Diagnostics& diagnostics);

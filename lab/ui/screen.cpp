@@ -107,7 +107,7 @@ void panels(const Layout& layout, ScreenModel& m, ScreenEvents& events) {
     }
     if (layout.plots.w > 0.0f) {
         beginFixed("Reflected intensity###plots", layout.plots, extra);
-        plotsPanel(*m.a, m.overlay.exercise ? nullptr : m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr, m.probeLobe);
+        plotsPanel(*m.a, m.captions.exercise ? nullptr : m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr, m.probeLobe);
         ImGui::End();
         widgets().set("plots", layout.plots);
     }
@@ -117,7 +117,7 @@ void dialogs(ScreenModel& m, ScreenEvents& events) {
     if (m.problem) {
         events.problemClosed = problemDialog(*m.problem);
     } else if (m.unsavedQuestion) {
-        events.answer = unsavedChangesDialog(m.overlay.documentName, *m.unsavedQuestion);
+        events.answer = unsavedChangesDialog(m.captions.documentName, *m.unsavedQuestion);
     }
 }
 
@@ -153,12 +153,12 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     const Rect& active = m.b ? layout.halves[0] : layout.viewport;
     const bool wipe = m.view->wipe && m.view->mode != ViewMode::Lit;
     events.viewport = viewportControls(*m.a, active, layout.viewport, *m.viewportControls, m.clicks, m.motion,
-                                       m.overlay.probePoint ? &*m.overlay.probePoint : nullptr,
+                                       m.captions.probePoint ? &*m.captions.probePoint : nullptr,
                                        wipe ? &m.view->wipeAt : nullptr);
-    m.overlay.wipeAt = wipe ? std::optional<float>(m.view->wipeAt) : std::nullopt;
-    m.overlay.wipeDragged = m.viewportControls->drag == ViewportControls::Drag::Wipe;
+    m.captions.wipeAt = wipe ? std::optional<float>(m.view->wipeAt) : std::nullopt;
+    m.captions.wipeDragged = m.viewportControls->drag == ViewportControls::Drag::Wipe;
     lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewportControls->light, m.lightShapes);
-    viewOverlay(m.overlay, layout);
+    captionStrips(m.captions, layout);
     events.gesture = ImGui::IsAnyItemActive() || events.viewport.gesture;
     events.dragging = events.gesture && ImGui::IsAnyMouseDown();
     return events;

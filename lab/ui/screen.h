@@ -30,7 +30,7 @@ struct ScreenModel {
     Preset* a = nullptr;      // set A (the plots and the view's gestures edit it)
     Preset* b = nullptr;      // set B in compare mode, else nullptr
     Preset* edited = nullptr; // the set the panel edits
-    ViewSettings* view = nullptr;
+    DisplaySettings* view = nullptr;
     PanelInfo panelInfo;
     PanelState* panel = nullptr;
     PlotSettings* plots = nullptr;
@@ -47,7 +47,7 @@ struct ScreenModel {
     std::vector<std::pair<float, float>> clicks; // the frame's left clicks (window units), queued by the platform
     const Problem* problem = nullptr;           // shown until closed
     const std::string* unsavedQuestion = nullptr; // "open x.json": discard unsaved changes to do it?
-    OverlayModel overlay;
+    CaptionStrips captions; // the caption strips around the model: header, footer, legend, probe mark
     const ShareCodeModel* shareCode = nullptr; // the scene's link as a QR code, while shown (Q)
 };
 

@@ -250,8 +250,8 @@ void View(benchmark::State& state) {
     Framebuffer target(kWidth, kHeight);
     target.bind();
     const Viewport viewport{0, 0, kWidth, kHeight};
-    ViewDraw lit;
-    ViewDraw view;
+    ViewportDraw lit;
+    ViewportDraw view;
     view.options.view = static_cast<ViewMode>(state.range(0));
     view.automatic = true;
     if (state.range(1) != 0) {
@@ -359,9 +359,9 @@ void Plots(benchmark::State& state) {
     Preset b = a;
     b.brdf = BrdfModel::BlinnPhong;
     ui::PlotSettings settings;
-    settings.view = static_cast<ui::PlotView>(state.range(2));
+    settings.view = static_cast<ui::PlotTab>(state.range(2));
     // range(1): 0 unchanged, 1 editing (a new shininess every frame), 2 the frame after a change
-    // ends (timed: a new value drawn untimed, then the same value again: what was lagging or drafted
+    // ends (timed: a new value drawn untimed, then the same value again: what was lagging or coarse
     // is computed exactly).
     const bool compare = state.range(0) != 0;
     const int editing = static_cast<int>(state.range(1));
@@ -534,7 +534,7 @@ void registerAll() {
     benchmark::RegisterBenchmark("View/wipe-D", View)
         ->Args({static_cast<int>(ViewMode::D), 1})->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
     benchmark::RegisterBenchmark("GuiFrame", GuiFrame)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
-    const char* views[] = {"", "lobe3d-", "energy-"}; // ui::PlotView's order: Plane, 3D lobe, Energy
+    const char* views[] = {"", "lobe3d-", "energy-"}; // ui::PlotTab's order: Plane, 3D lobe, Energy
     for (int v = 0; v < 3; ++v) {
         for (int edit = 0; edit < 3; ++edit) {
             for (int compare = 0; compare < 2; ++compare) {

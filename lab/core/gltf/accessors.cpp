@@ -149,7 +149,7 @@ private:
 
 // Appends the view's `count` elements of T to `out`, converted to U, in one pass: one memmove
 // where they are packed and aligned as U already (a well-formed GLB's arrays are).
-template <typename T, typename U> void append(const View& v, std::vector<U>& out) {
+template <typename T, typename U> void append(const AccessorData& v, std::vector<U>& out) {
     if constexpr (std::is_same_v<T, U>) {
         if (v.stride == sizeof(T) && reinterpret_cast<std::uintptr_t>(v.data) % alignof(T) == 0) {
             const auto* packed = reinterpret_cast<const T*>(v.data);
@@ -270,7 +270,7 @@ const unsigned char* Accessors::range(int viewIndex, std::size_t byteOffset, std
     return buffer.data + bv.byteOffset + byteOffset;
 }
 
-bool Accessors::materialize(const tinygltf::Accessor& a, const std::string& where, std::size_t element, View& v) {
+bool Accessors::materialize(const tinygltf::Accessor& a, const std::string& where, std::size_t element, AccessorData& v) {
     std::vector<unsigned char> bytes(a.count * element); // zeros, when there is no bufferView
     if (a.bufferView >= 0) {
         std::size_t stride = 1; // the view's own
@@ -327,7 +327,7 @@ bool Accessors::materialize(const tinygltf::Accessor& a, const std::string& wher
     return true;
 }
 
-bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, std::size_t maxCount, View& v) {
+bool Accessors::data(int index, const std::string& usedBy, AccessorUse use, std::size_t maxCount, AccessorData& v) {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) {
         return error(usedBy, "accessor " + std::to_string(index) + " does not exist");
     }
@@ -345,7 +345,7 @@ bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, std:
     v.components = static_cast<int>(componentCount(a.type));
     v.normalized = a.normalized;
     if (a.sparse.isSparse || a.bufferView < 0) {
-        if (auto made = madeViews_.find(index); made != madeViews_.end()) {
+        if (auto made = madeData_.find(index); made != madeData_.end()) {
             v = made->second;
             return true;
         }
@@ -357,7 +357,7 @@ bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, std:
         if (!materialize(a, where, element, v)) {
             return false;
         }
-        madeViews_[index] = v;
+        madeData_[index] = v;
         return true;
     }
     std::size_t stride = 1; // the view's own
@@ -367,7 +367,7 @@ bool Accessors::view(int index, const std::string& usedBy, AccessorUse use, std:
 }
 
 // The loops are written to vectorize: a model of a million triangles is mostly this copy.
-std::vector<float> Accessors::floats(const View& v) {
+std::vector<float> Accessors::floats(const AccessorData& v) {
     const auto n = static_cast<std::size_t>(v.components);
     const std::size_t size = componentSize(v.componentType);
     std::vector<float> out(v.count * n);
@@ -379,7 +379,7 @@ std::vector<float> Accessors::floats(const View& v) {
     return out;
 }
 
-bool Accessors::appendPositions(const View& v, int accessor, const glm::mat3& m, const glm::vec3& offset,
+bool Accessors::appendPositions(const AccessorData& v, int accessor, const glm::mat3& m, const glm::vec3& offset,
                                 bool identity, std::vector<glm::vec3>& out) {
     const std::string where = "accessors[" + std::to_string(accessor) + "]";
     std::size_t first = out.size();
@@ -420,7 +420,7 @@ bool Accessors::appendPositions(const View& v, int accessor, const glm::mat3& m,
     return true;
 }
 
-std::size_t Accessors::appendNormals(const View& v, const glm::mat3& m, bool identity, std::vector<glm::vec3>& out) {
+std::size_t Accessors::appendNormals(const AccessorData& v, const glm::mat3& m, bool identity, std::vector<glm::vec3>& out) {
     std::size_t first = out.size();
     if (v.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
         append<glm::vec3>(v, out);
@@ -459,7 +459,7 @@ std::size_t Accessors::appendNormals(const View& v, const glm::mat3& m, bool ide
 
 
 template <typename Index>
-bool Accessors::readIndicesOf(const View& v, std::size_t vertexCount, int accessor, const std::string& where,
+bool Accessors::readIndicesOf(const AccessorData& v, std::size_t vertexCount, int accessor, const std::string& where,
                               std::vector<std::uint32_t>& sequence) {
     sequence.clear();
     append<Index>(v, sequence);
@@ -477,7 +477,7 @@ bool Accessors::readIndicesOf(const View& v, std::size_t vertexCount, int access
 }
 
 
-bool Accessors::readIndices(const View& v, std::size_t vertexCount, int accessor, const std::string& where,
+bool Accessors::readIndices(const AccessorData& v, std::size_t vertexCount, int accessor, const std::string& where,
                             std::vector<std::uint32_t>& sequence) {
     switch (v.componentType) {
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:

@@ -35,7 +35,7 @@ struct BufferBytes {
 // A validated accessor: `count` elements of `components` values of `componentType`, `stride`
 // bytes apart from `data`. A sparse accessor, or one without a bufferView (zeros), is read into
 // storage of its own first, with its substitutions applied; then it is like any other.
-struct View {
+struct AccessorData {
     const unsigned char* data = nullptr;
     std::size_t stride = 0;
     std::size_t count = 0;
@@ -67,31 +67,31 @@ public:
     // it. A sparse accessor, or one without a bufferView, of more than `maxCount` elements is
     // refused before it is made (a few bytes of JSON could ask for gigabytes); it is made once,
     // then reused. Every other accessor is bounded by its bufferView.
-    bool view(int index, const std::string& usedBy, AccessorUse use, std::size_t maxCount, View& v);
+    bool data(int index, const std::string& usedBy, AccessorUse use, std::size_t maxCount, AccessorData& v);
 
     // Appends the accessor's vec3s (of any type view() accepts) to `out`, transformed by `m`
     // and `offset` unless `identity`. Non-finite values are refused, also those a transform
     // overflows to. `accessor` names it in diagnostics.
-    bool appendPositions(const View& v, int accessor, const glm::mat3& m, const glm::vec3& offset, bool identity,
+    bool appendPositions(const AccessorData& v, int accessor, const glm::mat3& m, const glm::vec3& offset, bool identity,
                          std::vector<glm::vec3>& out);
 
     // Appends the accessor's normals, transformed by `m` (and normalized) unless `identity`
     // (untransformed normals are used as given: the shaders renormalize). A normal that is not
     // finite, zero, or becomes so under `m`, is appended as (0, 0, 0): the caller computes it.
     // Returns how many there were.
-    std::size_t appendNormals(const View& v, const glm::mat3& m, bool identity, std::vector<glm::vec3>& out);
+    std::size_t appendNormals(const AccessorData& v, const glm::mat3& m, bool identity, std::vector<glm::vec3>& out);
 
     // The view's elements as floats, `components` each (what view() accepted, converted).
-    std::vector<float> floats(const View& v);
+    std::vector<float> floats(const AccessorData& v);
 
     // The index accessor's values (any of the three index types) into `sequence`, each checked to
     // be below `vertexCount`; `where` names the primitive in diagnostics.
-    bool readIndices(const View& v, std::size_t vertexCount, int accessor, const std::string& where,
+    bool readIndices(const AccessorData& v, std::size_t vertexCount, int accessor, const std::string& where,
                      std::vector<std::uint32_t>& sequence);
 
 private:
     template <typename Index>
-    bool readIndicesOf(const View& v, std::size_t vertexCount, int accessor, const std::string& where,
+    bool readIndicesOf(const AccessorData& v, std::size_t vertexCount, int accessor, const std::string& where,
                        std::vector<std::uint32_t>& sequence);
 
     // Where `count` elements of `element` bytes, `stride` apart (0: packed), start at `byteOffset`
@@ -99,14 +99,14 @@ private:
     const unsigned char* range(int viewIndex, std::size_t byteOffset, std::size_t count, std::size_t element,
                                std::size_t& stride, const std::string& where);
     // A sparse accessor, or one without a bufferView, made in storage of its own.
-    bool materialize(const tinygltf::Accessor& a, const std::string& where, std::size_t element, View& v);
+    bool materialize(const tinygltf::Accessor& a, const std::string& where, std::size_t element, AccessorData& v);
 
     const tinygltf::Model& model_;
     std::vector<BufferBytes> buffers_;
     const std::string& file_;
     Diagnostics& out_;
     std::deque<std::vector<unsigned char>> made_; // materialized accessors
-    std::unordered_map<int, View> madeViews_;      // ...by accessor index
+    std::unordered_map<int, AccessorData> madeData_;      // ...by accessor index
 };
 
 } // namespace lab::gltf_detail

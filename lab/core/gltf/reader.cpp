@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 using gltf_detail::Accessors;
 using gltf_detail::AccessorUse;
 using gltf_detail::BufferBytes;
-using gltf_detail::View;
+using gltf_detail::AccessorData;
 using gltf_detail::FileGuard;
 using gltf_detail::ParsedModel;
 
@@ -68,8 +68,8 @@ std::vector<std::uint32_t> triangleList(std::vector<std::uint32_t> sequence, int
 struct Attributes {
     int positionAccessor = -1;
     int normalAccessor = -1; // -1: none, normals are computed
-    View positions;
-    View normals;
+    AccessorData positions;
+    AccessorData normals;
 };
 
 class Loader {
@@ -231,8 +231,8 @@ private:
                 continue;
             }
             const tinygltf::Value& index = attributes.Get(names[k]);
-            View v;
-            if (!index.IsInt() || !accessors_.view(index.GetNumberAsInt(), extWhere + "." + names[k],
+            AccessorData v;
+            if (!index.IsInt() || !accessors_.data(index.GetNumberAsInt(), extWhere + "." + names[k],
                                                    k == 1 ? AccessorUse::Rotation : AccessorUse::Position,
                                                    limits_.maxInstances, v)) {
                 return index.IsInt() ? false : error(extWhere + "." + names[k], "not an accessor index");
@@ -287,7 +287,7 @@ private:
             return error(where, "has no POSITION attribute");
         }
         attributes.positionAccessor = pos->second;
-        if (!accessors_.view(pos->second, where + ".attributes.POSITION", AccessorUse::Position, limits_.maxVertices,
+        if (!accessors_.data(pos->second, where + ".attributes.POSITION", AccessorUse::Position, limits_.maxVertices,
                              attributes.positions)) {
             return false;
         }
@@ -299,7 +299,7 @@ private:
             return true;
         }
         attributes.normalAccessor = nrm->second;
-        if (!accessors_.view(nrm->second, where + ".attributes.NORMAL", AccessorUse::Normal, limits_.maxVertices,
+        if (!accessors_.data(nrm->second, where + ".attributes.NORMAL", AccessorUse::Normal, limits_.maxVertices,
                              attributes.normals)) {
             return false;
         }
@@ -320,8 +320,8 @@ private:
             }
             return true;
         }
-        View indices;
-        if (!accessors_.view(prim.indices, where + ".indices", AccessorUse::Index, 3 * limits_.maxTriangles, indices)) {
+        AccessorData indices;
+        if (!accessors_.data(prim.indices, where + ".indices", AccessorUse::Index, 3 * limits_.maxTriangles, indices)) {
             return false;
         }
         if (indices.count > 3 * limits_.maxTriangles) {

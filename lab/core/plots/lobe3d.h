@@ -10,7 +10,7 @@
 //
 // The grid: θo = 0 … 90° in 1° steps (91 rings, the plot's resolution), φ = 0 … 360° in 4° steps
 // (91 meridians, the last one repeating the first so that the mesh closes without wrapping); and a
-// draft of it (θo by 5°, φ by 12°: 19 × 31, 7% of the samples) that the 3D lobe draws while its
+// coarse of it (θo by 5°, φ by 12°: 19 × 31, 7% of the samples) that the 3D lobe draws while its
 // inputs change frame after frame (a drag), whose in-plane meridians are the plot's samples too.
 // What it does not do: draw, project or cache (ui/plots/plots_3d.cpp does; the UI keeps grids by
 // LobeInputs).
@@ -34,15 +34,15 @@ struct GridSteps {
 };
 constexpr bool operator==(const GridSteps& x, const GridSteps& y) { return x.thetaDeg == y.thetaDeg && x.phiDeg == y.phiDeg; }
 inline constexpr GridSteps kLobeGrid{1, 4};
-inline constexpr GridSteps kLobeDraftGrid{5, 12};
+inline constexpr GridSteps kLobeCoarseGrid{5, 12};
 inline constexpr int kLobeRings = kLobeGrid.rings();         // 91
 inline constexpr int kLobeMeridians = kLobeGrid.meridians(); // 91
 inline constexpr float kLobeThetaStepDeg = static_cast<float>(kLobeGrid.thetaDeg);
 inline constexpr float kLobePhiStepDeg = static_cast<float>(kLobeGrid.phiDeg);
-static_assert(90 % kLobeGrid.thetaDeg == 0 && 180 % kLobeGrid.phiDeg == 0 && 90 % kLobeDraftGrid.thetaDeg == 0 &&
-              180 % kLobeDraftGrid.phiDeg == 0 && kLobeDraftGrid.thetaDeg % kLobeGrid.thetaDeg == 0 &&
-              kLobeDraftGrid.phiDeg % kLobeGrid.phiDeg == 0, "the draft's directions are the full grid's");
-static_assert(kLobeDraftGrid.rings() * kLobeDraftGrid.meridians() < kLobeRings * kLobeMeridians / 10);
+static_assert(90 % kLobeGrid.thetaDeg == 0 && 180 % kLobeGrid.phiDeg == 0 && 90 % kLobeCoarseGrid.thetaDeg == 0 &&
+              180 % kLobeCoarseGrid.phiDeg == 0 && kLobeCoarseGrid.thetaDeg % kLobeGrid.thetaDeg == 0 &&
+              kLobeCoarseGrid.phiDeg % kLobeGrid.phiDeg == 0, "the coarse grid's directions are the full grid's");
+static_assert(kLobeCoarseGrid.rings() * kLobeCoarseGrid.meridians() < kLobeRings * kLobeMeridians / 10);
 
 // V for θo, φ in degrees; exact (0 and ±1) at φ a multiple of 90°.
 glm::vec3 outgoingDirection(float thetaDeg, float phiDeg);

@@ -60,7 +60,7 @@ LobeVectors lobeVectors(float incidentDeg);
 const std::array<glm::vec2, 181>& outgoingDirections();
 
 // 181 samples, θo = -90 … 90; or every `stepDeg` degrees of them (a divisor of 90: the same
-// numbers at those angles), for a draft.
+// numbers at those angles), for a coarse plot.
 std::vector<PlotSample> reflectedIntensity(const LobeInputs& inputs, int stepDeg = 1);
 inline std::vector<PlotSample> reflectedIntensity(const Preset& preset, float incidentDeg) {
     return reflectedIntensity(lobeInputs(preset, incidentDeg));

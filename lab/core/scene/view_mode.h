@@ -46,7 +46,7 @@ struct ValueRange {
 };
 
 // How the scene is shown: the view and its options, and compare mode (set B beside set A).
-struct ViewSettings {
+struct DisplaySettings {
     ViewMode mode = ViewMode::Lit;
     int light = 0;                      // the factor views' light: an index into preset.lights
     ValuePalette palette = ValuePalette::Viridis;
@@ -58,7 +58,7 @@ struct ViewSettings {
     bool plotsAtProbe = false;          // the plots use the probed point's N, L and V
     bool compare = false;
     bool editingB = false; // the panel edits B
-    bool operator==(const ViewSettings&) const = default;
+    bool operator==(const DisplaySettings&) const = default;
 };
 
 // "Lit (all terms)", "D: microfacet distribution", ...

@@ -22,7 +22,7 @@ void words(const char* text) {
 
 // A factor's button: shows its view (or the lit model again, when it is shown), highlighted while
 // shown, greyed where it does not apply (its tooltip says why).
-void factor(const char* label, ViewMode mode, const Preset& preset, ViewSettings& view, bool onTheLine = true) {
+void factor(const char* label, ViewMode mode, const Preset& preset, DisplaySettings& view, bool onTheLine = true) {
     if (onTheLine) {
         sameLineIfFits(label);
     }
@@ -46,7 +46,7 @@ void factor(const char* label, ViewMode mode, const Preset& preset, ViewSettings
     }
 }
 
-void lightChoice(const Preset& preset, ViewSettings& view) {
+void lightChoice(const Preset& preset, DisplaySettings& view) {
     int count = static_cast<int>(preset.lights.size());
     view.light = std::clamp(view.light, 0, std::max(0, count - 1));
     if (count < 2) {
@@ -68,7 +68,7 @@ void lightChoice(const Preset& preset, ViewSettings& view) {
 }
 
 // Palette and range: what a value view is drawn with.
-void valueOptions(ViewSettings& view) {
+void valueOptions(DisplaySettings& view) {
     int palette = view.palette == ValuePalette::Grey ? 1 : 0;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
     if (ImGui::Combo("palette", &palette, "viridis\0grey\0")) {
@@ -94,7 +94,7 @@ void valueOptions(ViewSettings& view) {
 
 } // namespace
 
-void equationSection(const Preset& p, ViewSettings& view) {
+void equationSection(const Preset& p, DisplaySettings& view) {
     lightChoice(p, view);
     // I = Ke + Ia Ka + sum over the lights of Ia_i Ka + Att spot (Id Kd N.L + Is Ks S)
     words("I = Ke + Ia Ka + sum of  Ia Ka +");

@@ -10,6 +10,6 @@ namespace lab::ui {
 
 // Named for the GUI tests: "equation.<view>" (equation.d, equation.n-dot-l, ...), "equation.light",
 // "equation.palette", "equation.auto-range", "equation.range", "equation.wipe".
-void equationSection(const Preset& preset, ViewSettings& view);
+void equationSection(const Preset& preset, DisplaySettings& view);
 
 } // namespace lab::ui

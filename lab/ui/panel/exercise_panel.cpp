@@ -60,7 +60,7 @@ bool FieldGate::any(std::initializer_list<const char*> prefixes) const {
 }
 
 // The exercise being solved: what to do, how close the attempt is, hints, start again, leave.
-void exerciseSection(const ExerciseView& e, std::vector<Request>& requests) {
+void exerciseSection(const ExercisePanelModel& e, std::vector<Request>& requests) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(e.title.c_str());
     mark("exercise.title");
@@ -121,7 +121,7 @@ void exerciseList(const std::vector<std::filesystem::path>& files, std::vector<R
 }
 
 // "Make exercise": title, instructions, hints, the open fields (ticked below), save.
-void draftSection(ExerciseDraftView& d, bool browser, std::string& path, std::vector<Request>& requests) {
+void draftSection(DraftPanelModel& d, bool browser, std::string& path, std::vector<Request>& requests) {
     disabledWrapped("The scene when you pressed Make exercise is the target. Tick the fields students may change "
                     "(the boxes before them below), set those fields to where students start, then save.");
     ImGui::InputText("title", d.title);

@@ -16,7 +16,7 @@ namespace lab::ui {
 
 // An exercise being solved (core/exercise/exercise.h), as the panel shows it: only its open
 // fields can be edited, and its own section says what to do and how close the attempt is.
-struct ExerciseView {
+struct ExercisePanelModel {
     std::string title, instructions;
     std::vector<std::string> hints; // those shown so far
     int hintsLeft = 0;
@@ -27,7 +27,7 @@ struct ExerciseView {
 };
 
 // "Make exercise": the author's draft, edited in place (a checkbox beside every field opens it).
-struct ExerciseDraftView {
+struct DraftPanelModel {
     std::vector<std::string>* open = nullptr;
     std::string* title = nullptr;
     std::string* instructions = nullptr;
@@ -39,17 +39,17 @@ struct ExerciseDraftView {
 // free); while one is being made, every field with a checkbox before it that opens it to students;
 // both null: every field, no checkbox.
 struct FieldGate {
-    const ExerciseView* exercise = nullptr;
-    ExerciseDraftView* draft = nullptr;
+    const ExercisePanelModel* exercise = nullptr;
+    DraftPanelModel* draft = nullptr;
     // Whether the field at JSON path `path` gets its widget (drawing the draft's checkbox first).
     bool field(const std::string& path) const;
     // Whether a section holding the fields under these paths shows at all.
     bool any(std::initializer_list<const char*> prefixes) const;
 };
 
-void exerciseSection(const ExerciseView& exercise, std::vector<Request>& requests);
+void exerciseSection(const ExercisePanelModel& exercise, std::vector<Request>& requests);
 // The shipped exercises, a button each ("exercises.<file stem>"): opens it like a file.
 void exerciseList(const std::vector<std::filesystem::path>& files, std::vector<Request>& requests);
-void draftSection(ExerciseDraftView& draft, bool browser, std::string& path, std::vector<Request>& requests);
+void draftSection(DraftPanelModel& draft, bool browser, std::string& path, std::vector<Request>& requests);
 
 } // namespace lab::ui

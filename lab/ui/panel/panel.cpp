@@ -158,7 +158,7 @@ void brdfSection(Preset& p, const FieldGate& gate) {
     });
 }
 
-void shadingSection(Preset& p, ViewSettings& view, const FieldGate& gate) {
+void shadingSection(Preset& p, DisplaySettings& view, const FieldGate& gate) {
     fieldRowsOf("shading", p, nullptr, 0, gate, nothingAfter);
     fieldRowsOf("normal_matrix", p, nullptr, 0, gate, nothingAfter);
     if (gate.any({"terms"})) {
@@ -346,7 +346,7 @@ void cameraSection(Preset& p, std::vector<Request>& requests) {
 }
 
 // Compare mode's switch, and which set the panel edits.
-void compareRow(ViewSettings& view, const PanelInfo& info, std::vector<Request>& requests) {
+void compareRow(DisplaySettings& view, const PanelInfo& info, std::vector<Request>& requests) {
     std::string label = std::string("Compare: ") + (view.compare ? "on" : "off") + " (C)###compare";
     if (ImGui::Button(label.c_str())) {
         requests.push_back({Command::ToggleCompare});
@@ -409,7 +409,7 @@ void toolButtons(PanelState& state, std::vector<Request>& requests, bool solving
 
 } // namespace
 
-void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, PanelState& state,
+void controlPanel(Preset& preset, DisplaySettings& view, const PanelInfo& info, PanelState& state,
                   std::vector<Request>& requests, PanelPart part) {
     const bool all = part == PanelPart::All, model = all || part == PanelPart::Model,
                material = all || part == PanelPart::Material, lights = all || part == PanelPart::Lights;

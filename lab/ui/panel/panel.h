@@ -28,8 +28,8 @@ struct PanelInfo {
     bool compareStacked = false; // A above B rather than beside it
     bool browser = false;        // files by download and the page's picker, not by path
     const std::vector<std::filesystem::path>* exerciseFiles = nullptr; // the shipped exercises
-    const ExerciseView* exercise = nullptr; // an exercise is being solved
-    ExerciseDraftView* draft = nullptr;     // an exercise is being made
+    const ExercisePanelModel* exercise = nullptr; // an exercise is being solved
+    DraftPanelModel* draft = nullptr;     // an exercise is being made
 };
 
 // What the panel keeps between frames, and the workspace settings it edits in place.
@@ -52,7 +52,7 @@ enum class PanelPart { All, Model, Material, Lights };
 
 // Draws the panel's contents into the current ImGui window: edits `preset` (the set being
 // edited) and `view` in place, appends what it asks for to `requests`.
-void controlPanel(Preset& preset, ViewSettings& view, const PanelInfo& info, PanelState& state,
+void controlPanel(Preset& preset, DisplaySettings& view, const PanelInfo& info, PanelState& state,
                   std::vector<Request>& requests, PanelPart part = PanelPart::All);
 
 } // namespace lab::ui

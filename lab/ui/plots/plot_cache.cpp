@@ -35,7 +35,7 @@ bool operator==(const PlotCache::AttenuationKey& x, const PlotCache::Attenuation
     return x.coefficients == y.coefficients && x.maxDistance == y.maxDistance && x.at == y.at;
 }
 
-bool PlotCache::drafts(std::array<ChangeWatch, 3>& watches, const std::array<LobeInputs, 3>& inputs) {
+bool PlotCache::coarseSet(std::array<ChangeWatch, 3>& watches, const std::array<LobeInputs, 3>& inputs) {
     Change change = Change::Still; // the strongest of the three: Changed, else Held, else Still
     bool kept = true;
     for (std::size_t i = 0; i < inputs.size(); ++i) {
@@ -45,12 +45,12 @@ bool PlotCache::drafts(std::array<ChangeWatch, 3>& watches, const std::array<Lob
         }
         kept = kept && samples_.find(inputs[i]) != nullptr;
     }
-    return draft(change, kept);
+    return coarse(change, kept);
 }
 
-PlotCache::Samples PlotCache::samples(const LobeInputs& inputs, bool draft) {
-    if (draft) {
-        return drafts_.get(inputs, [&] { return reflectedIntensity(inputs, kDraftStepDeg); });
+PlotCache::Samples PlotCache::samples(const LobeInputs& inputs, bool coarse) {
+    if (coarse) {
+        return coarse_.get(inputs, [&] { return reflectedIntensity(inputs, kCoarseStepDeg); });
     }
     return samples_.get(inputs, [&] { return reflectedIntensity(inputs); });
 }
@@ -96,9 +96,9 @@ Lagged<std::vector<AlbedoSample>> PlotCache::laggingAlbedoCurve(Slot slot, LobeI
 }
 
 PlotCache::Points PlotCache::lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
-                                  const CurvePlacement& at, bool draft) {
-    return (draft ? draftLobes_ : lobes_).get(LobeKey{inputs, component, outer, scale, at}, [&] {
-        const std::vector<PlotSample>& set = *samples(inputs, draft);
+                                  const CurvePlacement& at, bool coarse) {
+    return (coarse ? coarseLobes_ : lobes_).get(LobeKey{inputs, component, outer, scale, at}, [&] {
+        const std::vector<PlotSample>& set = *samples(inputs, coarse);
         std::vector<glm::vec2> unit;
         if (at.polar) {
             unit = lobePoints(set, component, outer, scale);

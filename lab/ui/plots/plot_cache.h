@@ -144,30 +144,30 @@ public:
     }
     // Some readout drawn since beginFrame() was stale: another frame is due.
     bool owed() const { return owed_; }
-    // For views that keep their own drafts (the 3D lobe): where `inputs` stand in a change (observed
-    // by `watch`), and whether to draw a draft: during a change, unless the full result is kept; a
-    // draft in a frame whose inputs changed owes the frame after (a paused drag's release draws it).
+    // For views that keep their own coarse plots (the 3D lobe): where `inputs` stand in a change (observed
+    // by `watch`), and whether to draw a coarse plot: during a change, unless the full result is kept; a
+    // coarse in a frame whose inputs changed owes the frame after (a paused drag's release draws it).
     Change observe(ChangeWatch& watch, const LobeInputs& inputs) { return watch.observe(inputs, frame_, held_); }
-    bool draft(Change change, bool keptInFull) {
-        const bool drawDraft = change != Change::Still && !keptInFull;
-        owed_ = owed_ || (drawDraft && change == Change::Changed);
-        return drawDraft;
+    bool coarse(Change change, bool keptInFull) {
+        const bool drawCoarse = change != Change::Still && !keptInFull;
+        owed_ = owed_ || (drawCoarse && change == Change::Changed);
+        return drawCoarse;
     }
 
     using Samples = std::shared_ptr<const std::vector<PlotSample>>;
     using Points = std::shared_ptr<const std::vector<glm::vec2>>;
 
-    // reflectedIntensity(inputs), or a draft of it: every kDraftStepDeg degrees (kept apart, so that
-    // drafts never push out what the plots keep).
-    static constexpr int kDraftStepDeg = 3;
-    Samples samples(const LobeInputs& inputs, bool draft = false);
-    // Whether lobes drawn together (the overlay's three) are drawn from drafts: draft() for the
+    // reflectedIntensity(inputs), or a coarse copy of it: every kCoarseStepDeg degrees (kept apart, so that
+    // coarse plots never push out what the plots keep).
+    static constexpr int kCoarseStepDeg = 3;
+    Samples samples(const LobeInputs& inputs, bool coarse = false);
+    // Whether lobes drawn together (the overlay's three) are drawn from coarse plots: coarse() for the
     // change of any of them (observed by its watch), kept in full when all are.
-    bool drafts(std::array<ChangeWatch, 3>& watches, const std::array<LobeInputs, 3>& inputs);
+    bool coarseSet(std::array<ChangeWatch, 3>& watches, const std::array<LobeInputs, 3>& inputs);
     using AlbedoCurve = std::shared_ptr<const std::vector<AlbedoSample>>;
     // The screen points of one component of the lobe `inputs`, the outer ring at `outer`, thinned.
     Points lobe(const LobeInputs& inputs, PlotComponent component, float outer, RadialScale scale,
-                const CurvePlacement& at, bool draft = false);
+                const CurvePlacement& at, bool coarse = false);
     // Att(d) for d in [0, maxDistance] (attenuationCurve, 200 samples), thinned.
     Points attenuation(const glm::vec3& coefficients, float maxDistance, const CurvePlacement& at);
     // The albedo (core/plots/energy.h: the energy readouts' numbers, nullopt at ±90°) and ρ(θi) for
@@ -177,7 +177,7 @@ public:
     Lagged<std::vector<AlbedoSample>> laggingAlbedoCurve(Slot slot, LobeInputs inputs, double now);
 
     // How many sample sets and curves were computed rather than found (for the tests).
-    std::size_t computed() const { return samples_.made() + drafts_.made() + draftLobes_.made() + albedo_.made() + albedoCurves_.made() + lobes_.made() + attenuation_.made(); }
+    std::size_t computed() const { return samples_.made() + coarse_.made() + coarseLobes_.made() + albedo_.made() + albedoCurves_.made() + lobes_.made() + attenuation_.made(); }
 
 private:
     struct LobeKey {
@@ -208,8 +208,8 @@ private:
     // A frame uses at most 5 sample sets (A, B, three incident angles) and 7 curves; room for
     // more, so that switching back and forth (A and B, polar and Cartesian) finds them again.
     RecentlyUsed<LobeInputs, std::vector<PlotSample>> samples_{16};
-    RecentlyUsed<LobeInputs, std::vector<PlotSample>> drafts_{3};     // the overlay's three, while they change
-    RecentlyUsed<LobeKey, std::vector<glm::vec2>> draftLobes_{3};
+    RecentlyUsed<LobeInputs, std::vector<PlotSample>> coarse_{3};     // the overlay's three, while they change
+    RecentlyUsed<LobeKey, std::vector<glm::vec2>> coarseLobes_{3};
     RecentlyUsed<LobeInputs, std::optional<Albedo>> albedo_{8}; // A and B at the lobe's angle
     RecentlyUsed<LobeInputs, std::vector<AlbedoSample>> albedoCurves_{4}; // A and B, against θi
     RecentlyUsed<LobeKey, std::vector<glm::vec2>> lobes_{32};

@@ -13,10 +13,10 @@
 namespace lab::ui {
 
 // The plots window's views, one tab each in this order (plots.cpp's table names and draws them).
-enum class PlotView { Plane, Lobe3d, Energy };
+enum class PlotTab { Plane, Lobe3d, Energy };
 
 struct PlotSettings {
-    PlotView view = PlotView::Plane;
+    PlotTab view = PlotTab::Plane;
     int shownView = -1; // the view whose tab was open last frame (-1: none yet)
     RadialScale scale = RadialScale::Linear;
     bool cartesian = false;
@@ -24,7 +24,7 @@ struct PlotSettings {
     float lobeScale = 0.0f, overlayScale = 0.0f; // the outer circles' intensities (held while locked)
     float viewerDeg = 20.0f;                   // V in the lobe plot
     glm::vec3 overlayDeg{60.0f, 25.0f, 10.0f}; // the overlaid incident angles
-    std::array<ChangeWatch, 3> overlayChanges; // the overlay draws drafts while its lobes change
+    std::array<ChangeWatch, 3> overlayChanges; // the overlay draws coarse plots while its lobes change
     int attenuationLight = 0;
     int dragging = 0; // 0 none, 1 L, 2 V
     PlotCache cache;  // samples and curves of earlier frames, found again by their inputs

@@ -14,18 +14,18 @@ namespace lab::ui {
 
 namespace {
 
-// The views in the selector's order: a further view is its PlotView and one line here.
+// The views in the selector's order: a further view is its PlotTab and one line here.
 struct ViewEntry {
-    PlotView view;
+    PlotTab view;
     const char* name;
     const char* mark;
     void (*draw)(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe, const ProbeLobe* point);
 };
 const ViewEntry kViews[] = {
-    {PlotView::Plane, "Plane", "plot.view.plane", planeView},
-    {PlotView::Lobe3d, "3D lobe", "plot.view.lobe3d",
+    {PlotTab::Plane, "Plane", "plot.view.plane", planeView},
+    {PlotTab::Lobe3d, "3D lobe", "plot.view.lobe3d",
      [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*, const ProbeLobe* point) { lobe3dPanel(a, b, s, point); }},
-    {PlotView::Energy, "Energy", "plot.view.energy",
+    {PlotTab::Energy, "Energy", "plot.view.energy",
      [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*, const ProbeLobe*) { energyPanel(a, b, s); }},
 };
 

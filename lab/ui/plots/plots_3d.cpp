@@ -24,7 +24,7 @@ namespace lab::ui {
 
 bool operator==(const Lobe3dKey& x, const Lobe3dKey& y) {
     auto same = [](const ImVec4& p, const ImVec4& q) { return p.x == q.x && p.y == q.y && p.z == q.z && p.w == q.w; };
-    return x.a == y.a && x.hasB == y.hasB && (!x.hasB || (x.b == y.b && x.draftB == y.draftB)) && x.draftA == y.draftA &&
+    return x.a == y.a && x.hasB == y.hasB && (!x.hasB || (x.b == y.b && x.coarseB == y.coarseB)) && x.coarseA == y.coarseA &&
            x.component == y.component &&
            x.scale == y.scale && x.outer == y.outer && x.yawDeg == y.yawDeg && x.pitchDeg == y.pitchDeg &&
            same(x.lobeRect, y.lobeRect) && same(x.mapRect, y.mapRect);
@@ -183,8 +183,8 @@ void mapMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
 
 // B as rings every 15° of θo and meridians every 24° of φ (both grids' steps divide them).
 void wireframe(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
-    static_assert(15 % kLobeGrid.thetaDeg == 0 && 15 % kLobeDraftGrid.thetaDeg == 0 && 24 % kLobeGrid.phiDeg == 0 &&
-                  24 % kLobeDraftGrid.phiDeg == 0);
+    static_assert(15 % kLobeGrid.thetaDeg == 0 && 15 % kLobeCoarseGrid.thetaDeg == 0 && 24 % kLobeGrid.phiDeg == 0 &&
+                  24 % kLobeCoarseGrid.phiDeg == 0);
     const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
     // The surface's points on the lines only.
     auto point = [&](int i, int j) {
@@ -238,7 +238,7 @@ struct View {
     const Preset* a = nullptr;
     LobeInputs inA, inB;
     std::shared_ptr<const HemisphereGrid> gridA, gridB;
-    bool draftA = false, draftB = false; // drawn from the draft grid while the inputs change
+    bool coarseA = false, coarseB = false; // drawn from the coarse grid while the inputs change
     LobeMaximum peak;
     LobeVectors vectors;
     glm::vec3 viewer{0.0f, 1.0f, 0.0f}; // V: the plane plot's, or a probed point's (out of the plane too)
@@ -428,12 +428,12 @@ void pointTokens(Readout& r, const ProbeLobe& at) {
     r.lineBreak();
 }
 
-// The grid for `inputs`: the full one, or the draft during a change when the full one is not kept
+// The grid for `inputs`: the full one, or the coarse one during a change when the full one is not kept
 // (a frame whose inputs changed owes the frame after, which draws the full one).
-std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, const LobeInputs& inputs, bool& draft) {
+std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, const LobeInputs& inputs, bool& coarse) {
     Lobe3dState& st = s.lobe3d;
-    draft = s.cache.draft(s.cache.observe(watch, inputs), st.grids.find({inputs, false}) != nullptr);
-    return st.grids.get({inputs, draft}, [&] { return sampleHemisphere(inputs, draft ? kLobeDraftGrid : kLobeGrid); });
+    coarse = s.cache.coarse(s.cache.observe(watch, inputs), st.grids.find({inputs, false}) != nullptr);
+    return st.grids.get({inputs, coarse}, [&] { return sampleHemisphere(inputs, coarse ? kLobeCoarseGrid : kLobeGrid); });
 }
 
 View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, const ProbeLobe* point) {
@@ -441,10 +441,10 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
     v.a = &a;
     Lobe3dState& st = s.lobe3d;
     v.inA = point ? probeLobeInputs(a, *point) : lobeInputs(a, a.plotIncidentDeg);
-    v.gridA = grid(s, st.watchA, v.inA, v.draftA);
+    v.gridA = grid(s, st.watchA, v.inA, v.coarseA);
     if (b) {
         v.inB = point ? probeLobeInputs(*b, *point) : lobeInputs(*b, a.plotIncidentDeg);
-        v.gridB = grid(s, st.watchB, v.inB, v.draftB);
+        v.gridB = grid(s, st.watchB, v.inB, v.coarseB);
     }
     v.viewer = point ? point->viewer : outgoingDirection(std::fabs(s.viewerDeg), s.viewerDeg >= 0.0f ? 0.0f : 180.0f);
     v.atPoint = point != nullptr;
@@ -457,9 +457,9 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
         v.largest = std::max(v.largest, v.gridB->largest(st.component));
     }
     v.outer = outerRing(v.largest);
-    v.peak = *st.peaks.get({{v.inA, v.draftA}, st.component}, [&] { return lobeMaximum(v.inA, *v.gridA, st.component); });
-    // The draft's peak is found from the draft grid: muted, like a lagging number, until the full grid's.
-    const Ink color = v.draftA ? Ink::Muted : componentInk(st.component);
+    v.peak = *st.peaks.get({{v.inA, v.coarseA}, st.component}, [&] { return lobeMaximum(v.inA, *v.gridA, st.component); });
+    // The coarse lobe's peak is found from the coarse grid: muted, like a lagging number, until the full grid's.
+    const Ink color = v.coarseA ? Ink::Muted : componentInk(st.component);
     if (!(v.largest > kNothingLit)) {
         v.readout.add(format("%s: 0 everywhere (term switched off?)", componentName(st.component)), Ink::Text);
     } else if (st.component == PlotComponent::Diffuse) {
@@ -470,7 +470,7 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
                              double(v.peak.phiDeg), kDeg),
                       color);
         const float offR = glm::degrees(std::acos(glm::clamp(glm::dot(v.peak.V, v.vectors.R), -1.0f, 1.0f)));
-        v.readout.add(format("(%.1f%s from R)", double(offR), kDeg), v.draftA ? Ink::Muted : Ink::Mirror);
+        v.readout.add(format("(%.1f%s from R)", double(offR), kDeg), v.coarseA ? Ink::Muted : Ink::Mirror);
     }
     if (b && v.largest > kNothingLit) {
         v.readout.add("B: wireframe", Ink::Compare, true);
@@ -491,8 +491,8 @@ Lobe3dKey keyFor(const View& v, const PlotSettings& s, const ImVec4& lobeBox, co
     key.a = v.inA;
     key.hasB = v.gridB != nullptr;
     key.b = v.inB;
-    key.draftA = v.draftA;
-    key.draftB = v.draftB;
+    key.coarseA = v.coarseA;
+    key.coarseB = v.coarseB;
     key.component = s.lobe3d.component;
     key.scale = s.scale;
     key.outer = v.outer;

@@ -15,8 +15,8 @@
 // the projected, sorted mesh once per view (inputs, component, scale, camera and canvas), both
 // kept in Lobe3dState's cache with the peak: a frame in which nothing changed copies the kept
 // mesh (the surface and the map are 8,281 vertices each: ImGui's 16-bit indices have room). While
-// the inputs change (a drag: ui/plots/plot_cache.h's ChangeWatch), the view draws the draft grid
-// (kLobeDraftGrid, 589 samples) and its peak, the numbers muted, and owes the app a frame: the first
+// the inputs change (a drag: ui/plots/plot_cache.h's ChangeWatch), the view draws the coarse grid
+// (kLobeCoarseGrid, 589 samples) and its peak, the numbers muted, and owes the app a frame: the first
 // frame after the change draws the full grid. What it does not do: call GL
 // (ImGui draw lists only), or scroll (it fits the region it is given).
 #pragma once
@@ -51,7 +51,7 @@ struct Lobe3dMesh {
 struct Lobe3dKey {
     LobeInputs a, b;
     bool hasB = false;
-    bool draftA = false, draftB = false; // drawn from the draft grids
+    bool coarseA = false, coarseB = false; // drawn from the coarse grids
     PlotComponent component = PlotComponent::Total;
     RadialScale scale = RadialScale::Linear;
     float outer = 1.0f;
@@ -64,12 +64,12 @@ struct Lobe3dState {
     float yawDeg = -35.0f;  // about N, from the plane plot's view (camera on +z)
     float pitchDeg = 25.0f; // above the surface, 0 to 90
     PlotComponent component = PlotComponent::Total;
-    // A grid by its inputs and whether it is the draft: A's and B's, full and draft.
+    // A grid by its inputs and whether it is the coarse one: A's and B's, full and coarse.
     using GridKey = std::pair<LobeInputs, bool>;
     RecentlyUsed<GridKey, HemisphereGrid> grids{6};
     RecentlyUsed<Lobe3dKey, Lobe3dMesh> meshes{2};
     RecentlyUsed<std::pair<GridKey, PlotComponent>, LobeMaximum> peaks{2}; // A's, for the readout
-    ChangeWatch watchA, watchB; // whether A's and B's inputs are in a change (a draft then)
+    ChangeWatch watchA, watchB; // whether A's and B's inputs are in a change (a coarse plot then)
     // How many grids, meshes and peaks were computed rather than found (for the tests).
     std::size_t computed() const { return grids.made() + meshes.made() + peaks.made(); }
 };

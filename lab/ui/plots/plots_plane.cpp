@@ -51,7 +51,7 @@ struct Lobes {
 
 struct Overlay {
     std::array<LobeInputs, 3> inputs;
-    bool draft = false; // every PlotCache::kDraftStepDeg degrees, while the lobes change frame after frame
+    bool coarse = false; // every PlotCache::kCoarseStepDeg degrees, while the lobes change frame after frame
     std::array<PlotCache::Samples, 3> sets;
     float largest = 0, outer = 0;
     Readout readout;
@@ -142,19 +142,19 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p,
 
 Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
     Overlay o;
-    // During a change (a drag), a draft of the three (every 3rd degree: all three, so that they share
+    // During a change (a drag), a coarse copy of the three (every 3rd degree: all three, so that they share
     // one scale), its readout muted; the first frame after the change (owed) draws them in full.
     for (std::size_t i = 0; i < 3; ++i) {
         o.inputs[i] = lobeInputs(a, s.overlayDeg[static_cast<int>(i)]);
     }
-    o.draft = s.cache.drafts(s.overlayChanges, o.inputs);
+    o.coarse = s.cache.coarseSet(s.overlayChanges, o.inputs);
     for (std::size_t i = 0; i < 3; ++i) {
-        o.sets[i] = s.cache.samples(o.inputs[i], o.draft);
+        o.sets[i] = s.cache.samples(o.inputs[i], o.coarse);
     }
     o.largest = largestTotal({o.sets[0].get(), o.sets[1].get(), o.sets[2].get()});
     o.outer = scaleMaximum(outerRing(o.largest), s.lockScale, s.overlayScale);
     o.readout.add("total for each incident angle;", Ink::Text);
-    scaleTokens(o.readout, o.outer, o.largest, s.lockScale, "max of the three", o.draft ? Ink::Muted : Ink::Text);
+    scaleTokens(o.readout, o.outer, o.largest, s.lockScale, "max of the three", o.coarse ? Ink::Muted : Ink::Text);
     o.readout.measure(p);
     return o;
 }
@@ -384,7 +384,7 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
         const Polar f = polarFrame(canvas.origin(), canvas.width, canvas.height, plot.style, false);
         polarGrid(plot.canvas, f, o.outer, s.scale, false);
         for (std::size_t i = 0; i < 3; ++i) {
-            const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, placementOf(f), o.draft);
+            const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, placementOf(f), o.coarse);
             plot.canvas.line(*curve, plot.style.stroke(), overlayInk(i));
         }
         for (std::size_t i = 0; i < 3; ++i) {

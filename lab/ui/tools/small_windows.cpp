@@ -39,7 +39,7 @@ void rgb(const char* name, const glm::vec3& v) { ImGui::Text("%-18s %.4f  %.4f  
 
 // "plots at this point": the plots take this point's geometry and light (core/plots/probe_lobe.h),
 // for one light, the factor views' (view.light); the preset is not changed.
-void plotsHere(const Preset& preset, ViewSettings& view) {
+void plotsHere(const Preset& preset, DisplaySettings& view) {
     ImGui::Checkbox("plots at this point", &view.plotsAtProbe);
     mark("probe.plots-here");
     if (ImGui::IsItemHovered()) {
@@ -69,7 +69,7 @@ void plotsHere(const Preset& preset, ViewSettings& view) {
 
 } // namespace
 
-void probeWindow(const ProbeResult& probe, const Preset& preset, ViewSettings& view, bool& open, float x, float y) {
+void probeWindow(const ProbeResult& probe, const Preset& preset, DisplaySettings& view, bool& open, float x, float y) {
     if (!open) {
         return;
     }

@@ -18,6 +18,6 @@ void helpWindow(bool& open);
 
 // Opens at `position` (screen units) the first time. Its "plots at this point" box switches
 // view.plotsAtProbe, and with more than one light chooses view.light, the light they use.
-void probeWindow(const ProbeResult& probe, const Preset& preset, ViewSettings& view, bool& open, float x, float y);
+void probeWindow(const ProbeResult& probe, const Preset& preset, DisplaySettings& view, bool& open, float x, float y);
 
 } // namespace lab::ui

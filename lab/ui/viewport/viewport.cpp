@@ -320,7 +320,7 @@ std::string fitText(const std::string& text, float width) {
 // The header: which file and what the model shows (the view mode when it is not the lit image).
 // One line, whatever the window: the model's viewport keeps its size from preset to preset. Where
 // the line is too long the file's name gives way first ("13-cook-torr... *"), then the rest.
-std::string headerText(const OverlayModel& m, float width) {
+std::string headerText(const CaptionStrips& m, float width) {
     std::string rest;
     if (!m.b) { // in compare mode each half's label says it
         rest += "  |  " + setSummary("", *m.a);
@@ -339,7 +339,7 @@ std::string frameTimeText(float ms) {
     std::snprintf(text, sizeof text, "%.1f ms/frame", std::min(ms, 9999.9f));
     return text;
 }
-float frameTimeRoom(const OverlayModel& m) {
+float frameTimeRoom(const CaptionStrips& m) {
     return m.frameMs ? ImGui::CalcTextSize(frameTimeText(*m.frameMs).c_str()).x + 2.0f * inset() : 0.0f;
 }
 
@@ -393,7 +393,7 @@ void strip(const Rect& r, ImDrawList* dl) {
     }
 }
 
-void header(const OverlayModel& m, const Rect& r, ImDrawList* dl) {
+void header(const CaptionStrips& m, const Rect& r, ImDrawList* dl) {
     Clip clip(dl, r);
     float pad = inset();
     std::string head = headerText(m, r.w - 2 * pad);
@@ -403,7 +403,7 @@ void header(const OverlayModel& m, const Rect& r, ImDrawList* dl) {
 }
 
 // The toast at the footer's left, wrapped to its width; the frame time at its right while shown.
-void footer(const OverlayModel& m, const Rect& r, ImDrawList* dl) {
+void footer(const CaptionStrips& m, const Rect& r, ImDrawList* dl) {
     Clip clip(dl, r);
     float pad = inset();
     if (m.frameMs) {
@@ -422,7 +422,7 @@ void footer(const OverlayModel& m, const Rect& r, ImDrawList* dl) {
     }
 }
 
-void compareLabels(const OverlayModel& m, const Layout& layout, ImDrawList* dl) {
+void compareLabels(const CaptionStrips& m, const Layout& layout, ImDrawList* dl) {
     // The line between the halves, at the top (stacked) or the left of B's label and model.
     const Rect &b = layout.halves[1], &bLabel = layout.labels[1];
     ImVec2 end = layout.compareStacked ? ImVec2(b.x + b.w, bLabel.y) : ImVec2(b.x, b.y + b.h);
@@ -467,7 +467,7 @@ void probeMarker(const Preset& scene, const glm::vec3& world, const Rect& r, ImD
 
 } // namespace
 
-TextRoom measureText(const OverlayModel& m, const Rect& view) {
+TextRoom measureText(const CaptionStrips& m, const Rect& view) {
     TextRoom room;
     float line = ImGui::GetFontSize(), pad = inset();
     room.header = line + 2 * pad; // one line (headerText)
@@ -484,7 +484,7 @@ TextRoom measureText(const OverlayModel& m, const Rect& view) {
     return room;
 }
 
-void viewOverlay(const OverlayModel& m, const Layout& layout) {
+void captionStrips(const CaptionStrips& m, const Layout& layout) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     for (const Rect* r : {&layout.header, &layout.captionBand, &layout.legend, &layout.footer}) {
         strip(*r, dl);

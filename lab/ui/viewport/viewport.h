@@ -5,7 +5,7 @@
 // light marker moves that light in the plane parallel to the image), and reports a click that
 // did not move as a probe, and a drag that starts on the probe's marker as the pixels it passes. lightMarkers() draws the lights: numbered markers (at the view's edge
 // for lights outside it), spot cones and directional lights' rays, clipped to the model's
-// viewport. viewOverlay() draws the header (file, shading, BRDF, view mode), the caption, the
+// viewport. captionStrips() draws the header (file, shading, BRDF, view mode), the caption, the
 // footer (toast, frame time) and the compare labels, each in its own strip beside the model
 // (ui/layout.h placeText), and the probe's marker on the model, with the point's lobe in "plots at
 // the probe" mode (ui/viewport/point_lobe.h). All of it goes under ImGui's
@@ -60,7 +60,7 @@ ViewportEvents viewportControls(Preset& scene, const Rect& active, const Rect& w
 // with `shapes` the spot cones and the directional lights' rays.
 void lightMarkers(const Preset& scene, const Rect& r, int draggedLight, bool shapes);
 
-struct OverlayModel {
+struct CaptionStrips {
     std::string documentName;
     bool dirty = false;
     const Preset* a = nullptr;
@@ -77,12 +77,12 @@ struct OverlayModel {
     bool wipeDragged = false;
 };
 
-// What the overlay's text needs, measured with the current font: placeText (ui/layout.h) gives
+// What the caption strips' text needs, measured with the current font: placeText (ui/layout.h) gives
 // each piece its place around the model's viewport.
-TextRoom measureText(const OverlayModel& model, const Rect& view);
+TextRoom measureText(const CaptionStrips& model, const Rect& view);
 
 // The text in the places placeText gave it, on strips of their own, and the probe's marker (and
 // lobe) on the model. Nothing of it is drawn over the model's viewport but those.
-void viewOverlay(const OverlayModel& model, const Layout& layout);
+void captionStrips(const CaptionStrips& model, const Layout& layout);
 
 } // namespace lab::ui

@@ -1,5 +1,5 @@
-// overlay.vert - the lines drawn over the shaded model: the triangles' edges (the wireframe) and
-// each vertex's normal as a short line, in one flat colour (lab/render/overlay.cpp).
+// wireframe.vert - the lines drawn over the shaded model: the triangles' edges (the wireframe) and
+// each vertex's normal as a short line, in one flat colour (lab/render/wireframe.cpp).
 //
 // Prepended at compile time (lab/render/shader.cpp): the version line and the precision
 // statements; none of the lighting files (the lines are not lit).

@@ -1,5 +1,5 @@
-// overlay.cpp — the wireframe's and the normals' line buffers, and their draw.
-#include "render/overlay.h"
+// wireframe.cpp — the wireframe's and the normals' line buffers, and their draw.
+#include "render/wireframe.h"
 
 #include "core/scene/transforms.h"
 #include "core/lighting/lighting.h"
@@ -47,7 +47,7 @@ std::size_t normalLineStep(std::size_t vertexCount) {
 }
 
 //----------------------------------------------------------------------------------------
-// OverlayLines
+// WireframeLines
 //----------------------------------------------------------------------------------------
 
 namespace {
@@ -68,7 +68,7 @@ void bindPositionNormal(GLuint buffer, GLuint divisor) {
 
 } // namespace
 
-OverlayLines::OverlayLines(const Mesh& mesh, GLuint vertices) : mesh_(mesh), vertices_(vertices) {
+WireframeLines::WireframeLines(const Mesh& mesh, GLuint vertices) : mesh_(mesh), vertices_(vertices) {
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (const glm::vec3& p : mesh.positions) {
         lo = glm::min(lo, p);
@@ -77,7 +77,7 @@ OverlayLines::OverlayLines(const Mesh& mesh, GLuint vertices) : mesh_(mesh), ver
     diagonal_ = mesh.positions.empty() ? glm::vec3(0.0f) : hi - lo;
 }
 
-OverlayLines::~OverlayLines() {
+WireframeLines::~WireframeLines() {
     glDeleteVertexArrays(1, &edgeVao_); // zero names are ignored
     glDeleteBuffers(1, &edgeEbo_);
     glDeleteVertexArrays(1, &normalVao_);
@@ -85,7 +85,7 @@ OverlayLines::~OverlayLines() {
     glDeleteBuffers(1, &tipVbo_);
 }
 
-void OverlayLines::drawEdges() {
+void WireframeLines::drawEdges() {
     if (!edgeVao_) {
         std::vector<std::uint32_t> pairs = edgeIndices(mesh_.indices);
         glGenVertexArrays(1, &edgeVao_);
@@ -102,13 +102,13 @@ void OverlayLines::drawEdges() {
     glBindVertexArray(0);
 }
 
-// One instance a line, its two vertices told apart by a_tip (overlay.vert), so the mesh's own
+// One instance a line, its two vertices told apart by a_tip (wireframe.vert), so the mesh's own
 // buffer serves unless only every k-th vertex is drawn: a compact copy of those then (a stride
 // of k vertices would do without one, but WebGL2 allows strides up to 255 bytes). a_tip comes
 // from a buffer that advances per vertex, not from gl_VertexID: the first WebGL 2.0 spec (and
 // browsers that kept to it) refuses an instanced draw in which every attribute advances per
 // instance.
-void OverlayLines::drawNormals() {
+void WireframeLines::drawNormals() {
     if (!normalVao_) {
         std::size_t step = normalLineStep(mesh_.positions.size());
         GLuint source = vertices_;
@@ -141,36 +141,36 @@ void OverlayLines::drawNormals() {
     glBindVertexArray(0);
 }
 
-OverlayLines& GpuMesh::overlay() {
+WireframeLines& GpuMesh::wireframe() {
     if (!overlay_) {
-        overlay_ = std::make_unique<OverlayLines>(*mesh_, vbo_);
+        overlay_ = std::make_unique<WireframeLines>(*mesh_, vbo_);
     }
     return *overlay_;
 }
 
 //----------------------------------------------------------------------------------------
-// OverlayProgram
+// WireframeProgram
 //----------------------------------------------------------------------------------------
 
-std::unique_ptr<OverlayProgram> OverlayProgram::build(Diagnostics& diagnostics) {
-    std::optional<GLuint> id = buildPlainProgram("overlay.vert", "overlay.frag", diagnostics);
-    return id ? std::unique_ptr<OverlayProgram>(new OverlayProgram(*id)) : nullptr;
+std::unique_ptr<WireframeProgram> WireframeProgram::build(Diagnostics& diagnostics) {
+    std::optional<GLuint> id = buildPlainProgram("wireframe.vert", "wireframe.frag", diagnostics);
+    return id ? std::unique_ptr<WireframeProgram>(new WireframeProgram(*id)) : nullptr;
 }
 
-OverlayProgram::OverlayProgram(GLuint id)
+WireframeProgram::WireframeProgram(GLuint id)
     : id_(id), modelView_(glGetUniformLocation(id, "u_modelView")),
       projection_(glGetUniformLocation(id, "u_projection")), normalMatrix_(glGetUniformLocation(id, "u_normalMatrix")),
       normalLength_(glGetUniformLocation(id, "u_normalLength")), depthBias_(glGetUniformLocation(id, "u_depthBias")),
       color_(glGetUniformLocation(id, "u_color")) {}
 
-OverlayProgram::~OverlayProgram() { glDeleteProgram(id_); }
+WireframeProgram::~WireframeProgram() { glDeleteProgram(id_); }
 
-void OverlayProgram::draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewport,
-                          const OverlayOptions& options) const {
+void WireframeProgram::draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewport,
+                          const WireframeOptions& options) const {
     if ((!options.wireframe && !options.vertexNormals) || viewport.width < 1 || viewport.height < 1) {
         return;
     }
-    OverlayLines& lines = mesh.overlay();
+    WireframeLines& lines = mesh.wireframe();
     viewportPart(viewport, options.fromX, options.toX);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
@@ -210,11 +210,11 @@ void OverlayProgram::draw(const Preset& preset, GpuMesh& mesh, const Viewport& v
 //----------------------------------------------------------------------------------------
 
 void drawViewOverlays(Renderer& renderer, const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
-                      const Viewport& viewport, const ViewDraw& draw, bool valueView) {
-    OverlayOptions overlay{.wireframe = draw.wireframe, .vertexNormals = draw.vertexNormals};
+                      const Viewport& viewport, const ViewportDraw& draw, bool valueView) {
+    WireframeOptions overlay{.wireframe = draw.wireframe, .vertexNormals = draw.vertexNormals};
     overlay.background = valueView ? glm::vec3(0.0f) : preset.background;
     if (draw.wipe && wireframeColor(overlay.background) != wireframeColor(preset.background)) {
-        OverlayOptions lit = overlay; // the lit side's background: a colour of its own there
+        WireframeOptions lit = overlay; // the lit side's background: a colour of its own there
         lit.background = preset.background;
         lit.toX = overlay.fromX = draw.options.fromX;
         renderer.drawOverlay(preset, mesh, viewport, lit);

@@ -1,4 +1,4 @@
-// overlay_test.cpp — the shading-rate views over the shaded model (render/overlay.h): the
+// wireframe_test.cpp — the shading-rate views over the shaded model (render/wireframe.h): the
 // wireframe along the edges of the faces seen and not along the hidden ones, the vertex normals
 // sticking out of the silhouette, and nothing at all with both switched off.
 //
@@ -7,7 +7,7 @@
 #include "core/scene/transforms.h"
 #include "core/lighting/lighting.h"
 #include "gl_suite.h"
-#include "render/overlay.h"
+#include "render/wireframe.h"
 #include "render/renderer.h"
 
 #include <gtest/gtest.h>
@@ -71,7 +71,7 @@ constexpr int kWidth = 200, kHeight = 150;
 class Overlay : public GlSuite<> {
 protected:
     // The model with `options` drawn over it, top row first.
-    Image render(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const OverlayOptions& options) {
+    Image render(const Preset& preset, const std::shared_ptr<const Mesh>& mesh, const WireframeOptions& options) {
         Framebuffer target(kWidth, kHeight);
         EXPECT_TRUE(target.complete());
         target.bind();
@@ -209,7 +209,7 @@ TEST_F(Overlay, BothOffChangesNoByte) {
     preset.model.subdivisions = {16, 8};
     auto mesh = std::make_shared<const Mesh>(makeBuiltin(preset.model.builtin, preset.model.subdivisions));
     const Image plain = render(preset, mesh, {});
-    OverlayOptions off;
+    WireframeOptions off;
     off.background = preset.background;
     EXPECT_EQ(render(preset, mesh, off).rgb, plain.rgb);
     EXPECT_NE(render(preset, mesh, {.wireframe = true}).rgb, plain.rgb) << "the comparison can fail";
@@ -219,19 +219,19 @@ TEST_F(Overlay, BothOffChangesNoByte) {
 TEST_F(Overlay, DrawViewFollowsTheViewSettings) {
     const Preset preset = cubePreset(Shading::Phong);
     auto mesh = std::make_shared<const Mesh>(makeBuiltin(preset.model.builtin, preset.model.subdivisions));
-    auto viaView = [&](const ViewSettings& settings) {
+    auto viaView = [&](const DisplaySettings& settings) {
         Framebuffer target(kWidth, kHeight);
         target.bind();
         drawView(*renderer_, preset, mesh, Viewport{0, 0, kWidth, kHeight}, viewDraw(settings));
         return target.readRgb().rgb;
     };
-    ViewSettings settings;
+    DisplaySettings settings;
     EXPECT_EQ(viaView(settings), render(preset, mesh, {}).rgb);
     settings.wireframe = true;
     EXPECT_EQ(viaView(settings), render(preset, mesh, {.wireframe = true, .background = preset.background}).rgb);
     settings.vertexNormals = true;
     EXPECT_EQ(viaView(settings), render(preset, mesh, {true, true, preset.background}).rgb);
-    EXPECT_NE(viewDraw(settings), viewDraw(ViewSettings{})) << "a cached view is drawn again when they change";
+    EXPECT_NE(viewDraw(settings), viewDraw(DisplaySettings{})) << "a cached view is drawn again when they change";
 }
 
 // On a wipe the lit side keeps the preset's background and a value view's side is black: on a
@@ -240,7 +240,7 @@ TEST_F(Overlay, OnAWipeEachSideOfTheWireframeContrastsWithItsBackground) {
     Preset preset = cubePreset(Shading::Phong);
     preset.background = glm::vec3(1.0f);
     auto mesh = std::make_shared<const Mesh>(makeBuiltin(preset.model.builtin, preset.model.subdivisions));
-    ViewSettings settings;
+    DisplaySettings settings;
     settings.mode = ViewMode::NdotL;
     settings.wipe = true;
     settings.wireframe = true;

@@ -1,15 +1,15 @@
-// overlay.h — the shading-rate views drawn over the shaded model: the wireframe (every triangle
+// wireframe.h — the shading-rate views drawn over the shaded model: the wireframe (every triangle
 // edge once) and the vertex normals as short lines, so a class sees how many vertices the
 // lighting is evaluated at and where (issue 26, "See the equation on the model").
 //
 // Drawn after the model into the same framebuffer, keeping its depth: a line on the surface is
-// pulled a little toward the eye (overlay.vert) and wins the depth test, a line on the far side
+// pulled a little toward the eye (wireframe.vert) and wins the depth test, a line on the far side
 // stays hidden. The same for every shading: flat shading draws the same positions, so the same
 // edges. GLES 3.0 / WebGL2 only — no glPolygonMode, no geometry shader — and lines one pixel wide
-// (WebGL's only width). A mesh's line buffers are made the first time an overlay draws it and
+// (WebGL's only width). A mesh's line buffers are made the first time the wireframe or the normals draw it and
 // freed with its GpuMesh.
-// It does not clear or draw the model (Renderer::draw) and does not decide when an overlay is
-// shown (ViewSettings, viewDraw).
+// It does not clear or draw the model (Renderer::draw) and does not decide when they are
+// shown (DisplaySettings, viewDraw).
 #pragma once
 
 #include "core/scene/mesh.h"
@@ -34,7 +34,7 @@ inline constexpr float kNormalLineShare = 0.06f;
 // At most this many normals are drawn: above it, every k-th vertex's (normalLineStep), so a
 // million-triangle model stays cheap and readable.
 inline constexpr std::size_t kMaxNormalLines = 50'000;
-// How far a line is pulled toward the eye (overlay.vert), in pixels' footprints: how far apart
+// How far a line is pulled toward the eye (wireframe.vert), in pixels' footprints: how far apart
 // two pixels are on a surface facing the eye at the line's distance. A line's pixel lies up to
 // about half a pixel off the edge it draws, where the triangle's depth differs from the line's by
 // that offset times the tangent of the angle the triangle is seen at: three footprints cover
@@ -60,13 +60,13 @@ std::vector<std::uint32_t> edgeIndices(std::span<const std::uint32_t> triangles)
 std::size_t normalLineStep(std::size_t vertexCount);
 
 // The lines of one GpuMesh on the GPU, each kind built the first time it is drawn.
-class OverlayLines {
+class WireframeLines {
 public:
     // `vertices`: the GpuMesh's interleaved position + normal buffer, shared (not owned).
-    OverlayLines(const Mesh& mesh, GLuint vertices);
-    ~OverlayLines();
-    OverlayLines(const OverlayLines&) = delete;
-    OverlayLines& operator=(const OverlayLines&) = delete;
+    WireframeLines(const Mesh& mesh, GLuint vertices);
+    ~WireframeLines();
+    WireframeLines(const WireframeLines&) = delete;
+    WireframeLines& operator=(const WireframeLines&) = delete;
 
     void drawEdges();
     void drawNormals();
@@ -84,20 +84,20 @@ private:
     GLsizei normalCount_ = 0; // lines
 };
 
-// The overlay's program (overlay.vert, overlay.frag) and its draw.
-class OverlayProgram {
+// The wireframe's program (wireframe.vert, wireframe.frag) and its draw.
+class WireframeProgram {
 public:
-    // Compiles the built-in overlay shaders; none, with the compiler's messages, if they fail.
-    static std::unique_ptr<OverlayProgram> build(Diagnostics& diagnostics);
-    ~OverlayProgram();
-    OverlayProgram(const OverlayProgram&) = delete;
-    OverlayProgram& operator=(const OverlayProgram&) = delete;
+    // Compiles the built-in wireframe shaders; none, with the compiler's messages, if they fail.
+    static std::unique_ptr<WireframeProgram> build(Diagnostics& diagnostics);
+    ~WireframeProgram();
+    WireframeProgram(const WireframeProgram&) = delete;
+    WireframeProgram& operator=(const WireframeProgram&) = delete;
 
     // What Renderer::drawOverlay draws, with `mesh` on the GPU.
-    void draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewport, const OverlayOptions& options) const;
+    void draw(const Preset& preset, GpuMesh& mesh, const Viewport& viewport, const WireframeOptions& options) const;
 
 private:
-    explicit OverlayProgram(GLuint id);
+    explicit WireframeProgram(GLuint id);
     GLuint id_;
     GLint modelView_, projection_, normalMatrix_, normalLength_, depthBias_, color_;
 };
@@ -106,6 +106,6 @@ private:
 // value view (on black). On a wipe, each side's wireframe contrasts with that side's background,
 // in one draw when both sides take the same colour.
 void drawViewOverlays(Renderer& renderer, const Preset& preset, const std::shared_ptr<const Mesh>& mesh,
-                      const Viewport& viewport, const ViewDraw& draw, bool valueView);
+                      const Viewport& viewport, const ViewportDraw& draw, bool valueView);
 
 } // namespace lab

@@ -1,7 +1,0 @@
-// overlay.frag - the overlay's lines in one flat colour (overlay.vert).
-
-uniform vec3 u_color;
-
-out vec4 o_color;
-
-void main() { o_color = vec4(u_color, 1.0f); }

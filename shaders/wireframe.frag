@@ -1,0 +1,7 @@
+// wireframe.frag - the wireframe's and the normals' lines in one flat colour (wireframe.vert).
+
+uniform vec3 u_color;
+
+out vec4 o_color;
+
+void main() { o_color = vec4(u_color, 1.0f); }
