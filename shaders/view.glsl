@@ -1,6 +1,6 @@
 // view.glsl - how the value views (view_mode.h: the factor views and gouraud-error) colour a
 // number: the palettes. One source, two faces, like lighting.glsl: the shaders colour the model
-// with it, and the C++ build (lab/core/lighting/view_palette.h) draws the legends with it.
+// with it, and the C++ build (lab/core/lighting/lighting.h, paletteColor) draws the legends with it.
 // Keep to lighting.glsl's shared subset of GLSL and C++.
 
 // What lit.frag writes (u_view): the lighting (the term views: the preset's own switches), the

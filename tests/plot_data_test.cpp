@@ -70,7 +70,7 @@ TEST(Plot, SpecularMatchesTheSharedLightingFunctions) {
         for (int deg : {-60, -10, 0, 25, 40, 89}) {
             float ti = glm::radians(25.0f), to = glm::radians(float(deg));
             float S = glsl::specularFactor(glm::vec3(0, 1, 0), glm::vec3(-std::sin(ti), std::cos(ti), 0),
-                                           glm::vec3(std::sin(to), std::cos(to), 0), p.material.shininess, packSurface(p).brdf);
+                                           glm::vec3(std::sin(to), std::cos(to), 0), p.material.shininess, packSurfaceUniforms(p).brdf);
             EXPECT_FLOAT_EQ(s[std::size_t(deg + 90)].specular, luminance(p.material.specular * S)) << deg;
         }
     }
@@ -183,7 +183,7 @@ TEST(PlotGeometry, LobePointsFollowTheLightingFunctions) {
     float maxI = maxTotal({s});
     std::vector<glm::vec2> points = lobePoints(s, PlotComponent::Specular, maxI, RadialScale::Linear);
     ASSERT_EQ(points.size(), s.size());
-    glsl::Brdf b = packSurface(p).brdf;
+    glsl::Brdf b = packSurfaceUniforms(p).brdf;
     float ti = glm::radians(30.0f);
     for (int deg : {-45, 0, 10, 30, 60, 90}) {
         float to = glm::radians(float(deg));

@@ -46,7 +46,7 @@ TEST(Probe, CookTorranceTermsAreReported) {
     std::optional<ProbeResult> r = probePixel(p, makeSphere(64, 32), glm::vec2(0.2f, 0.2f), 1.0f);
     ASSERT_TRUE(r);
     const ProbeLight& l = r->lights[0];
-    glsl::Brdf b = packSurface(p).brdf;
+    glsl::Brdf b = packSurfaceUniforms(p).brdf;
     EXPECT_FLOAT_EQ(l.D, glsl::distributionTerm(l.NoH, b));
     EXPECT_FLOAT_EQ(l.F, glsl::fresnelTerm(l.VoH, b));
     EXPECT_NEAR(l.specularFactor, l.D * l.F * l.G / (4.0f * std::max(l.NoV, 1e-4f)), 1e-6f);

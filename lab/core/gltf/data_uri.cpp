@@ -1,4 +1,4 @@
-// data_uri.cpp — the data: URI pass over a glTF's JSON text (see gltf_data_uri.h).
+// data_uri.cpp — the data: URI pass over a glTF's JSON text (see data_uri.h).
 #include "core/gltf/data_uri.h"
 
 #include <array>

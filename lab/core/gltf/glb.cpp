@@ -14,7 +14,7 @@ constexpr std::uint32_t kJsonChunk = 0x4E4F534Au; // "JSON"
 constexpr std::uint32_t kBinChunk = 0x004E4942u;  // "BIN\0"
 
 // What tinygltf gets instead of a buffer or an image stored in the BIN chunk: the one placeholder
-// every buffer the loader reads itself becomes (gltf_data_uri.h).
+// every buffer the loader reads itself becomes (data_uri.h).
 constexpr const char* kPlaceholderUri = kDecodedPlaceholder;
 
 std::uint32_t u32(std::string_view bytes, std::uint64_t at) {

@@ -369,7 +369,7 @@ std::optional<ParsedModel> parseModel(std::string_view bytes, FileGuard& guard, 
         parsed.bin = chunks->bin;
     }
     // Buffers as base64 data: URIs, decoded straight from the file's bytes before any parser
-    // copies them (gltf_data_uri.h).
+    // copies them (data_uri.h).
     bool badDataUri = false;
     std::optional<DataUriBuffers> dataUris =
         decodeDataUriBuffers(json, limits.maxJsonDepth, limits.maxOtherObjects, displayName, diagnostics, badDataUri);

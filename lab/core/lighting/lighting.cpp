@@ -117,7 +117,7 @@ bool fieldsEqual(const void* a, const void* b, const ShaderStruct& shape) {
     return true;
 }
 
-bool operator==(const Surface& x, const Surface& y) {
+bool operator==(const SurfaceUniforms& x, const SurfaceUniforms& y) {
     return fieldsEqual(&x.material, &y.material, kMaterialUniform) && fieldsEqual(&x.brdf, &y.brdf, kBrdfUniform) &&
            fieldsEqual(&x.terms, &y.terms, kTermsUniform);
 }
@@ -126,13 +126,13 @@ bool operator==(const Surface& x, const Surface& y) {
 // Packing a preset
 //----------------------------------------------------------------------------------------
 
-Surface packSurface(const Preset& preset) {
+SurfaceUniforms packSurfaceUniforms(const Preset& preset) {
     static_assert(static_cast<int>(BrdfModel::CookTorrance) == glsl::BRDF_COOK_TORRANCE);
     static_assert(static_cast<int>(BrdfModel::BlinnPhong) == glsl::BRDF_BLINN_PHONG);
     static_assert(static_cast<int>(Distribution::Ggx) == glsl::DISTRIBUTION_GGX);
     static_assert(static_cast<int>(Distribution::Gaussian) == glsl::DISTRIBUTION_GAUSSIAN);
     static_assert(static_cast<int>(FresnelMode::Full) == glsl::FRESNEL_FULL);
-    Surface s;
+    SurfaceUniforms s;
     const MaterialDesc& m = preset.material;
     s.material = {.emissive = m.emissive, .ambient = m.ambient, .diffuse = m.diffuse, .specular = m.specular,
                   .shininess = m.shininess};
@@ -150,7 +150,7 @@ ShadingInputs packShading(const Preset& preset, const glm::mat4& view) {
     static_assert(kMaxLights == glsl::MAX_LIGHTS);
 
     ShadingInputs in;
-    static_cast<Surface&>(in) = packSurface(preset);
+    static_cast<SurfaceUniforms&>(in) = packSurfaceUniforms(preset);
     in.ambientLight = preset.ambientLight;
     glm::mat3 rotate(view);
     for (const LightDesc& l : preset.lights) {

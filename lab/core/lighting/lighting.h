@@ -23,16 +23,17 @@ using namespace glm;
 #include "lighting_api.glsl"
 } // namespace glsl
 
-// The material, BRDF and term switches as the shaders take them: what the renderer (through
+// The material, BRDF and term switches as the shaders take them (their uniforms u_material,
+// u_brdf, u_terms): what the renderer (through
 // ShadingInputs) and the plots (plots/plot_data.h's LobeInputs) both evaluate with.
-struct Surface {
+struct SurfaceUniforms {
     glsl::Material material{};
     glsl::Brdf brdf{};
     glsl::Terms terms{};
 };
 
 // Everything lit.vert/lit.frag read as uniforms, minus the matrices.
-struct ShadingInputs : Surface {
+struct ShadingInputs : SurfaceUniforms {
     glm::vec3 ambientLight{0.0f};
     glsl::Light lights[glsl::MAX_LIGHTS]{};
     int lightCount = 0; // enabled lights only, in preset order
@@ -40,10 +41,10 @@ struct ShadingInputs : Surface {
 
 // The shaders' uniforms that come from the lighting model's structs, one row each: the field's
 // GLSL name, its type, and where it lies in the C++ struct the same GLSL declares
-// (lighting_api.glsl). The renderer uploads by these rows, Surface's equality compares by them,
+// (lighting_api.glsl). The renderer uploads by these rows, SurfaceUniforms's equality compares by them,
 // and a GL test checks that they and the linked program's active uniforms name the same fields.
 // A new parameter of the lighting model is a field in lighting_api.glsl, a row here, its line in
-// packSurface, its key in the preset (scene/preset.h) and its control in the panel.
+// packSurfaceUniforms, its key in the preset (scene/preset.h) and its control in the panel.
 enum class FieldType { Int, Bool, Float, Vec3 };
 struct ShaderField {
     const char* name;
@@ -58,11 +59,11 @@ extern const ShaderStruct kMaterialUniform, kBrdfUniform, kTermsUniform, kLightU
 
 // Every field of `a` and `b` equal by `shape`'s rows (floats exactly: a NaN is never equal).
 bool fieldsEqual(const void* a, const void* b, const ShaderStruct& shape);
-bool operator==(const Surface& x, const Surface& y);
+bool operator==(const SurfaceUniforms& x, const SurfaceUniforms& y);
 
 // The preset's material, BRDF and term switches, as the shaders take them.
-Surface packSurface(const Preset& preset);
-// packSurface, the ambient light and the enabled lights moved into eye space with `view`.
+SurfaceUniforms packSurfaceUniforms(const Preset& preset);
+// packSurfaceUniforms, the ambient light and the enabled lights moved into eye space with `view`.
 ShadingInputs packShading(const Preset& preset, const glm::mat4& view);
 
 // glsl::shade with the packed inputs: the colour at eye-space point p with unit normal N.

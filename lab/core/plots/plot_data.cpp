@@ -26,13 +26,13 @@ const std::array<glm::vec2, 181>& outgoingDirections() {
 
 LobeInputs lobeInputs(const Preset& preset, float incidentDeg) {
     LobeInputs in;
-    static_cast<Surface&>(in) = packSurface(preset);
+    static_cast<SurfaceUniforms&>(in) = packSurfaceUniforms(preset);
     in.incidentDeg = incidentDeg;
     return in;
 }
 
 bool operator==(const LobeInputs& x, const LobeInputs& y) {
-    return static_cast<const Surface&>(x) == static_cast<const Surface&>(y) && x.incidentDeg == y.incidentDeg &&
+    return static_cast<const SurfaceUniforms&>(x) == static_cast<const SurfaceUniforms&>(y) && x.incidentDeg == y.incidentDeg &&
            x.lightDiffuse == y.lightDiffuse && x.lightSpecular == y.lightSpecular;
 }
 

@@ -30,7 +30,7 @@ struct PlotSample {
 // Everything the samples depend on: the material, BRDF and term switches as the shaders get them
 // (packed from the preset), the incident angle and the light that arrives. Equal inputs give equal
 // samples, so the plots may keep samples from frame to frame keyed on them (ui/plots/plot_cache.h).
-struct LobeInputs : Surface {
+struct LobeInputs : SurfaceUniforms {
     float incidentDeg = 0.0f;
     // The light's diffuse and specular colours as they arrive: unit white for the plots and `lab
     // plot`; at a probed point its colours × Att × spot factor (core/plots/probe_lobe.h), so that

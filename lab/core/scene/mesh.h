@@ -2,7 +2,7 @@
 //
 // A Mesh is indexed triangles with one normal per vertex, in model space. Built-ins are
 // generated with counter-clockwise front faces and outward normals, and fit in [-1, 1]³.
-// This file does not load files (gltf.h) or upload to the GPU (render/renderer.h).
+// This file does not load files (core/gltf/model_loader.h) or upload to the GPU (render/renderer.h).
 #pragma once
 
 #include "core/scene/preset.h"

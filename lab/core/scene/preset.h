@@ -5,7 +5,7 @@
 //
 // This file owns: the Preset struct with the documented defaults, loading with full
 // validation (every problem reported with its JSON path), and atomic saving of every key.
-// It does not load meshes (mesh.h, gltf.h) or touch GL.
+// It does not load meshes (mesh.h, core/gltf/model_loader.h) or touch GL.
 #pragma once
 
 #include "core/io/diagnostics.h"

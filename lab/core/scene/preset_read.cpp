@@ -3,8 +3,9 @@
 // Owns parsePreset, loadPreset and resolveModelPath. Reading walks the document once with a small
 // Reader (preset_reader.h) that knows the JSON path it is at, marks each key it consumes and
 // reports every problem instead of stopping at the first. Keys it never consumed are reported as
-// unknown, with the closest known key as a suggestion. The ranges come from core/scene/limits.h; the names from
-// preset_names.h.
+// unknown, with the closest known key as a suggestion. Which keys there are, where each goes, its
+// kind, range and rules come from the field table (field_table.h); the model's source, the lights'
+// array, `check` and `sweep` are read by hand here.
 //
 // It does not write presets (preset.cpp), load the model a preset names (model_loader.h) or
 // decide what a number may be (limits.h).
