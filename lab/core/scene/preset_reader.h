@@ -73,14 +73,10 @@ public:
     // Nothing happens when the key is absent; anything but an object is reported.
     template <typename Read>
     void readObject(std::string_view key, Keys known, Read read) {
-        const Json* v = find(key);
-        if (v && !v->is_object()) {
-            error(key, "expected an object, got " + describe(*v));
-        } else if (v) {
-            Reader r = child(*v, pathOf(key));
+        readObject(key, [&](Reader& r) {
             read(r);
             r.finish(known);
-        }
+        });
     }
 
     // Reads the object under `key` with `read(Reader&)`, which reports its unknown keys itself.

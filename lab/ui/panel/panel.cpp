@@ -40,24 +40,39 @@ bool enumCombo(const char* label, E& value, const std::array<E, N>& values, cons
     return changed;
 }
 
+// A command's button, named for the GUI tests (`name`, none when null), on the line before where it fits.
+struct ButtonOf {
+    Command command;
+    const char* name = nullptr;
+    bool enabled = true;
+};
+
+// Buttons one after another, each on the line of the one before where it fits (`first`: the first
+// too, after what came before it).
+void commandButtons(std::initializer_list<ButtonOf> buttons, std::vector<Request>& requests, bool first = false) {
+    for (const ButtonOf& b : buttons) {
+        if (first) {
+            sameLineIfFits(commandRow(b.command).label);
+        }
+        first = true;
+        commandButton(b.command, requests, b.enabled);
+        if (b.name) {
+            mark(b.name);
+        }
+    }
+}
+
 // Revert, Undo and Redo on one line, each enabled only when it would do something.
 void historyButtons(const PanelInfo& info, std::vector<Request>& requests) {
-    commandButton(Command::Revert, requests, info.dirty);
-    sameLineIfFits(commandRow(Command::Undo).label);
-    commandButton(Command::Undo, requests, info.canUndo);
-    sameLineIfFits(commandRow(Command::Redo).label);
-    commandButton(Command::Redo, requests, info.canRedo);
+    commandButtons({{Command::Revert, nullptr, info.dirty}, {Command::Undo, nullptr, info.canUndo},
+                    {Command::Redo, nullptr, info.canRedo}},
+                   requests);
 }
 
 void browserFilesSection(const PanelInfo& info, std::vector<Request>& requests) {
-    commandButton(Command::DownloadPreset, requests);
-    mark("file.download");
-    sameLineIfFits(commandRow(Command::PickFile).label);
-    commandButton(Command::PickFile, requests);
-    mark("file.open");
-    sameLineIfFits(commandRow(Command::CopyLink).label);
-    commandButton(Command::CopyLink, requests);
-    mark("file.copy-link");
+    commandButtons({{Command::DownloadPreset, "file.download"}, {Command::PickFile, "file.open"},
+                    {Command::CopyLink, "file.copy-link"}},
+                   requests);
     sameLineIfFits(commandRow(Command::Revert).label);
     historyButtons(info, requests);
     disabledWrapped("Drop a .json preset or a .glb model on the page.");
@@ -368,16 +383,9 @@ void compareRow(DisplaySettings& view, const PanelInfo& info, std::vector<Reques
 }
 
 void toolButtons(PanelState& state, std::vector<Request>& requests, bool solving) {
-    commandButton(Command::ToggleShaderEditor, requests);
-    sameLineIfFits(commandRow(Command::ToggleSweep).label);
-    commandButton(Command::ToggleSweep, requests);
-    mark("sweep.open");
-    sameLineIfFits(commandRow(Command::Screenshot).label);
-    commandButton(Command::Screenshot, requests);
-    mark("screenshot");
-    sameLineIfFits(commandRow(Command::ExportFigures).label);
-    commandButton(Command::ExportFigures, requests);
-    mark("figures.export");
+    commandButtons({{Command::ToggleShaderEditor}, {Command::ToggleSweep, "sweep.open"}, {Command::Screenshot, "screenshot"},
+                    {Command::ExportFigures, "figures.export"}},
+                   requests);
     // The PNGs' scale beside it (the SVGs have none; the CSVs are numbers).
     char scale[32];
     std::snprintf(scale, sizeof scale, "PNG %gx", double(state.figureScale));
@@ -395,16 +403,11 @@ void toolButtons(PanelState& state, std::vector<Request>& requests, bool solving
         ImGui::EndCombo();
     }
     mark("figures.scale");
-    sameLineIfFits(commandRow(Command::ToggleHelp).label);
-    commandButton(Command::ToggleHelp, requests);
+    commandButtons({{Command::ToggleHelp}}, requests, true);
     if (!solving) { // an exercise is not made from an exercise
-        sameLineIfFits(commandRow(Command::MakeExercise).label);
-        commandButton(Command::MakeExercise, requests);
-        mark("exercise.make");
+        commandButtons({{Command::MakeExercise, "exercise.make"}}, requests, true);
     }
-    sameLineIfFits(commandRow(Command::ToggleShareCode).label);
-    commandButton(Command::ToggleShareCode, requests);
-    mark("share.code");
+    commandButtons({{Command::ToggleShareCode, "share.code"}}, requests, true);
 }
 
 } // namespace
