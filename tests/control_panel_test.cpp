@@ -1,6 +1,7 @@
 // control_panel_test.cpp — the control panel drawn on the CPU (tests/cpu_imgui.h): what it shows
 // for a preset and a list of files.
 #include "cpu_imgui.h"
+#include "core/scene/field_table.h"
 #include "ui/panel/panel.h"
 #include "ui/widget_map.h"
 
@@ -71,6 +72,36 @@ TEST(ControlPanel, TheShininessSliderIsShownOnlyWhereItHasAnEffect) {
         bool cookTorrance = brdf == BrdfModel::CookTorrance;
         EXPECT_EQ(hasWidget(d, "material.shininess"), !cookTorrance) << static_cast<int>(brdf);
         EXPECT_EQ(hasWidget(d, "cook_torrance.roughness"), cookTorrance) << static_cast<int>(brdf);
+    }
+}
+
+} // namespace
+} // namespace lab
+
+namespace lab {
+namespace {
+
+// Every field of the table that applies to the preset has its widget, named by its path, in the
+// sections the panel opens (the model and camera sections start closed): the panel draws the
+// table's rows, and none goes missing (the BRDF's and the shading's radio buttons once did).
+TEST(ControlPanel, EveryFieldThatAppliesHasItsWidget) {
+    for (BrdfModel brdf : {BrdfModel::Phong, BrdfModel::CookTorrance}) {
+        Preset p;
+        p.brdf = brdf;
+        p.lights[0].type = LightType::Spot;
+        p.lights[0].orbit.on = true;
+        Drawn d = drawPanel(p, {});
+        int checked = 0;
+        for (const FieldRow& row : fieldRows()) {
+            bool opened = row.group != FieldGroup::Model && row.group != FieldGroup::Camera && row.group != FieldGroup::Plot;
+            if (!opened || (row.style & kStyleHidden) || row.custom || !applies(row, p, isLightRow(row) ? &p.lights[0] : nullptr)) {
+                continue;
+            }
+            std::string name = fieldPath(row, 0) + ((row.style & kStyleRadios) ? "." + std::string(row.choices[0].label) : "");
+            EXPECT_TRUE(hasWidget(d, name)) << name << " (" << toString(brdf) << ") is not in the panel:\n" << d.widgets;
+            ++checked;
+        }
+        EXPECT_GT(checked, 25);
     }
 }
 

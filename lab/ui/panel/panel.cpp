@@ -136,8 +136,7 @@ template <typename After>
 void fieldRowsOf(std::string_view object, Preset& p, LightDesc* light, int lightIndex, const FieldGate& gate,
                  After after, std::initializer_list<std::string_view> skip = {}) {
     for (const FieldRow& row : fieldRows()) {
-        if (!covers(object, row.path) || fieldObject(row).size() < object.size() || (row.style & kStyleHidden) ||
-            row.custom || !applies(row, p, light) ||
+        if (!covers(object, row.path) || (row.style & kStyleHidden) || row.custom || !applies(row, p, light) ||
             std::find(skip.begin(), skip.end(), fieldKey(row)) != skip.end()) {
             continue;
         }
