@@ -322,6 +322,13 @@ std::vector<BadFile> badFiles() {
              j["tolerance"] = PresetJson::parse(R"({"fields": {"brdf": 1}})");
          }),
          "tolerance.fields.brdf", "needs a number or numbers; this field is a string"},
+        // One field spelt two ways (leading zeros are allowed in a path): listed twice.
+        {"FieldToleranceTwiceSpeltTwoWays",
+         with([](PresetJson& j) {
+             j["open"] = PresetJson::array({"material.shininess", "lights[0]"});
+             j["tolerance"] = PresetJson::parse(R"({"fields": {"lights[0].diffuse": 0.1, "lights[00].diffuse": 0.2}})");
+         }),
+         "tolerance.fields.lights[00].diffuse", "is listed twice (\"lights[0].diffuse\")"},
         {"FieldToleranceNegative", tolerance(R"({"fields": {"material.shininess": -1}})"),
          "tolerance.fields.material.shininess", "must be in [0, 1000000], got -1"},
         // Finite as a double, infinite as the float the lab keeps (and then written as "inf" into

@@ -174,6 +174,43 @@ TEST(SweepCells, EverySuggestedKeyAndRangeIsAccepted) {
     }
 }
 
+// The suggestions follow the field table's rows that apply: the BRDF's own lobe first, the other
+// BRDF's lobe parameter offered too (for a grid across BRDFs), nothing that cannot change the picture.
+TEST(SweepCells, SuggestionsAreTheRowsThatApplyTheLobeFirst) {
+    auto keysOf = [](const Preset& p) {
+        std::vector<std::string> keys;
+        for (const SweepKeySuggestion& s : sweepKeySuggestions(p)) {
+            keys.push_back(s.key);
+        }
+        return keys;
+    };
+    auto has = [](const std::vector<std::string>& keys, const std::string& key) {
+        return std::find(keys.begin(), keys.end(), key) != keys.end();
+    };
+    auto at = [](const std::vector<std::string>& keys, const std::string& key) {
+        return std::find(keys.begin(), keys.end(), key) - keys.begin();
+    };
+    Preset phong;
+    std::vector<std::string> keys = keysOf(phong);
+    ASSERT_FALSE(keys.empty());
+    EXPECT_EQ(keys.front(), "material.shininess");
+    EXPECT_TRUE(has(keys, "cook_torrance.roughness")); // the other BRDF's lobe
+    EXPECT_FALSE(has(keys, "cook_torrance.ior"));      // changes nothing under Phong
+    EXPECT_FALSE(has(keys, "lights[0].cutoff_deg"));   // a point light has no cone
+    EXPECT_TRUE(has(keys, "lights[0].attenuation[1]"));
+    EXPECT_EQ(at(keys, "cook_torrance.roughness"), at(keys, "material.specular") + 1); // after the colours
+    EXPECT_LT(at(keys, "cook_torrance.roughness"), at(keys, "brdf"));
+    EXPECT_EQ(keys.back(), "camera.fovy_deg");
+    Preset ct;
+    ct.brdf = BrdfModel::CookTorrance;
+    ct.lights[0].type = LightType::Spot;
+    keys = keysOf(ct);
+    EXPECT_EQ(std::vector<std::string>(keys.begin(), keys.begin() + 2),
+              (std::vector<std::string>{"cook_torrance.roughness", "cook_torrance.ior"}));
+    EXPECT_TRUE(has(keys, "lights[0].cutoff_deg"));
+    EXPECT_EQ(at(keys, "material.shininess"), at(keys, "material.specular") + 1);
+}
+
 //----------------------------------------------------------------------------------------
 // The grid: each cell is the single render of its preset, pixel for pixel
 //----------------------------------------------------------------------------------------

@@ -116,6 +116,9 @@ void readTolerance(const PresetJson& t, Exercise& e, const std::vector<const Pre
                     r.error(at, "no such field in a preset");
                 } else if (!fieldIsOpen(e, field) || alwaysFree(field)) {
                     r.error(at, "is not an open field; a tolerance applies only to a field in \"open\"");
+                } else if (std::any_of(e.tolerance.fields.begin(), e.tolerance.fields.end(),
+                                       [&](const auto& f) { return f.field == field; })) {
+                    r.error(at, "is listed twice (" + inQuotes(field) + ")"); // "lights[00]" is "lights[0]"
                 } else if (!v || !(v->is_number() || (v->is_array() && !v->empty() &&
                                                       std::all_of(v->begin(), v->end(), [](auto& x) { return x.is_number(); })))) {
                     r.error(at, "a field tolerance needs a number or numbers; this field is " + (v ? describe(*v) : "absent"));

@@ -183,7 +183,7 @@ const FieldRow kRows[] = {
      .label = "D: distribution", .help = "The microfacet distribution D.",
      .at = in<&Preset::cookTorrance, &CookTorrance::distribution>, .applies = cookTorrance},
     {.path = "cook_torrance.roughness", .kind = K::Number, .group = G::Brdf, .range = &L::kRoughness,
-     .style = kStyleLogarithmic, .label = "roughness m", .help = "The microfacets' RMS slope m: larger is rougher.",
+     .style = kStyleLogarithmic | kStyleLobe, .label = "roughness m", .help = "The microfacets' RMS slope m: larger is rougher.",
      .sweep = "0.1,0.2,0.4,0.8", .at = in<&Preset::cookTorrance, &CookTorrance::roughness>, .applies = cookTorrance},
     {.path = "cook_torrance.fresnel", .kind = K::Choice, .group = G::Brdf, .choices = kFresnels,
      .label = "F: Fresnel", .help = "The Fresnel term F: Schlick's approximation or the full unpolarized equation.",
@@ -208,7 +208,7 @@ const FieldRow kRows[] = {
      .label = "specular", .help = "The specular reflectance k_s.", .sweep = "0.2,0.5,1",
      .at = in<&Preset::material, &MaterialDesc::specular>},
     {.path = "material.shininess", .kind = K::Number, .group = G::Material, .range = &L::kShininess, .format = "%.1f",
-     .style = kStyleLogarithmic | kStyleHelpMarker, .label = "shininess",
+     .style = kStyleLogarithmic | kStyleHelpMarker | kStyleLobe, .label = "shininess",
      .help = "The specular exponent n (logarithmic slider). Ctrl+click to type any value > 0.",
      .sweep = "10,20,30,50", .at = in<&Preset::material, &MaterialDesc::shininess>, .applies = phongLobe},
     {.path = "ambient_light", .kind = K::Color, .group = G::Shading, .range = &L::kAmbientLight,
@@ -360,9 +360,6 @@ bool isFieldPath(std::string_view path) {
     if (!pattern) {
         return false;
     }
-    if (element && *pattern == "lights") { // "lights[2]": a whole light
-        return true;
-    }
     if (const FieldRow* row = fieldRow(path)) {
         std::optional<std::vector<PathStep>> steps = parseFieldPath(path);
         if (element) { // an element within the triplet's or pair's size
@@ -377,7 +374,9 @@ bool isFieldPath(std::string_view path) {
 
 int choiceValue(const FieldRow& row, const Preset& preset, const LightDesc* light) {
     int value = 0;
-    static_assert(sizeof(Builtin) == sizeof(int) && sizeof(LightType) == sizeof(int));
+    static_assert(sizeof(Builtin) == sizeof(int) && sizeof(Shading) == sizeof(int) && sizeof(NormalMatrixMode) == sizeof(int) &&
+                  sizeof(BrdfModel) == sizeof(int) && sizeof(Distribution) == sizeof(int) &&
+                  sizeof(FresnelMode) == sizeof(int) && sizeof(LightType) == sizeof(int));
     std::memcpy(&value, row.at(const_cast<Preset&>(preset), const_cast<LightDesc*>(light)), sizeof value);
     return value;
 }

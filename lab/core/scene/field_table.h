@@ -2,8 +2,8 @@
 //
 // One row per field of the scene: its JSON path, where it lives in Preset, its kind, range and
 // step, unit, label, one-line help, group, and the rules that tie it to other fields. The preset
-// reader and writer (preset_read.cpp, preset.cpp), the panel's widgets (ui/panel), the sweep's
-// keys and suggestions (sweep.h), an exercise's open paths and field tolerances
+// reader and writer (preset_read.cpp, preset.cpp; a sweep's values are checked by both), the
+// panel's widgets (ui/panel), the sweep's suggestions (sweep.h), an exercise's open paths and field tolerances
 // (core/exercise/preset_fields.h) and, through the writer, the share link's "only what differs"
 // all read this table, so they cannot disagree. Adding a material parameter is one row here and
 // its Preset member; the reader, writer, panel, sweep and exercise paths follow.
@@ -39,7 +39,7 @@ enum class FieldKind {
     Text,      // a string
 };
 
-// The panel's sections (ui/panel), and the accessible page's groups.
+// The panel's sections (ui/panel) a field belongs to; the sweep's suggestions are ordered by them.
 enum class FieldGroup { File, Model, Camera, Shading, Brdf, Material, Lights, Plot };
 
 // How a field's widget looks, beyond its kind.
@@ -49,6 +49,7 @@ enum FieldStyle : unsigned {
     kStyleRadios = 1u << 1,      // a choice is a row of radio buttons (else a combo)
     kStyleHelpMarker = 1u << 2,  // the panel shows the help beside the widget as "(?)"
     kStyleHidden = 1u << 3,      // no widget of its own (the camera's up, near and far; the file's name)
+    kStyleLobe = 1u << 4,        // the number that shapes its BRDF's specular lobe (shininess n, roughness m)
 };
 
 // One value of an enumeration: its integer, the name preset files use, and the panel's label.
@@ -70,7 +71,8 @@ struct FieldRow {
     FieldKind kind;
     FieldGroup group;
     const limits::Range* range = nullptr;       // Number, Vec3, Color, Direction
-    const limits::IntRange* intRange = nullptr; // Int2
+    const limits::IntRange* intRange = nullptr; // Int2 (the model's subdivisions: the reader asks limits.h's
+                                                // kSubdivisionsRound of a sphere or a torus)
     std::span<const FieldChoice> choices = {};  // Choice
     float step = 0.0f;                          // a drag's step (Vec3, Direction)
     const char* format = "%.3f";                // a number's format on screen

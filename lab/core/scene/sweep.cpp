@@ -260,16 +260,22 @@ std::optional<SweepCells> sweepCells(const LoadedPreset& base, const std::vector
 
 namespace {
 
-// Where a row's suggestions come in the list: the reflection model's parameters first, then the
-// shading and the lights, the camera last.
-int suggestionRank(FieldGroup group) {
-    switch (group) {
-    case FieldGroup::Brdf:
-    case FieldGroup::Material: return 0;
-    case FieldGroup::Shading: return 1;
-    case FieldGroup::Lights: return 2;
-    default: return 3;
+// Where a row's suggestions come in the list, or -1 for none: the BRDF's own lobe and numbers
+// (shininess n; or roughness m and ior), the material's colours, the other BRDF's lobe parameter
+// (for a grid across BRDFs: brdf along the other axis), the choices and the ambient light, the
+// lights, the camera. A row that does not apply (a spot's cut-off on a point light) is none.
+int suggestionRank(const FieldRow& row, bool applying) {
+    const bool surface = row.group == FieldGroup::Brdf || row.group == FieldGroup::Material;
+    if (!applying) {
+        return (row.style & kStyleLobe) ? 2 : -1;
     }
+    if (surface && row.kind == FieldKind::Number) {
+        return 0;
+    }
+    if (row.group == FieldGroup::Material) {
+        return 1;
+    }
+    return row.group == FieldGroup::Lights ? 4 : row.group == FieldGroup::Camera ? 5 : 3;
 }
 
 // A row's suggestions for `path`: its `sweep` text, alternatives split at ';', each optionally
@@ -289,27 +295,28 @@ void addSuggestions(const FieldRow& row, const std::string& path, std::vector<Sw
 } // namespace
 
 std::vector<SweepKeySuggestion> sweepKeySuggestions(const Preset& preset) {
-    // The rows with suggestions that apply to this preset (its BRDF, each light's type), by rank
-    // and then in the table's order; after them the lobe parameter of the other kind of BRDF
-    // (shininess for Cook-Torrance, roughness for the others), for a grid across BRDFs.
+    // The rows with suggested values, by rank (suggestionRank) and then in the table's order.
     std::vector<std::pair<int, SweepKeySuggestion>> ranked;
     for (const FieldRow& row : fieldRows()) {
         if (row.sweep.empty()) {
             continue;
         }
         std::vector<SweepKeySuggestion> keys;
-        int rank = suggestionRank(row.group);
+        int rank = -1;
         if (!isLightRow(row)) {
+            rank = suggestionRank(row, applies(row, preset, nullptr));
             addSuggestions(row, std::string(row.path), keys);
-            rank += applies(row, preset, nullptr) ? 0 : 10;
         }
         for (std::size_t i = 0; isLightRow(row) && i < preset.lights.size(); ++i) {
             if (applies(row, preset, &preset.lights[i])) {
+                rank = suggestionRank(row, true);
                 addSuggestions(row, fieldPath(row, static_cast<int>(i)), keys);
             }
         }
         for (SweepKeySuggestion& k : keys) {
-            ranked.emplace_back(rank, std::move(k));
+            if (rank >= 0) {
+                ranked.emplace_back(rank, std::move(k));
+            }
         }
     }
     std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });

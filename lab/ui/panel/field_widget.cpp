@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <cstring>
 #include <vector>
 
 namespace lab::ui {
@@ -72,7 +73,15 @@ bool numbersWidget(const FieldRow& row, Preset& preset, LightDesc* light, const 
 
 bool fieldWidget(const FieldRow& row, Preset& preset, LightDesc* light, const std::string& path) {
     const std::string id = fieldLabel(row) + "##" + path; // one ImGui id per field, whatever its label
-    Preset before = preset;
+    // The field's value before the widget, to put back when its rules refuse the new one (the
+    // numbers' kinds are the ones with rules, or with a length to keep).
+    const bool numbers = row.kind == FieldKind::Number || row.kind == FieldKind::Vec3 || row.kind == FieldKind::Color ||
+                         row.kind == FieldKind::Direction;
+    const std::size_t size = row.kind == FieldKind::Number ? sizeof(float) : sizeof(glm::vec3);
+    unsigned char before[sizeof(glm::vec3)] = {};
+    if (numbers) {
+        std::memcpy(before, row.at(preset, light), size);
+    }
     bool changed = false;
     switch (row.kind) {
     case FieldKind::Number:
@@ -95,8 +104,8 @@ bool fieldWidget(const FieldRow& row, Preset& preset, LightDesc* light, const st
         row.rule(preset, light, problems);
         refused = !problems.empty();
     }
-    if (changed && refused) {
-        preset = before;
+    if (changed && refused && numbers) {
+        std::memcpy(row.at(preset, light), before, size);
         changed = false;
     }
     if (row.style & kStyleHelpMarker) {
