@@ -296,6 +296,21 @@ std::string fieldPath(const FieldRow& row, int light) {
     return "lights[" + std::to_string(light) + "]" + std::string(row.path.substr(8));
 }
 
+FieldPlace fieldPlace(const FieldRow& row, std::string_view object) {
+    std::string_view below = fieldObject(row);
+    if (below == object) {
+        return {FieldPlace::Member, fieldKey(row), {}, false};
+    }
+    if (!object.empty() && !covers(object, below)) {
+        return {};
+    }
+    std::string_view rest = object.empty() ? row.path : row.path.substr(object.size() + 1);
+    std::string_view child = rest.substr(0, rest.find('.'));
+    bool array = child.ends_with("[]");
+    return {FieldPlace::Below, array ? child.substr(0, child.size() - 2) : child,
+            row.path.substr(0, row.path.size() - rest.size() + child.size()), array};
+}
+
 std::string fieldLabel(const FieldRow& row) {
     return std::string(row.label) + (row.unit.empty() ? "" : " (" + std::string(row.unit) + ")");
 }

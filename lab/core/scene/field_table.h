@@ -116,6 +116,18 @@ std::string_view fieldKey(const FieldRow& row);
 std::string_view fieldObject(const FieldRow& row);
 bool isLightRow(const FieldRow& row);
 
+// Where `row` lies from the object at `object` ("" the top level, "material", "lights[]" one light),
+// for the reader and the writer, which walk the rows object by object: a member of it (`key` is its
+// key), in an object below it (`key` is that object's key in `object`, `child` its path, `array` when
+// it is the lights' array), or outside it.
+struct FieldPlace {
+    enum Where { Outside, Member, Below } where = Outside;
+    std::string_view key;
+    std::string_view child;
+    bool array = false;
+};
+FieldPlace fieldPlace(const FieldRow& row, std::string_view object);
+
 // The row's label with its unit: "cut-off (deg)".
 std::string fieldLabel(const FieldRow& row);
 

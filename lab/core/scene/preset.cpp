@@ -159,31 +159,22 @@ Json rowJson(const FieldRow& row, Preset& p, LightDesc* light) {
 Json rowsJson(std::string_view object, Preset& p, LightDesc* light) {
     Json j = Json::object();
     for (const FieldRow& row : fieldRows()) {
-        std::string_view below = fieldObject(row);
-        if (below == object) {
+        const FieldPlace place = fieldPlace(row, object);
+        const std::string key(place.key);
+        if (place.where == FieldPlace::Member) {
             if (!row.written || row.written(p, light)) {
-                j[std::string(fieldKey(row))] = rowJson(row, p, light);
+                j[key] = rowJson(row, p, light);
             }
-            continue;
-        }
-        if (!object.empty() && !covers(object, below)) {
-            continue;
-        }
-        std::string_view rest = object.empty() ? row.path : row.path.substr(object.size() + 1);
-        std::string_view child = rest.substr(0, rest.find('.'));
-        std::string key(child.ends_with("[]") ? child.substr(0, child.size() - 2) : child);
-        if (j.contains(key)) {
-            continue; // written where its first row came
-        }
-        std::string_view childObject = row.path.substr(0, row.path.size() - rest.size() + child.size());
-        if (child.ends_with("[]")) {
-            Json lights = Json::array();
-            for (LightDesc& l : p.lights) {
-                lights.push_back(rowsJson(childObject, p, &l));
+        } else if (place.where == FieldPlace::Below && !j.contains(key)) { // written where its first row comes
+            if (place.array) {
+                Json lights = Json::array();
+                for (LightDesc& l : p.lights) {
+                    lights.push_back(rowsJson(place.child, p, &l));
+                }
+                j[key] = lights;
+            } else if (Json sub = rowsJson(place.child, p, light); !sub.empty()) {
+                j[key] = sub;
             }
-            j[key] = lights;
-        } else if (Json sub = rowsJson(childObject, p, light); !sub.empty()) {
-            j[key] = sub;
         }
     }
     return j;

@@ -215,32 +215,22 @@ void readLights(Reader& top, Sections& s) {
 void readRows(Reader& r, std::string_view object, Sections& s, LightDesc* light) {
     std::vector<std::string_view> seen;
     for (const FieldRow& row : fieldRows()) {
-        std::string_view below = fieldObject(row);
-        if (below == object) {
-            if (row.custom && fieldKey(row) == "builtin") {
+        const FieldPlace place = fieldPlace(row, object);
+        if (place.where == FieldPlace::Member) {
+            if (row.custom && place.key == "builtin") {
                 readModelSource(r, s.preset.model, s.folder);
             } else if (!row.custom) {
                 readRow(r, row, s.preset, light);
             }
-            seen.push_back(fieldKey(row));
-            continue;
-        }
-        if (!covers(object, below) && !object.empty()) {
-            continue;
-        }
-        // A row of an object below this one: that object is read once, where its first row comes.
-        std::string_view rest = object.empty() ? row.path : row.path.substr(object.size() + 1);
-        std::string_view child = rest.substr(0, rest.find('.'));
-        std::string_view key = child.ends_with("[]") ? child.substr(0, child.size() - 2) : child;
-        if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
-            continue;
-        }
-        seen.push_back(key);
-        std::string_view childObject = row.path.substr(0, row.path.size() - rest.size() + child.size());
-        if (child.ends_with("[]")) {
-            readLights(r, s);
-        } else {
-            r.readObject(key, [&](Reader& c) { readRows(c, childObject, s, light); });
+            seen.push_back(place.key);
+        } else if (place.where == FieldPlace::Below && std::find(seen.begin(), seen.end(), place.key) == seen.end()) {
+            // An object below this one, read once, where its first row comes.
+            seen.push_back(place.key);
+            if (place.array) {
+                readLights(r, s);
+            } else {
+                r.readObject(place.key, [&](Reader& c) { readRows(c, place.child, s, light); });
+            }
         }
     }
     if (object.empty()) {
