@@ -287,13 +287,16 @@ std::string_view fieldObject(const FieldRow& row) {
     return dot == std::string_view::npos ? std::string_view() : row.path.substr(0, dot);
 }
 
+// A light's rows start so ("lights[].exponent"), standing for every light's.
+constexpr std::string_view kLightRows = "lights[]";
+
 bool isLightRow(const FieldRow& row) { return row.path.starts_with("lights[]."); }
 
 std::string fieldPath(const FieldRow& row, int light) {
     if (!isLightRow(row)) {
         return std::string(row.path);
     }
-    return "lights[" + std::to_string(light) + "]" + std::string(row.path.substr(8));
+    return "lights[" + std::to_string(light) + "]" + std::string(row.path.substr(kLightRows.size()));
 }
 
 FieldPlace fieldPlace(const FieldRow& row, std::string_view object) {
