@@ -2,11 +2,23 @@
 """minify_page.py IN OUT — the page as the browser build ships it: web/index.html without its
 comments, blank lines and indentation (the comments are for whoever reads the source; they were a
 third of what the page's HTML cost a student's first load). Only whole-line // comments are
-dropped from scripts, so code and strings are never cut; the build runs this after each link."""
+dropped from scripts, so code and strings are never cut; the build runs this after each link.
+A `<script data-inline src="NAME"></script>` is replaced by the script NAME (beside IN) written
+inline: one request, and the page's scripts stay in files of their own in the source."""
+import os
 import re
 import sys
 
 text = open(sys.argv[1], encoding="utf-8").read()
+folder = os.path.dirname(os.path.abspath(sys.argv[1]))
+
+
+def inline(match):
+    with open(os.path.join(folder, match.group(1)), encoding="utf-8") as script:
+        return "<script>\n" + script.read() + "\n</script>"
+
+
+text = re.sub(r'<script data-inline src="([A-Za-z0-9_.-]+)"></script>', inline, text)
 text = re.sub(r"<!--.*?-->", "", text, flags=re.S)
 # CSS comments: the page's scripts hold no "/*" (the check below keeps it so).
 style = text.find("<style>"), text.find("</style>")

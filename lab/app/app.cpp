@@ -39,24 +39,6 @@ const glm::vec3 kWindowBackground(0.09f, 0.09f, 0.11f);
 
 } // namespace
 
-std::vector<std::pair<float, float>> clicksOf(const std::vector<InputEvent>& events, std::optional<InputEvent>& pending) {
-    std::vector<std::pair<float, float>> clicks;
-    for (const InputEvent& e : events) {
-        if (e.kind != InputEvent::Kind::Button || e.code != 0) {
-            continue;
-        }
-        if (e.down) {
-            pending = e;
-        } else if (pending) {
-            if (std::hypot(e.x - pending->x, e.y - pending->y) < 4.0f) {
-                clicks.emplace_back(pending->x, pending->y);
-            }
-            pending.reset();
-        }
-    }
-    return clicks;
-}
-
 struct App::Impl {
     AppOptions options;
     Workspace workspace;
@@ -97,6 +79,7 @@ struct App::Impl {
 
     // Exercises: the live score, what the panel shows of the exercise and of a draft (app/exercise_score.h).
     ExerciseScorer scorer;
+    PageModel page; // the browser page's parallel DOM (AppOptions::describePage)
     ui::ExercisePanelModel exerciseView;
     ui::DraftPanelModel draftView;
     ShareCode shareCode; // the scene's link as a QR code (Q)
@@ -133,6 +116,14 @@ struct App::Impl {
     }
 
     ui::ScreenModel screenModel();
+    const ui::ExercisePanelModel* panelInfoExercise() const { return workspace.exercise() ? &exerciseView : nullptr; }
+    // The page's focused control: its widget gets the focus ring, on the compact layout's tab that has it.
+    void focusPage(const std::optional<std::string>& path) {
+        if (path && ui::widgets().focus(*path) && !path->empty()) {
+            std::optional<ui::PanelTab> tab = panelTabOf(*path, panel.selectedLight);
+            panel.tab = tab.value_or(panel.tab);
+        }
+    }
     void carryOut(const FrameInput& in, const ui::ScreenEvents& events);
     void carryOut(const Request& request);
     void compileShaders(bool builtin);
@@ -515,6 +506,11 @@ FrameOutput App::frame(const FrameInput& in) {
         ws.start(fs::current_path(), m.options.preset); // the first preset opens in the first frame
         m.started = true;
     }
+    std::vector<Request> pageRequests; // the page's controls go first: this frame's panel shows their values
+    if (std::string refused = applyPageEdits(ws, in.pageEdits, pageRequests); !refused.empty()) {
+        ws.note(refused);
+    }
+    m.focusPage(in.pageFocus);
     ui::ScreenModel model = m.screenModel();
     ui::placeText(layout, m.steadyCaption(ui::measureText(model.captions, layout.view), layout.view)); // beside the model, never over it
     model.clicks = clicksOf(in.events, m.pressed);
@@ -529,6 +525,7 @@ FrameOutput App::frame(const FrameInput& in) {
             events.requests.push_back({*c, *c == Command::SaveAs || *c == Command::Save ? m.panel.saveAsPath : ""});
         }
     }
+    events.requests.insert(events.requests.end(), pageRequests.begin(), pageRequests.end());
 
     //--- carried out: platform events, the UI's requests, the dialogs' answers ----------------
     m.carryOut(in, events);
@@ -565,6 +562,11 @@ FrameOutput App::frame(const FrameInput& in) {
     out.typing = events.typing;
     out.viewportScale = scale;
     out.redrawIn = redrawIn;
+    if (m.options.describePage) {
+        out.page = m.page.json(ws, {m.panelInfoExercise(), m.toastLeft > 0.0f ? m.toast : "", out.problem,
+                                      probeWords(m.probe.shown() ? m.probe.result() : nullptr),
+                                      legendWords(model.captions.legend), orbiting});
+    }
     return out;
 }
 

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "app/input.h"
+#include "app/page_model.h"
 #include "app/workspace.h"
 #include "core/io/diagnostics.h"
 
@@ -28,10 +29,6 @@
 #include <vector>
 
 namespace lab {
-
-// The left-button clicks among `events`: a press and its release less than 4 units apart, at the
-// press's place. A press whose release has not come yet is carried over in `pending`.
-std::vector<std::pair<float, float>> clicksOf(const std::vector<InputEvent>& events, std::optional<InputEvent>& pending);
 
 struct FrameInput {
     float windowWidth = 0, windowHeight = 0; // ImGui's units (screen coordinates)
@@ -47,6 +44,8 @@ struct FrameInput {
     std::optional<std::string> openLink; // a link to open ("preset=name", "z=...": core/share/share_link.h)
     bool openLinkSaved = false;          // it is the page's own saved state (kMaxSavedLinkChars), not an address
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
+    std::vector<PageEdit> pageEdits;     // the page's own controls (app/page_model.h), in order
+    std::optional<std::string> pageFocus; // the page's control that has the keyboard (its field's path, "" none)
 };
 
 struct FrameOutput {
@@ -66,6 +65,7 @@ struct FrameOutput {
     float redrawIn = -1.0f;
     bool viewportDrawn = false;  // the model's viewport was drawn this frame (otherwise its cached copy was shown)
     bool presented = true;   // the window was drawn (false: it would have looked exactly as the last; no swap needed)
+    std::string page;            // AppOptions::describePage: the page's description of the lab (app/page_model.h)
     float viewportScale = 1.0f;  // the fraction of the view's width and height drawn (< 1 while dragging on a slow machine)
 };
 
@@ -87,6 +87,8 @@ struct AppOptions {
     // The course page's address (https://.../lab/): the QR code (Q) opens the scene's link there.
     // The page gives its own; the desktop --share-base (remembered in the settings file).
     std::string shareBase;
+    // The browser: every frame describes the lab for the page's parallel DOM (FrameOutput::page).
+    bool describePage = false;
 };
 
 // Owns the workspace, the renderer and the UI state (not copyable: impl_ is unique).

@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,10 @@ private:
     std::deque<InputEvent> events_;
     std::vector<std::string> dropped_;
 };
+
+// The left-button clicks among `events`: a press and its release less than 4 units apart, at the
+// press's place. A press whose release has not come yet is carried over in `pending`.
+std::vector<std::pair<float, float>> clicksOf(const std::vector<InputEvent>& events, std::optional<InputEvent>& pending);
 
 // GLFW's printable keys (space to the last punctuation key): their text arrives as Char events,
 // so only the other keys (Backspace, arrows, Enter, ...) must stay in order with text.

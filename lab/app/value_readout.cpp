@@ -58,4 +58,22 @@ std::optional<ui::LegendModel> ValueReadout::legend(const DisplaySettings& view,
     return m;
 }
 
+std::string legendWords(const std::optional<ui::LegendModel>& legend) {
+    if (!legend) {
+        return {};
+    }
+    std::string text = legend->title;
+    char buffer[96];
+    if (legend->range) {
+        std::snprintf(buffer, sizeof buffer, ": colours from %g to %g%s", static_cast<double>(legend->range->lo),
+                      static_cast<double>(legend->range->hi), legend->automatic ? " (found on the model)" : "");
+        text += buffer;
+    }
+    if (legend->value) {
+        std::snprintf(buffer, sizeof buffer, "; under the pointer %.3f", static_cast<double>(*legend->value));
+        text += buffer;
+    }
+    return legend->note.empty() ? text : text + ". " + legend->note;
+}
+
 } // namespace lab

@@ -8,6 +8,7 @@
 #include "ui/viewport/view_legend.h"
 
 #include <optional>
+#include <string>
 #include <utility>
 
 namespace lab {
@@ -34,5 +35,8 @@ private:
     std::optional<ViewportKey> key_;           // ... in this render
     bool changed_ = false;
 };
+
+// The legend in words, for the page ("D: microfacet distribution, light 1: 0 to 1.2, here 0.43"); "" for none.
+std::string legendWords(const std::optional<ui::LegendModel>& legend);
 
 } // namespace lab

@@ -159,6 +159,13 @@ bool Workspace::runEdit(Command command) {
     case Command::ToggleVertexNormals: view.vertexNormals = !view.vertexNormals; return true;
     case Command::ResetCamera: doc_.preset.camera = doc_.saved().camera; return true;
     case Command::FrameModel: frameModel(); return true;
+    // One step of the page's camera buttons: 15 degrees, or a fifth of the distance.
+    case Command::OrbitLeft: orbitCamera(doc_.preset.camera, -15.0f, 0.0f); return true;
+    case Command::OrbitRight: orbitCamera(doc_.preset.camera, 15.0f, 0.0f); return true;
+    case Command::OrbitUp: orbitCamera(doc_.preset.camera, 0.0f, 15.0f); return true;
+    case Command::OrbitDown: orbitCamera(doc_.preset.camera, 0.0f, -15.0f); return true;
+    case Command::ZoomIn: zoomCamera(doc_.preset.camera, 0.8f); return true;
+    case Command::ZoomOut: zoomCamera(doc_.preset.camera, 1.25f); return true;
     case Command::ToggleCompare:
         if (exercise_) {
             notes_.push_back("In an exercise the target stays beside your attempt (Leave exercise to compare freely)");

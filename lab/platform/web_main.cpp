@@ -12,6 +12,7 @@ int main() {
     options.presetFolders = {"/presets"};   // bundled with the page (see CMakeLists.txt)
     options.screenshotFolder = "/screenshots";
     options.saveByDownload = true;
+    options.describePage = true; // the page's parallel DOM (web/access.js)
     // The QR code (Q) opens the scene on this very page: its address without the fragment.
     if (char* here = emscripten_run_script_string("location.origin + location.pathname")) {
         options.shareBase = here;

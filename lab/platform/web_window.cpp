@@ -22,7 +22,10 @@
 //     and in localStorage, so a reload restores it; a hashchange opens the new link. A fragment
 //     longer than kMaxLinkChars is refused by the page before it reaches the lab (it says so), and
 //     a scene whose link would be longer is kept in localStorage only;
-//   * the error dialog's text is mirrored into the page (a live region), for screen readers.
+//   * the error dialog's text is mirrored into the page (a live region), for screen readers;
+//   * the lab describes itself for the page's parallel DOM (app/page_model.h, web/access.js):
+//     native controls that a screen reader reads and the keyboard drives, whose edits, commands and
+//     focus come back through lab_page_field, lab_page_command and lab_page_focus.
 // Not here: anything about presets, rendering or the UI's content.
 #include "platform/window.h"
 
@@ -114,6 +117,11 @@ EM_JS(void, labJsProblem, (const char* text), {
     if (Module.labProblem) Module.labProblem(UTF8ToString(text));
 });
 
+// The lab described for the page's parallel DOM (web/access.js), when the description changed.
+EM_JS(void, labJsPage, (const char* json), {
+    if (Module.labPage) Module.labPage(UTF8ToString(json));
+});
+
 EM_JS(void, labJsPickFile, (), {
     const input = document.getElementById('file-input');
     if (input) input.click();
@@ -156,7 +164,9 @@ struct WebState : PlatformInput {
     bool touchScreen = false; // a finger was seen, or the page's pointer is coarse
     bool typing = false;      // the screen's keyboard was asked for
     int canvasWidth = 0, canvasHeight = 0;
-    std::string lastLink, lastTitle, lastProblem;
+    std::string lastLink, lastTitle, lastProblem, lastPage;
+    std::vector<PageEdit> pageEdits;       // from the page's own controls, for the next frame
+    std::optional<std::string> pageFocus;  // the page's focused control, when it changed
     std::optional<std::string> pendingLink;
     bool pendingLinkSaved = false; // pendingLink is the saved state, not an address
     int frames = 0;
@@ -213,6 +223,8 @@ FrameInput nextInput(WebState& s, double dpr) {
     in.openLink = std::exchange(s.pendingLink, std::nullopt);
     in.openLinkSaved = std::exchange(s.pendingLinkSaved, false);
     in.touch = s.touchScreen;
+    in.pageEdits = std::exchange(s.pageEdits, {});
+    in.pageFocus = std::exchange(s.pageFocus, std::nullopt);
     return in;
 }
 
@@ -238,6 +250,10 @@ void deliver(WebState& s, const FrameOutput& out) {
     if (out.link != s.lastLink) {
         labJsSetLink(out.link.c_str(), out.link.size() <= kMaxLinkChars ? 1 : 0);
         s.lastLink = out.link;
+    }
+    if (out.page != s.lastPage) {
+        labJsPage(out.page.c_str());
+        s.lastPage = out.page;
     }
     if (out.problem != s.lastProblem) {
         labJsProblem(out.problem.c_str());
@@ -353,6 +369,26 @@ EMSCRIPTEN_KEEPALIVE void lab_restore_link() {
 EMSCRIPTEN_KEEPALIVE void lab_wheel(float dx, float dy) {
     if (gState) {
         gState->queue.push(InputEvent::scroll(dx, dy));
+        gState->changed = true;
+    }
+}
+// The page's own controls (web/access.js): a field's new value as text, a command with its
+// argument (-1 none), the control that has the keyboard (a field's path, "" for none).
+EMSCRIPTEN_KEEPALIVE void lab_page_field(const char* path, const char* value) {
+    if (gState) {
+        gState->pageEdits.push_back({path, value});
+        gState->changed = true;
+    }
+}
+EMSCRIPTEN_KEEPALIVE void lab_page_command(int command, int index) {
+    if (gState) {
+        gState->pageEdits.push_back({{}, {}, command, index});
+        gState->changed = true;
+    }
+}
+EMSCRIPTEN_KEEPALIVE void lab_page_focus(const char* path) {
+    if (gState) {
+        gState->pageFocus = std::string(path);
         gState->changed = true;
     }
 }

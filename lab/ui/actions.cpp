@@ -64,6 +64,12 @@ constexpr std::array kRows = {
     CommandRow{C::ExerciseLeave,      0,                   kNoModifier,   "Leave exercise",   ""},
     CommandRow{C::MakeExercise,       0,                   kNoModifier,   "Make exercise",    ""},
     CommandRow{C::SaveExercise,       0,                   kNoModifier,   "Save exercise",    ""},
+    CommandRow{C::OrbitLeft,          0,                   kNoModifier,   "Orbit left",       ""},
+    CommandRow{C::OrbitRight,         0,                   kNoModifier,   "Orbit right",      ""},
+    CommandRow{C::OrbitUp,            0,                   kNoModifier,   "Orbit up",         ""},
+    CommandRow{C::OrbitDown,          0,                   kNoModifier,   "Orbit down",       ""},
+    CommandRow{C::ZoomIn,             0,                   kNoModifier,   "Zoom in",          ""},
+    CommandRow{C::ZoomOut,            0,                   kNoModifier,   "Zoom out",         ""},
 };
 // clang-format on
 

@@ -33,6 +33,8 @@ enum class Command {
     PreviousPreset, NextPreset, OpenPresetAt, OpenPath, Save, SaveAs, Revert, Undo, Redo,
     DownloadPreset, LoadModel, ShadingFlat, ShadingGouraud, ShadingPhong, NextBrdf,
     ToggleNormalMatrix, NextViewMode, ToggleWireframe, ToggleVertexNormals, ToggleCompare, ResetCamera, FrameModel,
+    // The camera in steps (the page's buttons: a keyboard's and a single pointer's way to orbit and zoom)
+    OrbitLeft, OrbitRight, OrbitUp, OrbitDown, ZoomIn, ZoomOut,
     // The window and its tools (the app carries these out)
     ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
     ToggleLightShapes,

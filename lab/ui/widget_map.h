@@ -10,12 +10,19 @@
 
 #include <map>
 #include <string>
+#include <utility>
 
 namespace lab::ui {
 
 class WidgetMap {
 public:
     void clear() { rects_.clear(); }
+    // The widget the page's focused control stands for (its name; "" none): mark() rings it and
+    // scrolls it into view once. True when it changed.
+    bool focus(const std::string& name) {
+        scroll_ = scroll_ || name != focus_;
+        return std::exchange(focus_, name) != name;
+    }
     void mark(const std::string& name); // the last ImGui item
     void set(const std::string& name, const Rect& r) { rects_[name] = r; }
     std::string text() const;           // "name x y w h" per line, sorted by name
@@ -25,6 +32,8 @@ public:
     }
 private:
     std::map<std::string, Rect> rects_;
+    std::string focus_;
+    bool scroll_ = false;
 };
 
 WidgetMap& widgets();

@@ -19,6 +19,14 @@ WidgetMap& widgets() {
 void WidgetMap::mark(const std::string& name) {
     ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
     rects_[name] = Rect{min.x, min.y, max.x - min.x, max.y - min.y};
+    if (!focus_.empty() && name == focus_) {
+        if (std::exchange(scroll_, false)) {
+            ImGui::SetScrollHereY(0.5f);
+        }
+        const float pad = 3.0f;
+        ImGui::GetForegroundDrawList()->AddRect(ImVec2(min.x - pad, min.y - pad), ImVec2(max.x + pad, max.y + pad),
+                                                ImGui::GetColorU32(ImGuiCol_NavHighlight), 3.0f, 0, 3.0f);
+    }
 }
 
 std::string WidgetMap::text() const {

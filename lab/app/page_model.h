@@ -1,0 +1,65 @@
+// page_model.h — the lab as the browser page's parallel DOM shows it (web/access.js), and what
+// comes back from it.
+//
+// A screen reader cannot read the canvas, and the keyboard cannot reach into it from the page. So
+// the app describes itself as data: every field of the field table (core/scene/field_table.h) that
+// the panel would show — its label, unit, range, step, help and value, behind the exercise's gate —
+// grouped by the panel's sections and the compact layout's tabs; the command table's buttons
+// (ui/actions.h); and the pictures' text alternatives (core/plots/describe.h), the exercise's
+// score and the lab's messages. The page builds native HTML controls from it and sends back field
+// edits (checked by core/scene/field_edit.h) and commands, which take the same way as the ImGui
+// panel's (one undo step a change). No ImGui, no GL, no browser: JSON text in, JSON text out.
+#pragma once
+
+#include "app/workspace.h"
+#include "core/lighting/probe.h"
+#include "ui/layout.h"
+#include "ui/panel/exercise_panel.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lab {
+
+// What the app knows beside the workspace, for the page.
+struct PageFacts {
+    const ui::ExercisePanelModel* exercise = nullptr; // while one is solved
+    std::string toast;   // the lab's short message while it is shown
+    std::string problem; // the error dialog's text while it is shown
+    std::string probe;   // the pixel probe's readout, "" when none
+    std::string legend;  // the factor view's legend, "" when the lit model is shown
+    bool orbiting = false; // a light moves by itself (the Pause button's text)
+};
+
+// The page's description of the lab (a JSON object; web/access.js reads it). The pictures' words
+// (the scene, the plots, the albedo) are found again only when set A changed.
+class PageModel {
+public:
+    const std::string& json(Workspace& workspace, const PageFacts& facts);
+
+private:
+    std::optional<Preset> described_;
+    std::string pictures_; // the words of described_, as JSON
+    std::string json_;
+};
+
+// One thing the page's controls asked for.
+struct PageEdit {
+    std::string path;  // a field's path; empty for a command
+    std::string value; // the field's new value as text (field_edit.h)
+    int command = -1;  // a Command (ui/actions.h) when `path` is empty; `index` its argument
+    int index = -1;
+};
+
+// Carries out the page's field edits on the edited set, behind the exercise's gate (a field it does
+// not open is refused); returns the problems ("" none), and appends the page's commands to `requests`.
+std::string applyPageEdits(Workspace& workspace, const std::vector<PageEdit>& edits, std::vector<Request>& requests);
+
+// The compact layout's tab that shows the field at `path` (a light's also selects it), if any.
+std::optional<ui::PanelTab> panelTabOf(const std::string& path, int& selectedLight);
+
+// The probe's readout in words ("Probe: colour 0.82, 0.40, 0.31; light 1: diffuse ..."), "" for none.
+std::string probeWords(const ProbeResult* probe);
+
+} // namespace lab

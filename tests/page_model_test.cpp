@@ -1,0 +1,194 @@
+// page_model_test.cpp — the page's parallel DOM as data (app/page_model.h), a field set from the
+// page's text (core/scene/field_edit.h) and the pictures in words (core/plots/describe.h). Headless:
+// no window, no ImGui, no GL, no browser (web/tests/access.test.mjs drives the real page).
+#include "app/page_model.h"
+
+#include "core/plots/describe.h"
+#include "core/scene/field_edit.h"
+#include "core/scene/field_table.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace lab {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kPresets = fs::path(LAB_SOURCE_DIR) / "presets";
+
+TEST(FieldEdit, SetsAFieldOfEachKindFromText) {
+    Preset p;
+    p.lights.push_back(LightDesc{});
+    EXPECT_EQ(setFieldFromText(p, "material.shininess", "64"), "");
+    EXPECT_EQ(p.material.shininess, 64.0f);
+    EXPECT_EQ(setFieldFromText(p, "material.diffuse[2]", "0.25"), "");
+    EXPECT_EQ(p.material.diffuse, glm::vec3(0.8f, 0.8f, 0.25f));
+    EXPECT_EQ(setFieldFromText(p, "lights[1].type", "spot"), "");
+    EXPECT_EQ(p.lights[1].type, LightType::Spot);
+    EXPECT_EQ(setFieldFromText(p, "lights[01].enabled", "false"), "");
+    EXPECT_FALSE(p.lights[1].enabled);
+    EXPECT_EQ(setFieldFromText(p, "brdf", "cook-torrance"), "");
+    EXPECT_EQ(p.brdf, BrdfModel::CookTorrance);
+    EXPECT_EQ(setFieldFromText(p, "model.builtin", "torus"), "");
+    EXPECT_EQ(p.model.subdivisions, defaultSubdivisions(Builtin::Torus)) << "a new built-in gets its own subdivisions";
+}
+
+TEST(FieldEdit, RefusesWhatAPresetFileWouldAndLeavesThePresetAsItWas) {
+    Preset p;
+    const Preset before = p;
+    const std::map<std::pair<std::string, std::string>, std::string> refused = {
+        {{"material.shininess", "-1"}, "material.shininess: must be"},
+        {{"material.shininess", "lots"}, "material.shininess: expected a number"},
+        {{"material.shininess", "nan"}, "expected a number"},
+        {{"material.diffuse", "0.5"}, "one element at a time"},
+        {{"material.diffuse[3]", "0.5"}, "has no element 3"},
+        {{"lights[4].type", "spot"}, "there is no light 4"},
+        {{"lights[0].type", "laser"}, "not one of its choices"},
+        {{"lights[0].enabled", "yes"}, "expected true or false"},
+        {{"lights[0].attenuation[0]", "0"}, "lights[0].attenuation[0]: "}, // c0, c1, c2 all 0 (the table's rule)
+        {{"camera.up[1]", "0"}, "not a field the page can set"},           // hidden rows
+        {{"material.colour", "1"}, "not a field the page can set"},
+        {{"model.gltf", "x.glb"}, "not a field the page can set"},
+    };
+    for (const auto& [edit, message] : refused) {
+        std::string problem = setFieldFromText(p, edit.first, edit.second);
+        EXPECT_NE(problem.find(message), std::string::npos) << edit.first << " = " << edit.second << ": " << problem;
+        EXPECT_EQ(p, before) << edit.first << " = " << edit.second;
+    }
+}
+
+// Every field of the table that applies has its control, with the table's range and the preset's value.
+void expectEveryRowHasItsControl(Workspace& ws, const json& page) {
+    std::map<std::string, json> controls;
+    for (const json& s : page["sections"]) {
+        for (const json& c : s["controls"]) {
+            EXPECT_TRUE(controls.emplace(c["path"].get<std::string>(), c).second) << "twice: " << c["path"];
+        }
+    }
+    Preset& p = ws.edited();
+    std::size_t expected = 0;
+    for (const FieldRow& row : fieldRows()) {
+        for (int i = 0; i < (isLightRow(row) ? static_cast<int>(p.lights.size()) : 1); ++i) {
+            LightDesc* light = isLightRow(row) ? &p.lights[static_cast<std::size_t>(i)] : nullptr;
+            if ((row.style & kStyleHidden) || (row.custom && row.kind == FieldKind::Text) || !applies(row, p, light)) {
+                continue;
+            }
+            ++expected;
+            const std::string path = fieldPath(row, i);
+            ASSERT_TRUE(controls.count(path)) << "no control for " << path;
+            const json& c = controls[path];
+            EXPECT_EQ(c["label"], std::string(row.label)) << path;
+            if (row.range) {
+                EXPECT_EQ(static_cast<float>(c["min"].get<double>()), row.range->min) << path;
+                EXPECT_EQ(static_cast<float>(c["max"].get<double>()), row.range->max) << path;
+            }
+            if (row.kind == FieldKind::Number) {
+                EXPECT_EQ(static_cast<float>(c["value"].get<double>()), fieldValue<float>(row, p, light)) << path;
+            }
+        }
+    }
+    EXPECT_EQ(controls.size(), expected);
+}
+
+TEST(PageModel, EveryFieldThatAppliesHasItsControlWithTheTablesRange) {
+    Workspace ws{WorkspaceOptions{{kPresets}, {}, true, {}}};
+    ws.start(kPresets);
+    PageModel model;
+    expectEveryRowHasItsControl(ws, json::parse(model.json(ws, {})));
+    // Another BRDF and light types: other rows apply.
+    ws.edited().brdf = BrdfModel::CookTorrance;
+    ws.edited().lights.push_back(LightDesc{LightType::Spot});
+    ws.edited().lights.push_back(LightDesc{LightType::Directional});
+    json page = json::parse(model.json(ws, {}));
+    expectEveryRowHasItsControl(ws, page);
+    EXPECT_NE(page["pictures"]["description"].get<std::string>().find("Cook-Torrance"), std::string::npos)
+        << page["pictures"]["description"];
+}
+
+TEST(PageModel, EditsAndCommandsFromThePageTakeThePanelsWay) {
+    Workspace ws{WorkspaceOptions{{kPresets}, {}, true, {}}};
+    ws.start(kPresets);
+    std::vector<Request> requests;
+    std::string problems = applyPageEdits(ws, {{"material.shininess", "12"}, {"material.shininess", "-5"},
+                                               {"", "", static_cast<int>(Command::OrbitLeft), -1},
+                                               {"", "", static_cast<int>(Command::OpenPresetAt), 2},
+                                               {"", "", 100000, -1}},
+                                          requests);
+    EXPECT_EQ(ws.edited().material.shininess, 12.0f);
+    EXPECT_NE(problems.find("material.shininess: must be"), std::string::npos) << problems;
+    ASSERT_EQ(requests.size(), 2u) << "a command number the table does not have is dropped";
+    EXPECT_EQ(requests[0].command, Command::OrbitLeft);
+    EXPECT_EQ(requests[1].command, Command::OpenPresetAt);
+    EXPECT_EQ(requests[1].index, 2);
+    const glm::vec3 eye = ws.a().camera.eye;
+    ws.run(requests[0]);
+    EXPECT_NE(ws.a().camera.eye, eye) << "Orbit left moves the camera";
+    EXPECT_NEAR(glm::length(ws.a().camera.eye - ws.a().camera.target), glm::length(eye - ws.a().camera.target), 1e-4f);
+    ws.endFrame(false);
+    EXPECT_TRUE(ws.document().canUndo());
+}
+
+TEST(PageModel, AnExerciseShowsOnlyItsOpenFieldsAndRefusesTheOthers) {
+    Workspace ws{WorkspaceOptions{{kPresets}, {}, true, {}}};
+    ws.start(kPresets);
+    ws.openLink("exercise=02-shininess");
+    ASSERT_TRUE(ws.exercise());
+    ui::ExercisePanelModel view;
+    view.title = ws.exercise()->exercise.title;
+    view.open = ws.exercise()->exercise.open;
+    PageModel model;
+    PageFacts facts;
+    facts.exercise = &view;
+    json page = json::parse(model.json(ws, facts));
+    std::vector<std::string> paths;
+    for (const json& s : page["sections"]) {
+        for (const json& c : s["controls"]) {
+            paths.push_back(c["path"]);
+        }
+    }
+    EXPECT_NE(std::find(paths.begin(), paths.end(), "material.shininess"), paths.end());
+    EXPECT_EQ(std::find(paths.begin(), paths.end(), "material.diffuse"), paths.end()) << "not open in 02-shininess";
+    EXPECT_TRUE(page.contains("exercise"));
+    std::vector<Request> requests;
+    const glm::vec3 diffuse = ws.edited().material.diffuse;
+    std::string problems = applyPageEdits(ws, {{"material.diffuse[0]", "0.1"}}, requests);
+    EXPECT_NE(problems.find("does not let you change it"), std::string::npos) << problems;
+    EXPECT_EQ(ws.edited().material.diffuse, diffuse);
+}
+
+TEST(Describe, SaysWhereTheLightIsAndWhereTheHighlightFalls) {
+    Preset p; // the camera on +z looking at the origin, up +y
+    p.lights = {LightDesc{}};
+    p.lights[0].position = {3.0f, 3.0f, 3.0f};
+    std::string text = describeScene(p);
+    EXPECT_NE(text.find("Light 1, point, on, white: upper right, in front"), std::string::npos) << text;
+    EXPECT_NE(text.find("highlight of Light 1 falls on the upper right of the model"), std::string::npos) << text;
+    p.lights[0].position = {-3.0f, 0.0f, -3.0f};
+    text = describeScene(p);
+    EXPECT_NE(text.find("left, behind"), std::string::npos) << text;
+    p.lights[0].position = {0.0f, 0.0f, -3.0f};
+    EXPECT_NE(describeScene(p).find("on the far side of the model"), std::string::npos) << describeScene(p);
+    EXPECT_EQ(directionWords(p.camera, {0, 0, 1}), "straight ahead, in front");
+    EXPECT_EQ(directionWords(p.camera, {0, -1, 0}), "below");
+}
+
+TEST(Describe, ThePlanePlotsTableHasItsNumbersEveryFiveDegrees) {
+    Preset p;
+    p.plotIncidentDeg = 30.0f;
+    PlotWords words = describePlanePlot(p, 5);
+    ASSERT_FALSE(words.rows.empty());
+    EXPECT_EQ(words.rows[1].thetaOutDeg - words.rows[0].thetaOutDeg, 5.0f);
+    std::vector<PlotSample> every = reflectedIntensity(p, 30.0f);
+    EXPECT_EQ(words.rows.back().thetaOutDeg, every.back().thetaOutDeg);
+    EXPECT_NE(words.summary.find("light at 30 degrees"), std::string::npos) << words.summary;
+    EXPECT_NE(words.summary.find("peaks at 30 degrees"), std::string::npos) << "Phong's lobe peaks at the mirror direction: " << words.summary;
+}
+
+} // namespace
+} // namespace lab

@@ -1,0 +1,258 @@
+// access.js — the page's parallel DOM: the lab as native HTML controls that a screen reader reads
+// and the keyboard drives, built from the lab's own description of itself (app/page_model.h:
+// the field table's rows, the command table's buttons, the pictures in words).
+//
+// The DOM is not drawn, except the control that has the keyboard: it shows as a card at the
+// bottom of the page, and its widget on the canvas gets a focus ring (lab_page_focus). A change
+// goes to the lab as the panel's own would (lab_page_field, lab_page_command: one undo step each);
+// a change on the canvas comes back in the next description. Key events aimed at these controls
+// never reach Emscripten's GLFW (index.html), so typing here fires no shortcut.
+'use strict';
+(function () {
+  const root = document.getElementById('lab-access');
+  const tabs = document.getElementById('lab-tabs');
+  const panels = document.getElementById('lab-panels');
+  const log = document.getElementById('lab-log');
+  let shape = '';      // the structure last built (the description without its values)
+  let model = null;    // the last description
+  let describedAt = 0; // when the pictures' words were last put into the page
+  let pendingWords = null;
+  let lastToast = '';
+  let lastScore = '';
+  let chosenTab = 'material';
+  const units = { deg: 'degrees', 'deg/s': 'degrees per second' };
+  const parts = { color: ['red', 'green', 'blue'], int2: ['first', 'second'] };
+
+  const el = (tag, attrs = {}, ...children) => {
+    const e = document.createElement(tag);
+    for (const [k, v] of Object.entries(attrs)) {
+      if (v === undefined || v === null || v === false) continue;
+      if (k === 'text') e.textContent = v;
+      else if (k.startsWith('on')) e.addEventListener(k.substring(2), v);
+      else e.setAttribute(k, v === true ? '' : v);
+    }
+    for (const c of children) if (c) e.append(c);
+    return e;
+  };
+  const idOf = (path) => 'f-' + path.replace(/[^a-z0-9_]/gi, '_');
+  const send = (path, value) => Module.ccall('lab_page_field', null, ['string', 'string'], [path, String(value)]);
+  const command = (b) => Module._lab_page_command(b.command, b.index === undefined ? -1 : b.index);
+  const focusPath = (path) => Module.ccall('lab_page_focus', null, ['string'], [path]);
+  const labelOf = (c) => c.label + (c.unit ? ' (' + c.unit + ')' : '');
+  const spoken = (v, c) => {
+    const n = typeof v === 'number' ? Number(v.toFixed(4)) : v;
+    return c.unit ? n + ' ' + (units[c.unit] || c.unit) : String(n);
+  };
+
+  // One number: a slider where the table's slider spans its whole range, a number field otherwise.
+  function numberInput(c, path, name, value) {
+    const input = el('input', { type: c.slider ? 'range' : 'number', id: idOf(path), min: c.min, max: c.max,
+      step: c.step, 'data-path': path, 'aria-label': name, 'aria-describedby': c.help ? idOf(c.path) + '-help' : null });
+    input.value = value;
+    if (c.slider) input.setAttribute('aria-valuetext', spoken(value, c));
+    input.addEventListener(c.slider ? 'input' : 'change', () => {
+      // The lab checks the range and says what is wrong (a value off the step's grid is taken).
+      if (input.value !== '' && !input.validity.badInput) send(path, input.value);
+    });
+    return input;
+  }
+
+  function control(c) {
+    const help = c.help ? el('span', { id: idOf(c.path) + '-help', class: 'help', text: c.help }) : null;
+    const row = el('div', { class: 'row', 'data-key': c.path });
+    if (c.kind === 'number') {
+      const input = numberInput(c, c.path, labelOf(c), c.value);
+      input.removeAttribute('aria-label');
+      row.append(el('label', { for: input.id, text: labelOf(c) }), input, help);
+    } else if (c.kind === 'switch') {
+      const input = el('input', { type: 'checkbox', id: idOf(c.path), 'data-path': c.path,
+        'aria-describedby': help ? help.id : null, onchange: (e) => send(c.path, e.target.checked) });
+      input.checked = c.value;
+      row.append(input, el('label', { for: input.id, text: labelOf(c) }), help);
+    } else if (c.kind === 'choice' && c.radios) {
+      const group = el('fieldset', { 'aria-describedby': help ? help.id : null }, el('legend', { text: labelOf(c) }));
+      for (const choice of c.choices) {
+        const id = idOf(c.path) + '-' + choice.name;
+        const radio = el('input', { type: 'radio', id, name: idOf(c.path), value: choice.name, 'data-path': c.path,
+          onchange: () => send(c.path, choice.name) });
+        radio.checked = c.value === choice.name;
+        group.append(el('span', { class: 'choice' }, radio, el('label', { for: id, text: choice.label })));
+      }
+      row.append(group, help);
+    } else if (c.kind === 'choice') {
+      const select = el('select', { id: idOf(c.path), 'data-path': c.path, 'aria-describedby': help ? help.id : null,
+        onchange: (e) => send(c.path, e.target.value) });
+      for (const choice of c.choices) select.append(el('option', { value: choice.name, text: choice.label }));
+      select.value = c.value;
+      row.append(el('label', { for: select.id, text: labelOf(c) }), select, help);
+    } else if (c.kind === 'text') {
+      const input = el('input', { type: 'text', id: idOf(c.path), 'data-path': c.path,
+        onchange: (e) => send(c.path, e.target.value) });
+      input.value = c.value;
+      row.append(el('label', { for: input.id, text: labelOf(c) }), input, help);
+    } else { // a triplet or a pair: one number each, in a group named by the field
+      const names = parts[c.kind] || ['x', 'y', 'z'];
+      const group = el('fieldset', { 'aria-describedby': help ? help.id : null }, el('legend', { text: labelOf(c) }));
+      c.value.forEach((v, i) => {
+        const path = c.path + '[' + i + ']';
+        group.append(numberInput(c, path, labelOf(c) + ' ' + names[i], v));
+      });
+      row.append(group, help);
+    }
+    return row;
+  }
+
+  function button(b) {
+    const label = b.label + (b.keys ? ' (' + b.keys + ')' : '');
+    return el('button', { type: 'button', 'data-key': 'command-' + b.command + '-' + (b.index ?? -1),
+      'aria-current': b.current ? 'true' : null, 'aria-keyshortcuts': b.keys ? b.keys.replace(/\s/g, '') : null,
+      text: b.label, 'aria-label': b.keys ? label : null, onclick: () => command(b) });
+  }
+
+  function section(s) {
+    const heading = el('h3', { id: 'h-' + s.id, text: s.label });
+    const box = el('section', { class: 'section', 'aria-labelledby': heading.id }, heading);
+    for (const c of s.controls) box.append(control(c));
+    if (s.buttons.length) {
+      const group = el('div', { class: 'buttons', role: 'group', 'aria-label': s.label });
+      for (const b of s.buttons) group.append(button(b));
+      box.append(group);
+    }
+    return box;
+  }
+
+  // The compact layout's tabs as a tablist: arrows move between tabs, Tab into the chosen one.
+  function selectTab(id, focus) {
+    chosenTab = id;
+    for (const t of tabs.querySelectorAll('[role=tab]')) {
+      const on = t.dataset.tab === id;
+      t.setAttribute('aria-selected', on);
+      t.tabIndex = on ? 0 : -1;
+      if (on && focus) t.focus();
+    }
+    for (const p of panels.children) p.hidden = p.dataset.tab !== id;
+  }
+  function tabKey(e) {
+    const all = [...tabs.querySelectorAll('[role=tab]')];
+    const at = all.indexOf(e.target);
+    const to = { ArrowRight: at + 1, ArrowLeft: at - 1, Home: 0, End: all.length - 1 }[e.key];
+    if (at < 0 || to === undefined) return false;
+    selectTab(all[(to + all.length) % all.length].dataset.tab, true);
+    return true;
+  }
+
+  function exercise(e) {
+    const box = document.getElementById('lab-exercise');
+    box.hidden = !e;
+    if (!e) return;
+    box.replaceChildren(el('h2', { id: 'h-exercise', text: 'Exercise: ' + e.title }), el('p', { text: e.instructions }),
+      ...e.hints.map((h, i) => el('p', { text: 'Hint ' + (i + 1) + ': ' + h })),
+      el('p', { id: 'lab-score', role: 'status', text: e.score ? e.score : 'Not scored yet' }),
+      el('div', { class: 'buttons', role: 'group', 'aria-label': 'Exercise' }, ...e.buttons.map(button)));
+  }
+
+  function build(m) {
+    const focused = document.activeElement && root.contains(document.activeElement) ?
+      (document.activeElement.closest('[data-key]') || {}).dataset : null;
+    const focusedId = document.activeElement ? document.activeElement.id : '';
+    tabs.replaceChildren();
+    panels.replaceChildren();
+    for (const t of m.tabs) {
+      tabs.append(el('button', { type: 'button', role: 'tab', id: 'tab-' + t.id, 'data-tab': t.id,
+        'aria-controls': 'panel-' + t.id, text: t.label, onclick: () => selectTab(t.id, true) }));
+      const panel = el('div', { role: 'tabpanel', id: 'panel-' + t.id, 'data-tab': t.id, 'aria-labelledby': 'tab-' + t.id });
+      for (const s of m.sections.filter((s) => s.tab === t.id)) panel.append(section(s));
+      panels.append(panel);
+    }
+    selectTab(m.tabs.some((t) => t.id === chosenTab) ? chosenTab : m.tabs[0].id, false);
+    const again = (focusedId && document.getElementById(focusedId)) ||
+      (focused && focused.key && root.querySelector(`[data-key="${CSS.escape(focused.key)}"] input, [data-key="${CSS.escape(focused.key)}"]`));
+    if (again && again.focus) again.focus({ preventScroll: true });
+  }
+
+  // The values of a description whose structure is the one built.
+  function update(m) {
+    for (const s of m.sections) {
+      for (const c of s.controls) {
+        const values = Array.isArray(c.value) ? c.value : [c.value];
+        values.forEach((v, i) => {
+          const path = Array.isArray(c.value) ? c.path + '[' + i + ']' : c.path;
+          for (const input of root.querySelectorAll(`[data-path="${CSS.escape(path)}"]`)) {
+            const editing = input === document.activeElement && (input.type === 'number' || input.type === 'text');
+            if (input.type === 'radio') input.checked = input.value === v;
+            else if (input.type === 'checkbox') input.checked = v;
+            else if (!editing && input.value !== String(v)) input.value = v;
+            if (input.type === 'range') input.setAttribute('aria-valuetext', spoken(v, c));
+          }
+        });
+      }
+      for (const b of s.buttons) {
+        const e = root.querySelector(`[data-key="command-${b.command}-${b.index ?? -1}"]`);
+        if (e) e.setAttribute('aria-current', b.current ? 'true' : 'false');
+      }
+    }
+  }
+
+  function words(p) {
+    document.getElementById('lab-description').textContent = p.description;
+    document.getElementById('lab-plot-summary').textContent = p.plot.summary;
+    const body = document.getElementById('lab-plot-rows');
+    body.replaceChildren(...p.plot.rows.map((r) => el('tr', {}, el('th', { scope: 'row', text: r[0] + '°' }),
+      ...r.slice(1).map((v) => el('td', { text: v.toFixed(3) })))));
+    document.getElementById('lab-lobe').textContent = p.lobe;
+    describedAt = performance.now();
+  }
+
+  function messages(m) {
+    const say = (text) => {
+      log.append(el('li', { text: new Date().toLocaleTimeString() + ': ' + text }));
+      while (log.children.length > 30) log.firstElementChild.remove();
+    };
+    if (m.messages.toast && m.messages.toast !== lastToast) say(m.messages.toast);
+    lastToast = m.messages.toast;
+    const score = m.exercise ? m.exercise.score : '';
+    if (score && score !== lastScore && m.exercise.solved) say('Solved: ' + m.exercise.title);
+    lastScore = score;
+    document.getElementById('lab-probe').textContent = m.readouts.probe || 'No pixel probed yet (click the model).';
+    document.getElementById('lab-legend').textContent = m.readouts.legend || 'The lit model is shown.';
+  }
+
+  // A description from the lab (every frame it changed).
+  Module.labPage = (text) => {
+    const m = JSON.parse(text);
+    window.labPageModel = m; // the browser tests read it
+    const { title, pictures, messages: said, readouts, ...structure } = m;
+    const s = JSON.stringify(structure, (k, v) => (k === 'value' || k === 'current' || k === 'score' || k === 'solved') ? undefined : v);
+    if (s !== shape) {
+      shape = s;
+      build(m);
+      exercise(m.exercise);
+    }
+    update(m);
+    if (m.exercise) {
+      const score = document.getElementById('lab-score');
+      const text = m.exercise.solved ? 'Solved. ' + m.exercise.score : m.exercise.score || 'Not scored yet';
+      if (score.textContent !== text) score.textContent = text;
+    }
+    document.getElementById('lab-document').textContent = m.title;
+    messages(m);
+    // The pictures' words once a change has settled (a second without one), not every frame.
+    const p = JSON.stringify(m.pictures);
+    if (!model || p !== JSON.stringify(model.pictures)) {
+      pendingWords = m.pictures;
+      clearTimeout(Module.labWordsTimer);
+      const wait = describedAt ? 1000 : 0;
+      Module.labWordsTimer = setTimeout(() => { words(pendingWords); }, wait);
+    }
+    model = m;
+  };
+
+  // The canvas's widget for the focused control gets the focus ring; none when the focus leaves.
+  root.addEventListener('focusin', (e) => {
+    const key = e.target.closest('[data-key]');
+    focusPath(key && !key.dataset.key.startsWith('command-') ? key.dataset.key : '');
+  });
+  root.addEventListener('focusout', (e) => { if (!root.contains(e.relatedTarget)) focusPath(''); });
+  Module.labAccessKey = (e) => e.type === 'keydown' && e.target.getAttribute('role') === 'tab' && tabKey(e) &&
+    (e.preventDefault(), true);
+})();
