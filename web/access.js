@@ -205,7 +205,7 @@
 
   function messages(m) {
     const say = (text) => {
-      log.append(el('li', { text: new Date().toLocaleTimeString() + ': ' + text }));
+      log.append(el('p', { text: new Date().toLocaleTimeString() + ': ' + text }));
       while (log.children.length > 30) log.firstElementChild.remove();
     };
     if (m.messages.toast && m.messages.toast !== lastToast) say(m.messages.toast);

@@ -8,7 +8,7 @@
 #include "core/scene/field_path.h"
 #include "core/scene/field_table.h"
 
-#include <nlohmann/json.hpp>
+#include "core/io/safe_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +20,60 @@ namespace lab {
 
 namespace {
 
-using Json = nlohmann::json;
+// The page's JSON, written as text as it is made. (nlohmann's templates, instantiated for this
+// file, cost the page's WebAssembly more than the whole parallel DOM: 11 KB gzip.)
+class Json {
+public:
+    Json(const char* s) : Json(std::string_view(s)) {}
+    Json(const std::string& s) : Json(std::string_view(s)) {}
+    Json(std::string_view s) : text_(quoted(s)) {}
+    Json(double v) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.7g", std::isfinite(v) ? v : 0.0); // a float's digits
+        text_ = buffer;
+    }
+    Json(int v) : text_(std::to_string(v)) {}
+    Json(bool v) : text_(v ? "true" : "false") {}
+    Json(std::initializer_list<std::pair<std::string_view, Json>> members) : text_("{}") {
+        for (const auto& [key, value] : members) {
+            set(key, value);
+        }
+    }
+    static Json array(std::initializer_list<Json> items = {}) {
+        Json a(0);
+        a.text_ = "[]";
+        for (const Json& item : items) {
+            a.push_back(item);
+        }
+        return a;
+    }
+    void push_back(const Json& v) { text_.insert(text_.size() - 1, (count_++ ? "," : "") + v.text_); }
+    void set(std::string_view key, const Json& v) {
+        text_.insert(text_.size() - 1, (count_++ ? "," : "") + quoted(key) + ":" + v.text_);
+    }
+    bool empty() const { return count_ == 0; }
+    const std::string& text() const { return text_; }
+
+private:
+    static std::string quoted(std::string_view s) {
+        std::string out = "\"";
+        for (char c : s) {
+            if (c == '"' || c == '\\') {
+                out += '\\';
+                out += c;
+            } else if (static_cast<unsigned char>(c) < 0x20) {
+                char buffer[8];
+                std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+                out += buffer;
+            } else {
+                out += c;
+            }
+        }
+        return out + '"';
+    }
+    std::string text_;
+    int count_ = 0;
+};
 using G = FieldGroup;
 
 // The panel's sections of fields, in its order, and the compact layout's tab each is on.
@@ -67,48 +120,43 @@ double stepOf(const FieldRow& row) {
     return std::pow(10.0, -digits);
 }
 
-// A float as the page shows it: its shortest decimal within float precision (0.001, not 0.0010000000474974513).
-double shown(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.7g", v);
-    return std::strtod(buffer, nullptr);
-}
-
-Json vec(const glm::vec3& v) { return Json::array({shown(v.x), shown(v.y), shown(v.z)}); }
+Json vec(const glm::vec3& v) { return Json::array({v.x, v.y, v.z}); }
 
 Json control(const FieldRow& row, Preset& p, LightDesc* light, const std::string& path) {
-    Json c = {{"path", path}, {"label", std::string(row.label)}, {"kind", kindName(row.kind)},
-              {"help", std::string(row.help)}, {"unit", std::string(row.unit)}};
+    Json c = {{"path", path}, {"label", row.label}, {"kind", kindName(row.kind)}, {"help", row.help}, {"unit", row.unit}};
     switch (row.kind) {
     case FieldKind::Number:
     case FieldKind::Vec3:
     case FieldKind::Color:
     case FieldKind::Direction:
-        c["min"] = shown(row.range->min);
-        c["max"] = shown(row.range->max);
-        c["slider"] = row.range->sliderMin == row.range->min && row.range->sliderMax == row.range->max;
-        c["step"] = shown(stepOf(row));
-        c["value"] = row.kind == FieldKind::Number ? Json(shown(fieldValue<float>(row, p, light)))
-                                                   : vec(fieldValue<glm::vec3>(row, p, light));
+        c.set("min", row.range->min);
+        c.set("max", row.range->max);
+        c.set("slider", row.range->sliderMin == row.range->min && row.range->sliderMax == row.range->max);
+        c.set("step", stepOf(row));
+        c.set("value", row.kind == FieldKind::Number ? Json(fieldValue<float>(row, p, light))
+                                                     : vec(fieldValue<glm::vec3>(row, p, light)));
         break;
     case FieldKind::Int2: {
         glm::ivec2 v = fieldValue<glm::ivec2>(row, p, light);
-        c["min"] = row.intRange->min;
-        c["max"] = row.intRange->max;
-        c["step"] = 1;
-        c["value"] = Json::array({v.x, v.y});
+        c.set("min", row.intRange->min);
+        c.set("max", row.intRange->max);
+        c.set("step", 1);
+        c.set("value", Json::array({v.x, v.y}));
         break;
     }
-    case FieldKind::Switch: c["value"] = fieldValue<bool>(row, p, light); break;
+    case FieldKind::Switch: c.set("value", fieldValue<bool>(row, p, light)); break;
     case FieldKind::Choice:
-        c["value"] = std::string(choiceName(row.choices, choiceValue(row, p, light)));
-        c["radios"] = (row.style & kStyleRadios) != 0;
-        c["choices"] = Json::array();
+        c.set("value", choiceName(row.choices, choiceValue(row, p, light)));
+        c.set("radios", (row.style & kStyleRadios) != 0);
+    {
+        Json choices = Json::array();
         for (const FieldChoice& choice : row.choices) {
-            c["choices"].push_back({{"name", std::string(choice.name)}, {"label", choice.label}});
+            choices.push_back({{"name", choice.name}, {"label", choice.label}});
         }
+        c.set("choices", choices);
         break;
-    case FieldKind::Text: c["value"] = fieldValue<std::string>(row, p, light); break;
+    }
+    case FieldKind::Text: c.set("value", printable(fieldValue<std::string>(row, p, light), true)); break;
     }
     return c;
 }
@@ -139,10 +187,10 @@ Json button(Command command, int index = -1, std::string label = {}) {
     const CommandRow& row = commandRow(command);
     Json b = {{"command", static_cast<int>(command)}, {"label", label.empty() ? std::string(row.label) : label}};
     if (row.key) {
-        b["keys"] = keyName(row.key, row.modifiers);
+        b.set("keys", keyName(row.key, row.modifiers));
     }
     if (index >= 0) {
-        b["index"] = index;
+        b.set("index", index);
     }
     return b;
 }
@@ -159,8 +207,7 @@ Json section(const char* id, const char* label, const char* tab, Json controls, 
     return {{"id", id}, {"label", label}, {"tab", tab}, {"controls", std::move(controls)}, {"buttons", std::move(buttons)}};
 }
 
-Json fileSections(Workspace& ws, const ui::ExercisePanelModel* exercise) {
-    Json out = Json::array();
+void fileSections(Workspace& ws, const ui::ExercisePanelModel* exercise, Json& out) {
     Json file = buttons({Command::Undo, Command::Redo, Command::PickFile, Command::DownloadPreset, Command::CopyLink,
                          Command::ToggleShareCode});
     if (!exercise) {
@@ -169,23 +216,21 @@ Json fileSections(Workspace& ws, const ui::ExercisePanelModel* exercise) {
     out.push_back(section("file", "File", "model", Json::array(), file));
     Json presets = Json::array();
     for (std::size_t i = 0; i < ws.presetFiles().size(); ++i) {
-        Json b = button(Command::OpenPresetAt, static_cast<int>(i), ws.presetFiles()[i].stem().string());
-        b["current"] = static_cast<int>(i) == ws.currentPreset();
+        Json b = button(Command::OpenPresetAt, static_cast<int>(i), printable(ws.presetFiles()[i].stem().string(), true));
+        b.set("current", static_cast<int>(i) == ws.currentPreset());
         presets.push_back(b);
     }
     for (std::size_t i = 0; i < ws.exerciseFiles().size(); ++i) {
-        presets.push_back(button(Command::OpenPath, static_cast<int>(i), "Exercise: " + ws.exerciseFiles()[i].stem().string()));
+        presets.push_back(button(Command::OpenPath, static_cast<int>(i), "Exercise: " + printable(ws.exerciseFiles()[i].stem().string(), true)));
     }
     out.push_back(section("presets", "Presets", "model", Json::array(), presets));
     out.push_back(section("view", "View", "model", Json::array(),
                           buttons({Command::OrbitLeft, Command::OrbitRight, Command::OrbitUp, Command::OrbitDown,
                                    Command::ZoomIn, Command::ZoomOut, Command::FrameModel, Command::ResetCamera,
                                    Command::NextViewMode, Command::ToggleCompare, Command::ToggleWireframe})));
-    return out;
 }
 
-Json fieldSections(Preset& p, const ui::ExercisePanelModel* exercise) {
-    Json out = Json::array();
+void fieldSections(Preset& p, const ui::ExercisePanelModel* exercise, Json& out) {
     for (const SectionSpec& s : kSections) {
         if (s.group != G::Lights) {
             Json c = controls(s.group, p, nullptr, 0, exercise);
@@ -206,7 +251,6 @@ Json fieldSections(Preset& p, const ui::ExercisePanelModel* exercise) {
             }
         }
     }
-    return out;
 }
 
 Json pictures(const Preset& p) {
@@ -223,28 +267,30 @@ Json pictures(const Preset& p) {
 
 const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
     Preset& p = ws.edited();
-    nlohmann::json page = {{"title", ws.document().displayName()}, {"tabs", Json::array()}, {"sections", Json::array()}};
+    Json tabs = Json::array();
     for (const auto& tab : kTabs) {
-        page["tabs"].push_back({{"id", tab[0]}, {"label", tab[1]}});
+        tabs.push_back({{"id", tab[0]}, {"label", tab[1]}});
     }
-    for (Json& s : fileSections(ws, facts.exercise)) {
-        page["sections"].push_back(std::move(s));
-    }
-    for (Json& s : fieldSections(p, facts.exercise)) {
-        page["sections"].push_back(std::move(s));
-    }
+    Json sections = Json::array();
+    fileSections(ws, facts.exercise, sections);
+    fieldSections(p, facts.exercise, sections);
+    Json page = {{"title", printable(ws.document().displayName(), true)}, {"tabs", tabs}, {"sections", sections}};
     if (const ui::ExercisePanelModel* e = facts.exercise) {
-        page["exercise"] = {{"title", e->title}, {"instructions", e->instructions}, {"hints", e->hints},
-                            {"score", e->score}, {"solved", e->solved},
-                            {"buttons", buttons({Command::ExerciseHint, Command::ExerciseReset, Command::ExerciseLeave})}};
+        Json hints = Json::array();
+        for (const std::string& h : e->hints) {
+            hints.push_back(h);
+        }
+        page.set("exercise", {{"title", e->title}, {"instructions", e->instructions}, {"hints", hints},
+                              {"score", e->score}, {"solved", e->solved},
+                              {"buttons", buttons({Command::ExerciseHint, Command::ExerciseReset, Command::ExerciseLeave})}});
     }
-    page["readouts"] = {{"probe", facts.probe}, {"legend", facts.legend}, {"orbiting", facts.orbiting}};
-    page["messages"] = {{"toast", facts.toast}, {"problem", facts.problem}};
+    page.set("readouts", {{"probe", facts.probe}, {"legend", facts.legend}, {"orbiting", facts.orbiting}});
+    page.set("messages", {{"toast", facts.toast}, {"problem", facts.problem}});
     if (!described_ || *described_ != ws.a()) {
         described_ = ws.a();
-        pictures_ = pictures(ws.a()).dump(-1, ' ', false, Json::error_handler_t::replace);
+        pictures_ = pictures(ws.a()).text();
     }
-    json_ = page.dump(-1, ' ', false, Json::error_handler_t::replace);
+    json_ = page.text();
     json_.pop_back(); // the object's '}': the pictures go last, as they were written
     json_ += ",\"pictures\":" + pictures_ + "}";
     return json_;

@@ -1,0 +1,171 @@
+// access.test.mjs — the page for every student (issue 38): the parallel DOM that screen readers
+// read and the keyboard drives (web/access.js, app/page_model.h), checked through the accessibility
+// tree (Playwright's role queries, the DevTools protocol's Accessibility.getFullAXTree) and by
+// axe-core's WCAG 2.1 A and AA rules.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { createRequire } from 'node:module';
+import { PNG } from 'pngjs';
+import { withBrowser, newLabPage, settle, widgets, compare, frames, repo } from './page.mjs';
+
+const env = withBrowser();
+const axePath = createRequire(import.meta.url).resolve('axe-core/axe.min.js');
+
+// The model's viewport as the page shows it.
+async function viewPixels(page) {
+  const view = (await widgets(page)).view;
+  return PNG.sync.read(await page.screenshot({ clip: { x: view.x, y: view.y, width: view.w, height: view.h } }));
+}
+
+// axe-core's WCAG 2.1 A and AA rules on the page as it is; the violations, one line each.
+async function axeViolations(page) {
+  await page.addScriptTag({ path: axePath });
+  const result = await page.evaluate(() => window.axe.run(document, {
+    runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'] } }));
+  return result.violations.map((v) => `${v.id} (${v.impact}): ${v.help} — ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(', ')}`);
+}
+
+// The controls the lab described, by path (a triplet's parts as path[i]).
+function describedControls(model) {
+  const out = new Map();
+  for (const s of model.sections) {
+    for (const c of s.controls) {
+      if (Array.isArray(c.value)) c.value.forEach((v, i) => out.set(`${c.path}[${i}]`, c));
+      else out.set(c.path, c);
+    }
+  }
+  return out;
+}
+
+test('every field the panel shows has its native control, with the range, step, value and a name that holds its label', async () => {
+  const { page, context, problems } = await newLabPage(env.browser, env.base);
+  const model = await page.evaluate(() => window.labPageModel);
+  const described = describedControls(model);
+  assert.ok(described.size > 40, `the default scene's panel has more than 40 values: ${described.size}`);
+  const found = await page.evaluate(() => [...document.querySelectorAll('#lab-access [data-path]')].map((e) => ({
+    path: e.dataset.path, type: e.type, min: e.min, max: e.max, step: e.step, value: e.value, checked: e.checked,
+    name: e.type === 'radio' ? '' : e.labels && e.labels.length ? e.labels[0].textContent : e.getAttribute('aria-label'),
+    group: e.closest('fieldset') ? e.closest('fieldset').querySelector('legend').textContent : '' })));
+  const seen = new Set(found.map((f) => f.path));
+  assert.deepEqual([...described.keys()].filter((p) => !seen.has(p)), [], 'fields without a control');
+  for (const f of found) {
+    const c = described.get(f.path);
+    assert.ok(c, `a control for a field the lab did not describe: ${f.path}`);
+    assert.ok((f.name || f.group).includes(c.label), `${f.path}: its name "${f.name || f.group}" holds its label "${c.label}"`);
+    if (f.type === 'range' || f.type === 'number') {
+      assert.deepEqual([+f.min, +f.max, +f.step], [c.min, c.max, c.step], `${f.path}: range and step`);
+      const i = f.path.endsWith(']') && Array.isArray(c.value) ? +f.path.slice(f.path.lastIndexOf('[') + 1, -1) : -1;
+      assert.equal(+f.value, i >= 0 ? c.value[i] : c.value, `${f.path}: value`);
+    }
+  }
+  // The accessibility tree (what a screen reader gets): every control has a name, every slider and
+  // spin button its value.
+  const cdp = await context.newCDPSession(page);
+  const { nodes } = await cdp.send('Accessibility.getFullAXTree');
+  const controls = nodes.filter((n) => !n.ignored && ['slider', 'spinbutton', 'combobox', 'checkbox', 'radio', 'button', 'tab'].includes(n.role?.value));
+  assert.ok(controls.length > 60, `controls in the accessibility tree: ${controls.length}`);
+  for (const n of controls) {
+    assert.ok(n.name?.value, `a ${n.role.value} without a name`);
+    if (n.role.value === 'slider' || n.role.value === 'spinbutton') {
+      assert.ok(n.value?.value !== undefined && n.value.value !== '', `${n.name.value}: no value in the tree`);
+    }
+  }
+  assert.ok(controls.some((n) => n.role.value === 'slider' && /degrees/.test(JSON.stringify(n.properties))),
+    'a slider in degrees says so in its value text');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('an exercise is solved with the keyboard alone: Tab from the canvas to the shininess, type, Enter', async () => {
+  const exercise = JSON.parse(fs.readFileSync(path.join(repo, 'presets/exercises/02-shininess.json'), 'utf8'));
+  const target = exercise.target.material.shininess;
+  const { page, context, problems } = await newLabPage(env.browser, `${env.base}#exercise=02-shininess`);
+  const before = await viewPixels(page);
+  await page.focus('#canvas');
+  const shininess = page.getByRole('spinbutton', { name: /shininess/ });
+  const visited = [];
+  for (let i = 0; i < 60 && !(await shininess.evaluate((e) => e === document.activeElement)); ++i) {
+    await page.keyboard.press('Tab');
+    visited.push(await page.evaluate(() => document.activeElement.id || document.activeElement.tagName));
+  }
+  assert.ok(await shininess.evaluate((e) => e === document.activeElement), `Tab never reached the shininess: ${visited.join(' ')}`);
+  assert.ok(visited.length <= 12, `the shininess is near the top: ${visited.join(' ')}`);
+  // The card at the bottom shows what has the keyboard (WCAG 2.4.7), its widget on the canvas a ring.
+  const card = await page.evaluate(() => {
+    const r = document.activeElement.closest('.row').getBoundingClientRect();
+    return { w: r.width, h: r.height, bottom: r.bottom, height: innerHeight };
+  });
+  assert.ok(card.w > 100 && card.h > 20 && card.bottom <= card.height, `the focused control shows: ${JSON.stringify(card)}`);
+  await page.keyboard.press('Control+A');
+  await page.keyboard.type(String(target));
+  await page.keyboard.press('Enter');
+  await settle(page);
+  await page.getByRole('status').filter({ hasText: 'Solved' }).waitFor({ timeout: 15000 });
+  const after = await viewPixels(page);
+  assert.ok(compare(before, after, { pixel: 8 }).failingShare > 0.001, 'the canvas changed');
+  const log = await page.evaluate(() => document.getElementById('lab-log').textContent);
+  assert.match(log, /Solved/, 'the message log keeps it');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('keys typed into the page\'s controls fire no shortcut; the camera buttons orbit and zoom', async () => {
+  const { page, context, problems } = await newLabPage(env.browser, env.base);
+  const shininess = page.getByRole('spinbutton', { name: /shininess/ });
+  await shininess.focus();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.type('1'); // flat shading, were it the canvas's
+  await page.keyboard.press('b'); // the next BRDF
+  await page.keyboard.press('Tab');
+  await settle(page);
+  const model = await page.evaluate(() => window.labPageModel);
+  const value = (p) => model.sections.flatMap((s) => s.controls).find((c) => c.path === p).value;
+  assert.equal(value('shading'), 'phong');
+  assert.equal(value('brdf'), 'phong');
+  assert.equal(value('material.shininess'), 1, 'the typed value was taken when the focus left');
+  // Orbit and zoom without a drag (WCAG 2.5.1): buttons, by keyboard.
+  const before = await viewPixels(page);
+  await page.getByRole('tab', { name: 'Model' }).focus();
+  await page.keyboard.press('Enter');
+  const orbit = page.getByRole('button', { name: 'Orbit left' });
+  await orbit.focus();
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('Enter');
+  await page.getByRole('button', { name: 'Zoom in' }).focus();
+  await page.keyboard.press('Space');
+  await settle(page);
+  const after = await viewPixels(page);
+  assert.ok(compare(before, after, { pixel: 8 }).failingShare > 0.01, 'the view moved');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+for (const [name, fragment, options] of [
+  ['the default scene', '', {}],
+  ['an exercise', '#exercise=02-shininess', {}],
+  ['the phone layout', '', { width: 390, height: 844, touch: true, scale: 3 }],
+]) {
+  test(`axe-core finds no WCAG 2.1 A or AA violation: ${name}`, async () => {
+    const { page, context, problems } = await newLabPage(env.browser, env.base + fragment, options);
+    const violations = await axeViolations(page);
+    assert.deepEqual(violations, []);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+}
+
+test('at 200% zoom (half the window at twice the pixels) and 320 CSS pixels wide, the panel\'s widgets stay in the window', async () => {
+  for (const [width, height, scale] of [[640, 380, 2], [320, 568, 2]]) {
+    const { page, context, problems } = await newLabPage(env.browser, env.base, { width, height, scale });
+    await frames(page, 3);
+    const rects = await widgets(page);
+    const outside = Object.entries(rects).filter(([, r]) => r.w > 0 && (r.x < -1 || r.x + r.w > width + 1));
+    assert.deepEqual(outside.map(([n, r]) => `${n} ${JSON.stringify(r)}`), [], `${width}x${height}: cut off on the side`);
+    const scroll = await page.evaluate(() => [document.documentElement.scrollWidth, innerWidth]);
+    assert.ok(scroll[0] <= scroll[1], `no sideways scrolling at ${width}: ${scroll}`);
+    assert.deepEqual(problems, []);
+    await context.close();
+  }
+});

@@ -1,0 +1,16 @@
+import { startBrowser, newLabPage, settle } from './page.mjs';
+const env = await startBrowser();
+const { page, problems } = await newLabPage(env.browser, env.base);
+page.on('console', (m) => console.log('console', m.text()));
+const shin = page.getByRole('spinbutton', { name: /shininess/ });
+await shin.first().focus();
+await shin.first().fill('5');
+console.log(await page.evaluate(() => { const i = document.activeElement; return [i.value, i.checkValidity(), i.step, i.min]; }));
+await shin.first().press('Enter');
+await settle(page);
+console.log(await page.evaluate(() => window.labPageModel.sections.find((s) => s.id === 'material').controls.find((c) => c.path === 'material.shininess').value));
+await shin.first().blur();
+await settle(page);
+console.log(await page.evaluate(() => window.labPageModel.sections.find((s) => s.id === 'material').controls.find((c) => c.path === 'material.shininess').value));
+console.log(problems);
+await env.close();
