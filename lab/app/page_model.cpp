@@ -20,61 +20,79 @@ namespace lab {
 
 namespace {
 
-// The page's JSON, written as text as it is made. (nlohmann's templates, instantiated for this
-// file, cost the page's WebAssembly more than the whole parallel DOM: 11 KB gzip.)
-class Json {
+using G = FieldGroup;
+
+// The page's JSON, written as it is made: a call a value, no temporaries. (nlohmann's templates,
+// or a value type of strings, cost the page's WebAssembly tens of kilobytes for this file.)
+class Writer {
 public:
-    Json(const char* s) : Json(std::string_view(s)) {}
-    Json(const std::string& s) : Json(std::string_view(s)) {}
-    Json(std::string_view s) : text_(quoted(s)) {}
-    Json(double v) {
-        char buffer[32];
-        std::snprintf(buffer, sizeof buffer, "%.7g", std::isfinite(v) ? v : 0.0); // a float's digits
-        text_ = buffer;
+    Writer& open(char bracket) {
+        comma();
+        text += bracket;
+        first_ = true;
+        return *this;
     }
-    Json(int v) : text_(std::to_string(v)) {}
-    Json(bool v) : text_(v ? "true" : "false") {}
-    Json(std::initializer_list<std::pair<std::string_view, Json>> members) : text_("{}") {
-        for (const auto& [key, value] : members) {
-            set(key, value);
-        }
+    Writer& close(char bracket) {
+        text += bracket;
+        first_ = false;
+        return *this;
     }
-    static Json array(std::initializer_list<Json> items = {}) {
-        Json a(0);
-        a.text_ = "[]";
-        for (const Json& item : items) {
-            a.push_back(item);
-        }
-        return a;
+    Writer& key(std::string_view k) {
+        str(k);
+        text += ':';
+        first_ = true;
+        return *this;
     }
-    void push_back(const Json& v) { text_.insert(text_.size() - 1, (count_++ ? "," : "") + v.text_); }
-    void set(std::string_view key, const Json& v) {
-        text_.insert(text_.size() - 1, (count_++ ? "," : "") + quoted(key) + ":" + v.text_);
+    Writer& str(std::string_view v);
+    Writer& num(double v);
+    Writer& raw(std::string_view json) { // a value written by another writer
+        comma();
+        text += json;
+        return *this;
     }
-    bool empty() const { return count_ == 0; }
-    const std::string& text() const { return text_; }
+    Writer& flag(bool v) {
+        comma();
+        text += v ? "true" : "false";
+        return *this;
+    }
+    std::string text;
 
 private:
-    static std::string quoted(std::string_view s) {
-        std::string out = "\"";
-        for (char c : s) {
-            if (c == '"' || c == '\\') {
-                out += '\\';
-                out += c;
-            } else if (static_cast<unsigned char>(c) < 0x20) {
-                char buffer[8];
-                std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-                out += buffer;
-            } else {
-                out += c;
-            }
+    void comma() {
+        if (!first_) {
+            text += ',';
         }
-        return out + '"';
+        first_ = false;
     }
-    std::string text_;
-    int count_ = 0;
+    bool first_ = true;
 };
-using G = FieldGroup;
+
+Writer& Writer::str(std::string_view v) {
+    comma();
+    text += '"';
+    for (char c : v) {
+        if (c == '"' || c == '\\') {
+            text += '\\';
+            text += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char buffer[8];
+            std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+            text += buffer;
+        } else {
+            text += c;
+        }
+    }
+    text += '"';
+    return *this;
+}
+
+Writer& Writer::num(double v) {
+    comma();
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.7g", std::isfinite(v) ? v : 0.0); // a float's digits: 0.001, not 0.0010000000474974513
+    text += buffer;
+    return *this;
+}
 
 // The panel's sections of fields, in its order, and the compact layout's tab each is on.
 struct SectionSpec {
@@ -93,20 +111,7 @@ constexpr SectionSpec kSections[] = {
     {"plot", "Plots", "plots", G::Plot},
 };
 constexpr const char* kTabs[][2] = {{"model", "Model"}, {"material", "Material"}, {"lights", "Lights"}, {"plots", "Plots"}};
-
-const char* kindName(FieldKind k) {
-    switch (k) {
-    case FieldKind::Number: return "number";
-    case FieldKind::Vec3: return "vec3";
-    case FieldKind::Color: return "color";
-    case FieldKind::Direction: return "direction";
-    case FieldKind::Int2: return "int2";
-    case FieldKind::Switch: return "switch";
-    case FieldKind::Choice: return "choice";
-    case FieldKind::Text: return "text";
-    }
-    return "?";
-}
+constexpr const char* kKinds[] = {"number", "vec3", "color", "direction", "int2", "switch", "choice", "text"}; // FieldKind's order
 
 // A number's step: the row's, or the last digit its format shows ("%.3f": 0.001).
 double stepOf(const FieldRow& row) {
@@ -120,45 +125,43 @@ double stepOf(const FieldRow& row) {
     return std::pow(10.0, -digits);
 }
 
-Json vec(const glm::vec3& v) { return Json::array({v.x, v.y, v.z}); }
-
-Json control(const FieldRow& row, Preset& p, LightDesc* light, const std::string& path) {
-    Json c = {{"path", path}, {"label", row.label}, {"kind", kindName(row.kind)}, {"help", row.help}, {"unit", row.unit}};
+void control(Writer& w, const FieldRow& row, Preset& p, LightDesc* light, const std::string& path) {
+    w.open('{').key("path").str(path).key("label").str(row.label).key("kind").str(kKinds[static_cast<int>(row.kind)]);
+    w.key("help").str(row.help).key("unit").str(row.unit);
     switch (row.kind) {
     case FieldKind::Number:
     case FieldKind::Vec3:
     case FieldKind::Color:
-    case FieldKind::Direction:
-        c.set("min", row.range->min);
-        c.set("max", row.range->max);
-        c.set("slider", row.range->sliderMin == row.range->min && row.range->sliderMax == row.range->max);
-        c.set("step", stepOf(row));
-        c.set("value", row.kind == FieldKind::Number ? Json(fieldValue<float>(row, p, light))
-                                                     : vec(fieldValue<glm::vec3>(row, p, light)));
+    case FieldKind::Direction: {
+        const limits::Range& r = *row.range;
+        w.key("min").num(r.min).key("max").num(r.max).key("step").num(stepOf(row));
+        w.key("slider").flag(r.sliderMin == r.min && r.sliderMax == r.max).key("value");
+        if (row.kind == FieldKind::Number) {
+            w.num(fieldValue<float>(row, p, light));
+        } else {
+            const glm::vec3& v = fieldValue<glm::vec3>(row, p, light);
+            w.open('[').num(v.x).num(v.y).num(v.z).close(']');
+        }
         break;
+    }
     case FieldKind::Int2: {
         glm::ivec2 v = fieldValue<glm::ivec2>(row, p, light);
-        c.set("min", row.intRange->min);
-        c.set("max", row.intRange->max);
-        c.set("step", 1);
-        c.set("value", Json::array({v.x, v.y}));
+        w.key("min").num(row.intRange->min).key("max").num(row.intRange->max).key("step").num(1);
+        w.key("value").open('[').num(v.x).num(v.y).close(']');
         break;
     }
-    case FieldKind::Switch: c.set("value", fieldValue<bool>(row, p, light)); break;
+    case FieldKind::Switch: w.key("value").flag(fieldValue<bool>(row, p, light)); break;
     case FieldKind::Choice:
-        c.set("value", choiceName(row.choices, choiceValue(row, p, light)));
-        c.set("radios", (row.style & kStyleRadios) != 0);
-    {
-        Json choices = Json::array();
+        w.key("value").str(choiceName(row.choices, choiceValue(row, p, light)));
+        w.key("radios").flag((row.style & kStyleRadios) != 0).key("choices").open('[');
         for (const FieldChoice& choice : row.choices) {
-            choices.push_back({{"name", choice.name}, {"label", choice.label}});
+            w.open('{').key("name").str(choice.name).key("label").str(choice.label).close('}');
         }
-        c.set("choices", choices);
+        w.close(']');
         break;
+    case FieldKind::Text: w.key("value").str(printable(fieldValue<std::string>(row, p, light), true)); break;
     }
-    case FieldKind::Text: c.set("value", printable(fieldValue<std::string>(row, p, light), true)); break;
-    }
-    return c;
+    w.close('}');
 }
 
 // Whether the exercise being solved lets the student change `path` (ui/panel FieldGate's rule).
@@ -167,9 +170,11 @@ bool open(const ui::ExercisePanelModel* exercise, const std::string& path) {
            std::any_of(exercise->open.begin(), exercise->open.end(), [&](const std::string& o) { return covers(o, path); });
 }
 
-// The controls of `group` (of one light) that the panel would show, in the table's order.
-Json controls(FieldGroup group, Preset& p, LightDesc* light, int lightIndex, const ui::ExercisePanelModel* exercise) {
-    Json out = Json::array();
+// The controls of `group` (of one light) that the panel would show, in the table's order; how many.
+int controls(Writer& w, FieldGroup group, Preset& p, LightDesc* light, int lightIndex,
+             const ui::ExercisePanelModel* exercise) {
+    int count = 0;
+    w.key("controls").open('[');
     for (const FieldRow& row : fieldRows()) {
         if (row.group != group || (row.style & kStyleHidden) || (row.custom && row.kind == FieldKind::Text) ||
             !applies(row, p, light)) {
@@ -177,121 +182,131 @@ Json controls(FieldGroup group, Preset& p, LightDesc* light, int lightIndex, con
         }
         std::string path = fieldPath(row, lightIndex);
         if (open(exercise, path)) {
-            out.push_back(control(row, p, light, path));
+            control(w, row, p, light, path);
+            ++count;
         }
     }
-    return out;
+    w.close(']');
+    return count;
 }
 
-Json button(Command command, int index = -1, std::string label = {}) {
+void button(Writer& w, Command command, int index = -1, std::string_view label = {}, bool current = false) {
     const CommandRow& row = commandRow(command);
-    Json b = {{"command", static_cast<int>(command)}, {"label", label.empty() ? std::string(row.label) : label}};
+    w.open('{').key("command").num(static_cast<int>(command)).key("label").str(label.empty() ? row.label : label);
     if (row.key) {
-        b.set("keys", keyName(row.key, row.modifiers));
+        w.key("keys").str(keyName(row.key, row.modifiers));
     }
     if (index >= 0) {
-        b.set("index", index);
+        w.key("index").num(index).key("current").flag(current);
     }
-    return b;
+    w.close('}');
 }
 
-Json buttons(std::initializer_list<Command> commands) {
-    Json out = Json::array();
+void buttons(Writer& w, std::initializer_list<Command> commands) {
+    w.key("buttons").open('[');
     for (Command c : commands) {
-        out.push_back(button(c));
+        button(w, c);
     }
-    return out;
+    w.close(']');
 }
 
-Json section(const char* id, const char* label, const char* tab, Json controls, Json buttons = Json::array()) {
-    return {{"id", id}, {"label", label}, {"tab", tab}, {"controls", std::move(controls)}, {"buttons", std::move(buttons)}};
+void sectionStart(Writer& w, std::string_view id, std::string_view label, std::string_view tab) {
+    w.open('{').key("id").str(id).key("label").str(label).key("tab").str(tab);
 }
 
-void fileSections(Workspace& ws, const ui::ExercisePanelModel* exercise, Json& out) {
-    Json file = buttons({Command::Undo, Command::Redo, Command::PickFile, Command::DownloadPreset, Command::CopyLink,
-                         Command::ToggleShareCode});
-    if (!exercise) {
-        file.push_back(button(Command::MakeExercise));
+void fileSections(Writer& w, Workspace& ws, const ui::ExercisePanelModel* exercise) {
+    sectionStart(w, "file", "File", "model");
+    w.key("controls").open('[').close(']');
+    if (exercise) { // an exercise is not made from an exercise
+        buttons(w, {Command::Undo, Command::Redo, Command::PickFile, Command::DownloadPreset, Command::CopyLink,
+                    Command::ToggleShareCode});
+    } else {
+        buttons(w, {Command::Undo, Command::Redo, Command::PickFile, Command::DownloadPreset, Command::CopyLink,
+                    Command::ToggleShareCode, Command::MakeExercise});
     }
-    out.push_back(section("file", "File", "model", Json::array(), file));
-    Json presets = Json::array();
+    w.close('}');
+    sectionStart(w, "presets", "Presets", "model");
+    w.key("controls").open('[').close(']').key("buttons").open('[');
     for (std::size_t i = 0; i < ws.presetFiles().size(); ++i) {
-        Json b = button(Command::OpenPresetAt, static_cast<int>(i), printable(ws.presetFiles()[i].stem().string(), true));
-        b.set("current", static_cast<int>(i) == ws.currentPreset());
-        presets.push_back(b);
+        button(w, Command::OpenPresetAt, static_cast<int>(i), printable(ws.presetFiles()[i].stem().string(), true),
+               static_cast<int>(i) == ws.currentPreset());
     }
     for (std::size_t i = 0; i < ws.exerciseFiles().size(); ++i) {
-        presets.push_back(button(Command::OpenPath, static_cast<int>(i), "Exercise: " + printable(ws.exerciseFiles()[i].stem().string(), true)));
+        button(w, Command::OpenPath, static_cast<int>(i), "Exercise: " + printable(ws.exerciseFiles()[i].stem().string(), true));
     }
-    out.push_back(section("presets", "Presets", "model", Json::array(), presets));
-    out.push_back(section("view", "View", "model", Json::array(),
-                          buttons({Command::OrbitLeft, Command::OrbitRight, Command::OrbitUp, Command::OrbitDown,
-                                   Command::ZoomIn, Command::ZoomOut, Command::FrameModel, Command::ResetCamera,
-                                   Command::NextViewMode, Command::ToggleCompare, Command::ToggleWireframe})));
+    w.close(']').close('}');
+    sectionStart(w, "view", "View", "model");
+    w.key("controls").open('[').close(']');
+    buttons(w, {Command::OrbitLeft, Command::OrbitRight, Command::OrbitUp, Command::OrbitDown, Command::ZoomIn,
+                Command::ZoomOut, Command::FrameModel, Command::ResetCamera, Command::NextViewMode, Command::ToggleCompare,
+                Command::ToggleWireframe});
+    w.close('}');
 }
 
-void fieldSections(Preset& p, const ui::ExercisePanelModel* exercise, Json& out) {
+void fieldSections(Writer& w, Preset& p, const ui::ExercisePanelModel* exercise) {
     for (const SectionSpec& s : kSections) {
-        if (s.group != G::Lights) {
-            Json c = controls(s.group, p, nullptr, 0, exercise);
-            if (!c.empty() || s.group == G::Model) {
-                Json b = s.group == G::Model ? buttons({Command::LoadModel}) : Json::array();
-                if (s.group == G::Plot) {
-                    b = buttons({Command::ExportFigures});
-                }
-                out.push_back(section(s.id, s.label, s.tab, std::move(c), std::move(b)));
+        for (std::size_t i = 0; i < (s.group == G::Lights ? p.lights.size() : 1); ++i) {
+            const bool light = s.group == G::Lights;
+            const std::string n = std::to_string(i + 1);
+            Writer section;
+            sectionStart(section, light ? "light" + n : s.id, light ? "Light " + n : s.label, s.tab);
+            const int count = controls(section, s.group, p, light ? &p.lights[i] : nullptr, static_cast<int>(i), exercise);
+            if (count == 0 && s.group != G::Model) { // a section the exercise closes entirely is not there
+                continue;
             }
-            continue;
-        }
-        for (std::size_t i = 0; i < p.lights.size(); ++i) {
-            Json c = controls(G::Lights, p, &p.lights[i], static_cast<int>(i), exercise);
-            if (!c.empty()) {
-                std::string id = "light" + std::to_string(i + 1);
-                out.push_back(section(id.c_str(), ("Light " + std::to_string(i + 1)).c_str(), s.tab, std::move(c)));
+            if (s.group == G::Model) {
+                buttons(section, {Command::LoadModel});
+            } else if (s.group == G::Plot) {
+                buttons(section, {Command::ExportFigures});
+            } else {
+                section.key("buttons").open('[').close(']');
             }
+            w.raw(section.close('}').text);
         }
     }
 }
 
-Json pictures(const Preset& p) {
+void pictures(Writer& w, const Preset& p) {
     PlotWords plot = describePlanePlot(p, 5);
-    Json rows = Json::array();
+    w.open('{').key("description").str(describeScene(p)).key("plot").open('{').key("summary").str(plot.summary);
+    w.key("rows").open('[');
     for (const PlotSample& s : plot.rows) {
-        rows.push_back(Json::array({s.thetaOutDeg, s.diffuse, s.specular, s.total}));
+        w.open('[').num(s.thetaOutDeg).num(s.diffuse).num(s.specular).num(s.total).close(']');
     }
-    return {{"description", describeScene(p)}, {"plot", {{"summary", plot.summary}, {"rows", rows}}},
-            {"lobe", describeLobe(p)}};
+    w.close(']').close('}').key("lobe").str(describeLobe(p)).close('}');
 }
 
 } // namespace
 
 const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
-    Preset& p = ws.edited();
-    Json tabs = Json::array();
+    Writer w;
+    w.open('{').key("title").str(printable(ws.document().displayName(), true)).key("tabs").open('[');
     for (const auto& tab : kTabs) {
-        tabs.push_back({{"id", tab[0]}, {"label", tab[1]}});
+        w.open('{').key("id").str(tab[0]).key("label").str(tab[1]).close('}');
     }
-    Json sections = Json::array();
-    fileSections(ws, facts.exercise, sections);
-    fieldSections(p, facts.exercise, sections);
-    Json page = {{"title", printable(ws.document().displayName(), true)}, {"tabs", tabs}, {"sections", sections}};
+    w.close(']').key("sections").open('[');
+    fileSections(w, ws, facts.exercise);
+    fieldSections(w, ws.edited(), facts.exercise);
+    w.close(']');
     if (const ui::ExercisePanelModel* e = facts.exercise) {
-        Json hints = Json::array();
+        w.key("exercise").open('{').key("title").str(e->title).key("instructions").str(e->instructions).key("hints").open('[');
         for (const std::string& h : e->hints) {
-            hints.push_back(h);
+            w.str(h);
         }
-        page.set("exercise", {{"title", e->title}, {"instructions", e->instructions}, {"hints", hints},
-                              {"score", e->score}, {"solved", e->solved},
-                              {"buttons", buttons({Command::ExerciseHint, Command::ExerciseReset, Command::ExerciseLeave})}});
+        w.close(']').key("score").str(e->score).key("solved").flag(e->solved);
+        buttons(w, {Command::ExerciseHint, Command::ExerciseReset, Command::ExerciseLeave});
+        w.close('}');
     }
-    page.set("readouts", {{"probe", facts.probe}, {"legend", facts.legend}, {"orbiting", facts.orbiting}});
-    page.set("messages", {{"toast", facts.toast}, {"problem", facts.problem}});
+    w.key("readouts").open('{').key("probe").str(facts.probe).key("legend").str(facts.legend);
+    w.key("orbiting").flag(facts.orbiting).close('}');
+    w.key("messages").open('{').key("toast").str(facts.toast).key("problem").str(facts.problem).close('}');
     if (!described_ || *described_ != ws.a()) {
         described_ = ws.a();
-        pictures_ = pictures(ws.a()).text();
+        Writer words;
+        pictures(words, ws.a());
+        pictures_ = std::move(words.text);
     }
-    json_ = page.text();
-    json_.pop_back(); // the object's '}': the pictures go last, as they were written
+    json_ = std::move(w.text);
     json_ += ",\"pictures\":" + pictures_ + "}";
     return json_;
 }
