@@ -85,8 +85,9 @@
       for (const choice of c.choices) select.append(el('option', { value: choice.name, text: choice.label }));
       select.value = c.value;
       row.append(el('label', { for: select.id, text: labelOf(c) }), select, help);
-    } else if (c.kind === 'text') {
-      const input = el('input', { type: 'text', id: idOf(c.path), 'data-path': c.path,
+    } else if (c.kind === 'text' || c.kind === 'code') { // a text field; a shader's source in a text area
+      const input = el(c.kind === 'code' ? 'textarea' : 'input', { type: c.kind === 'code' ? null : 'text', id: idOf(c.path),
+        'data-path': c.path, 'aria-describedby': help ? help.id : null, spellcheck: 'false',
         onchange: (e) => send(c.path, e.target.value) });
       input.value = c.value;
       row.append(el('label', { for: input.id, text: labelOf(c) }), input, help);
@@ -118,6 +119,9 @@
       for (const b of s.buttons) group.append(button(b));
       box.append(group);
     }
+    // The shader editor's compile log or the sweep's problem; the QR code's link while it is shown.
+    if (s.log) box.append(el('pre', { class: 'log', role: 'status', text: s.log }));
+    if (s.link) box.append(el('p', {}, 'The QR code opens ', el('a', { href: s.link, text: s.link })));
     return box;
   }
 
@@ -178,7 +182,7 @@
         values.forEach((v, i) => {
           const path = Array.isArray(c.value) ? c.path + '[' + i + ']' : c.path;
           for (const input of root.querySelectorAll(`[data-path="${CSS.escape(path)}"]`)) {
-            const editing = input === document.activeElement && (input.type === 'number' || input.type === 'text');
+            const editing = input === document.activeElement && ['number', 'text', 'textarea'].includes(input.type);
             if (input.type === 'radio') input.checked = input.value === v;
             else if (input.type === 'checkbox') input.checked = v;
             else if (!editing && input.value !== String(v)) input.value = v;

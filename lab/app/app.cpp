@@ -19,7 +19,6 @@
 #include "ui/screen.h"
 #include "ui/widget_map.h"
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -116,7 +115,7 @@ struct App::Impl {
     }
 
     ui::ScreenModel screenModel();
-    const ui::ExercisePanelModel* panelInfoExercise() const { return workspace.exercise() ? &exerciseView : nullptr; }
+    PageFacts pageTools() { return openTools(shaderEditor, sweep); }
     // The page's focused control: its widget gets the focus ring, on the compact layout's tab that has it.
     void focusPage(const std::optional<std::string>& path) {
         if (path && ui::widgets().focus(*path) && !path->empty()) {
@@ -507,7 +506,7 @@ FrameOutput App::frame(const FrameInput& in) {
         m.started = true;
     }
     std::vector<Request> pageRequests; // the page's controls go first: this frame's panel shows their values
-    if (std::string refused = applyPageEdits(ws, in.pageEdits, pageRequests); !refused.empty()) {
+    if (std::string refused = applyPageEdits(ws, in.pageEdits, m.pageTools(), pageRequests); !refused.empty()) {
         ws.note(refused);
     }
     m.focusPage(in.pageFocus);
@@ -563,9 +562,11 @@ FrameOutput App::frame(const FrameInput& in) {
     out.viewportScale = scale;
     out.redrawIn = redrawIn;
     if (m.options.describePage) {
-        out.page = m.page.json(ws, {m.panelInfoExercise(), m.toastLeft > 0.0f ? m.toast : "", out.problem,
-                                      probeWords(m.probe.shown() ? m.probe.result() : nullptr),
-                                      legendWords(model.captions.legend), orbiting});
+        PageFacts tools = m.pageTools();
+        out.page = m.page.json(ws, {ws.exercise() ? &m.exerciseView : nullptr, m.toastLeft > 0.0f ? m.toast : "",
+                                    out.problem, probeWords(m.probe.shown() ? m.probe.result() : nullptr),
+                                    legendWords(model.captions.legend), orbiting,
+                                    model.shareCode ? model.shareCode->link : "", tools.shader, tools.sweep});
     }
     return out;
 }

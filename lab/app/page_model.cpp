@@ -276,6 +276,68 @@ void pictures(Writer& w, const Preset& p) {
     w.close(']').close('}').key("lobe").str(describeLobe(p)).close('}');
 }
 
+std::string join(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& line : lines) {
+        text += (text.empty() ? "" : "\n") + line;
+    }
+    return text;
+}
+
+} // namespace
+
+PageFacts openTools(ui::ShaderEditorState& shader, ui::SweepViewState& sweep) {
+    PageFacts facts;
+    facts.shader = shader.open ? &shader : nullptr;
+    facts.sweep = sweep.open ? &sweep : nullptr;
+    return facts;
+}
+
+// A tool window's text field: the shader editor's three files, the sweep's keys and values.
+std::string* toolField(const std::string& path, const PageFacts& tools) {
+    if (ui::ShaderEditorState* s = tools.shader; s && path.starts_with("shader.")) {
+        return path == "shader.vertex" ? &s->vertex : path == "shader.fragment" ? &s->fragment
+               : path == "shader.lighting" ? &s->lighting : nullptr;
+    }
+    if (ui::SweepViewState* s = tools.sweep; s && path.size() == 10 && (path[9] == '0' || path[9] == '1')) {
+        const auto i = static_cast<std::size_t>(path[9] - '0');
+        return path.starts_with("sweep.key") ? &s->key[i] : path.starts_with("sweep.val") ? &s->values[i] : nullptr;
+    }
+    return nullptr;
+}
+
+namespace {
+
+void toolSections(Writer& w, const PageFacts& facts) {
+    sectionStart(w, "tools", "Tools", "model");
+    w.key("controls").open('[');
+    const char* kShaderFiles[][2] = {{"shader.vertex", "lit.vert"}, {"shader.fragment", "lit.frag"}, {"shader.lighting", "lighting.glsl"}};
+    for (const auto& [path, file] : kShaderFiles) {
+        if (facts.shader) {
+            w.open('{').key("path").str(path).key("label").str(file).key("kind").str("code").key("help");
+            w.str("the shader's source; Compile runs it").key("unit").str("").key("value").str(*toolField(path, facts)).close('}');
+        }
+    }
+    const char* kSweepFields[][2] = {{"sweep.key0", "columns' field"}, {"sweep.val0", "columns' values"},
+                                     {"sweep.key1", "rows' field"}, {"sweep.val1", "rows' values"}};
+    for (const auto& [path, label] : kSweepFields) {
+        if (facts.sweep) {
+            w.open('{').key("path").str(path).key("label").str(label).key("kind").str("text").key("help");
+            w.str("a field's path, or its values separated by commas").key("unit").str("");
+            w.key("value").str(*toolField(path, facts)).close('}');
+        }
+    }
+    w.close(']').key("buttons").open('[');
+    for (Command c : {Command::ToggleShaderEditor, Command::CompileShaders, Command::RevertShaders, Command::ToggleSweep,
+                      Command::SaveSweep, Command::Screenshot}) {
+        if ((c != Command::CompileShaders && c != Command::RevertShaders) || facts.shader) {
+            button(w, c);
+        }
+    }
+    w.close(']').key("log").str(facts.shader ? join(facts.shader->log) : facts.sweep ? facts.sweep->error : "");
+    w.key("link").str(facts.shareLink).close('}');
+}
+
 } // namespace
 
 const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
@@ -287,6 +349,7 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
     w.close(']').key("sections").open('[');
     fileSections(w, ws, facts.exercise);
     fieldSections(w, ws.edited(), facts.exercise);
+    toolSections(w, facts);
     w.close(']');
     if (const ui::ExercisePanelModel* e = facts.exercise) {
         w.key("exercise").open('{').key("title").str(e->title).key("instructions").str(e->instructions).key("hints").open('[');
@@ -311,7 +374,8 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
     return json_;
 }
 
-std::string applyPageEdits(Workspace& ws, const std::vector<PageEdit>& edits, std::vector<Request>& requests) {
+std::string applyPageEdits(Workspace& ws, const std::vector<PageEdit>& edits, const PageFacts& tools,
+                           std::vector<Request>& requests) {
     std::string problems;
     for (const PageEdit& e : edits) {
         if (e.path.empty()) {
@@ -330,7 +394,9 @@ std::string applyPageEdits(Workspace& ws, const std::vector<PageEdit>& edits, st
         }
         std::string path = canonicalPath(e.path);
         std::string problem;
-        if (ws.exercise() && !alwaysFree(path) &&
+        if (std::string* field = toolField(e.path, tools)) {
+            *field = e.value;
+        } else if (ws.exercise() && !alwaysFree(path) &&
             std::none_of(ws.exercise()->exercise.open.begin(), ws.exercise()->exercise.open.end(),
                          [&](const std::string& o) { return covers(o, path); })) {
             problem = path + ": this exercise does not let you change it";

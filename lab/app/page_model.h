@@ -15,6 +15,8 @@
 #include "core/lighting/probe.h"
 #include "ui/layout.h"
 #include "ui/panel/exercise_panel.h"
+#include "ui/tools/shader_editor.h"
+#include "ui/tools/sweep_view.h"
 
 #include <optional>
 #include <string>
@@ -30,6 +32,10 @@ struct PageFacts {
     std::string probe;   // the pixel probe's readout, "" when none
     std::string legend;  // the factor view's legend, "" when the lit model is shown
     bool orbiting = false; // a light moves by itself (the Pause button's text)
+    std::string shareLink; // the QR code's link while it is shown
+    // The tool windows while they are open: the page offers their fields too (and sets them).
+    ui::ShaderEditorState* shader = nullptr;
+    ui::SweepViewState* sweep = nullptr;
 };
 
 // The page's description of the lab (a JSON object; web/access.js reads it). The pictures' words
@@ -53,8 +59,16 @@ struct PageEdit {
 };
 
 // Carries out the page's field edits on the edited set, behind the exercise's gate (a field it does
-// not open is refused); returns the problems ("" none), and appends the page's commands to `requests`.
-std::string applyPageEdits(Workspace& workspace, const std::vector<PageEdit>& edits, std::vector<Request>& requests);
+// not open is refused), and on the open tool windows ("shader.lighting", "sweep.values[1]");
+// returns the problems ("" none), and appends the page's commands to `requests`.
+std::string applyPageEdits(Workspace& workspace, const std::vector<PageEdit>& edits, const PageFacts& tools,
+                           std::vector<Request>& requests);
+
+// The facts of the tool windows that are open (the rest empty).
+PageFacts openTools(ui::ShaderEditorState& shader, ui::SweepViewState& sweep);
+
+// The tool window's text field at `path` ("shader.lighting", "sweep.key0", "sweep.val1") while it is open, else nullptr.
+std::string* toolField(const std::string& path, const PageFacts& tools);
 
 // The compact layout's tab that shows the field at `path` (a light's also selects it), if any.
 std::optional<ui::PanelTab> panelTabOf(const std::string& path, int& selectedLight);
