@@ -20,18 +20,16 @@
 #include "app/input.h"
 #include "app/workspace.h"
 #include "core/io/diagnostics.h"
+#include "core/plots/theme.h"
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace lab {
-
-// The left-button clicks among `events`: a press and its release less than 4 units apart, at the
-// press's place. A press whose release has not come yet is carried over in `pending`.
-std::vector<std::pair<float, float>> clicksOf(const std::vector<InputEvent>& events, std::optional<InputEvent>& pending);
 
 struct FrameInput {
     float windowWidth = 0, windowHeight = 0; // ImGui's units (screen coordinates)
@@ -87,6 +85,13 @@ struct AppOptions {
     // The course page's address (https://.../lab/): the QR code (Q) opens the scene's link there.
     // The page gives its own; the desktop --share-base (remembered in the settings file).
     std::string shareBase;
+    // The theme at start (core/plots/theme.h): the UI's, the plots' and the exported figures'
+    // colours; dark when none. The desktop's --theme (remembered), the page's prefers-color-scheme
+    // or the visitor's earlier choice.
+    std::optional<Theme> theme;
+    // Called when the user chooses a theme in the panel (not for setTheme): the desktop remembers
+    // it in the settings file, the page in its saved state, and stops following the system's.
+    std::function<void(Theme)> themeChosen;
 };
 
 // Owns the workspace, the renderer and the UI state (not copyable: impl_ is unique).
@@ -106,6 +111,13 @@ public:
     // `targetFramebuffer` (width × height pixels). The platform skips it, and the draw data and
     // the swap, when the frame would look exactly as the last (imgui_host.h).
     void compose(unsigned targetFramebuffer, int width, int height);
+
+    // The theme in use; setTheme changes it as the panel would, but is not the user's choice
+    // (the page follows prefers-color-scheme with it until the user chooses).
+    Theme theme() const;
+    void setTheme(Theme theme);
+    // Whether the user has chosen a theme in the panel since the lab started.
+    bool themeChosen() const;
 
 private:
     struct Impl;

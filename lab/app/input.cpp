@@ -1,6 +1,7 @@
 // input.cpp — one frame's share of the queued input.
 #include "app/input.h"
 
+#include <cmath>
 #include <set>
 
 namespace lab {
@@ -54,6 +55,24 @@ std::vector<std::string> InputQueue::takeDropped() {
     std::vector<std::string> dropped;
     dropped.swap(dropped_);
     return dropped;
+}
+
+std::vector<std::pair<float, float>> clicksOf(const std::vector<InputEvent>& events, std::optional<InputEvent>& pending) {
+    std::vector<std::pair<float, float>> clicks;
+    for (const InputEvent& e : events) {
+        if (e.kind != InputEvent::Kind::Button || e.code != 0) {
+            continue;
+        }
+        if (e.down) {
+            pending = e;
+        } else if (pending) {
+            if (std::hypot(e.x - pending->x, e.y - pending->y) < 4.0f) {
+                clicks.emplace_back(pending->x, pending->y);
+            }
+            pending.reset();
+        }
+    }
+    return clicks;
 }
 
 } // namespace lab
