@@ -332,10 +332,10 @@ TEST(GuiClassroom, TheThemeColoursTheUiAndThePanelsChoiceIsRemembered) {
     {
         START_LAB(lab, "--preset", preset("12-blinn-phong"), "--theme", "light");
         ::unsetenv("XDG_CONFIG_HOME"); // the lab has it; the other tests do not
-        auto background = [&] {
-            const Rect p = lab.widget("panel");
-            const Image corner = lab.capture({p.x + 3, p.y + 3, 1, 1});
-            return std::array<int, 3>{corner.rgb[0], corner.rgb[1], corner.rgb[2]};
+        auto background = [&] { // the panel's background right of the theme's radio buttons
+            const Rect r = lab.widget("theme.light");
+            const Image spot = lab.capture({r.x + r.w + 6, r.cy(), 1, 1});
+            return std::array<int, 3>{spot.rgb[0], spot.rgb[1], spot.rgb[2]};
         };
         auto keep = [&](const char* name) {
             std::string error;
