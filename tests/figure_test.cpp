@@ -17,6 +17,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 
 namespace lab {
@@ -494,6 +495,68 @@ TEST(FigurePng, ThickLinesCoverTheirWidth) {
     }
     EXPECT_EQ(grey(20, 13), 255); // beyond the edge: none
     EXPECT_EQ(grey(20, 3), 255);
+}
+
+// The curves a legend tells apart differ by their dash as well as their colour (core/plots/theme.h):
+// in the SVG a stroke-dasharray each (the total solid), in the PNG gaps along the line.
+TEST(FigureSvg, CurvesALegendTellsApartHaveDashesOfTheirOwn) {
+    Preset b = phong();
+    b.material.shininess = 100.0f;
+    auto dashOfId = [](const Element& root, const std::string& id) {
+        for (const Element* p : all(root, "polyline")) {
+            if (auto it = p->attributes.find("id"); it != p->attributes.end() && it->second == id) {
+                auto d = p->attributes.find("stroke-dasharray");
+                return d == p->attributes.end() ? std::string("solid") : d->second;
+            }
+        }
+        ADD_FAILURE() << "no polyline " << id;
+        return std::string();
+    };
+    auto root = parseSvg(figureSvg(figure(phong(), {FigureKind::Lobe, 30.0f}, &b).figure));
+    ASSERT_TRUE(root);
+    std::set<std::string> lobe;
+    for (const char* id : {"lobe-diffuse", "lobe-specular", "lobe-total", "lobe-total-b"}) {
+        lobe.insert(dashOfId(*root, id));
+    }
+    EXPECT_EQ(lobe.size(), 4u) << "four curves, four dashes";
+    EXPECT_EQ(dashOfId(*root, "lobe-total"), "solid");
+    EXPECT_EQ(dashOfId(*root, "lobe-diffuse"), "7.00 5.00");
+    FigureRequest r;
+    r.kind = FigureKind::Overlay;
+    auto overlay = parseSvg(figureSvg(figure(phong(), r).figure));
+    ASSERT_TRUE(overlay);
+    std::set<std::string> angles;
+    for (int i = 1; i <= 3; ++i) {
+        angles.insert(dashOfId(*overlay, "overlay-total-" + std::to_string(i)));
+    }
+    EXPECT_EQ(angles.size(), 3u) << "three angles, three dashes";
+}
+
+TEST(FigurePng, DashesLeaveGapsAndDotsAreRound) {
+    const std::vector<glm::vec2> line{{0.0f, 0.0f}, {30.0f, 0.0f}, {30.0f, 30.0f}};
+    std::vector<std::vector<glm::vec2>> runs = dashRuns(line, {7.0f, 5.0f});
+    ASSERT_EQ(runs.size(), 5u); // dashes start at 0, 12, 24 (round the corner), 36, 48 along the 60
+    EXPECT_EQ(runs[0], (std::vector<glm::vec2>{{0, 0}, {7, 0}}));
+    EXPECT_EQ(runs[2], (std::vector<glm::vec2>{{24, 0}, {30, 0}, {30, 1}}));
+    EXPECT_EQ(runs[4], (std::vector<glm::vec2>{{30, 18}, {30, 25}}));
+    std::vector<std::vector<glm::vec2>> dots = dashRuns(line, {0.0f, 10.0f});
+    ASSERT_EQ(dots.size(), 6u); // at 0, 10, …, 50 (one that would begin at the line's very end is left out)
+    for (const auto& d : dots) {
+        ASSERT_EQ(d.size(), 2u);
+        EXPECT_EQ(d[0], d[1]);
+    }
+    EXPECT_EQ(dashRuns(line, {}).size(), 1u) << "solid";
+    EXPECT_EQ(dashRuns(line, {0.1f, 0.1f}).size(), 1u) << "a pattern under half a pixel is drawn solid";
+
+    Figure f;
+    f.width = 40;
+    f.height = 10;
+    f.shapes.push_back(FigureLine{{{2.0f, 5.0f}, {38.0f, 5.0f}}, 2.0f, {0, 0, 0}, "", {7.0f, 5.0f}});
+    Image image = rasterizeFigure(f, 1.0f);
+    auto grey = [&](int x) { return image.rgb[(std::size_t(5) * 40 + std::size_t(x)) * 3]; };
+    EXPECT_LT(grey(5), 64) << "in the first dash";
+    EXPECT_EQ(grey(11), 255) << "in the first gap (9..14 with the round caps' 1 px)";
+    EXPECT_LT(grey(17), 64) << "in the second dash";
 }
 
 } // namespace

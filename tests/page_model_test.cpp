@@ -119,7 +119,7 @@ TEST(PageModel, EditsAndCommandsFromThePageTakeThePanelsWay) {
                                                {"", "", static_cast<int>(Command::OrbitLeft), -1},
                                                {"", "", static_cast<int>(Command::OpenPresetAt), 2},
                                                {"", "", 100000, -1}},
-                                          requests);
+                                          PageFacts{}, requests);
     EXPECT_EQ(ws.edited().material.shininess, 12.0f);
     EXPECT_NE(problems.find("material.shininess: must be"), std::string::npos) << problems;
     ASSERT_EQ(requests.size(), 2u) << "a command number the table does not have is dropped";
@@ -157,7 +157,7 @@ TEST(PageModel, AnExerciseShowsOnlyItsOpenFieldsAndRefusesTheOthers) {
     EXPECT_TRUE(page.contains("exercise"));
     std::vector<Request> requests;
     const glm::vec3 diffuse = ws.edited().material.diffuse;
-    std::string problems = applyPageEdits(ws, {{"material.diffuse[0]", "0.1"}}, requests);
+    std::string problems = applyPageEdits(ws, {{"material.diffuse[0]", "0.1"}}, PageFacts{}, requests);
     EXPECT_NE(problems.find("does not let you change it"), std::string::npos) << problems;
     EXPECT_EQ(ws.edited().material.diffuse, diffuse);
 }

@@ -19,7 +19,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -583,7 +585,7 @@ TEST(Workspace, ScreenshotsAreNumberedFilesOrDownloads) {
 TEST(Workspace, ExportedFiguresGoToANewFolderEachTimeOrAreDownloads) {
     Fixture f;
     ui::PlotSettings settings;
-    std::vector<Download> files = exportFigures(f.ws.a(), nullptr, settings, 1.0f);
+    std::vector<Download> files = exportFigures(f.ws.a(), nullptr, settings, 1.0f, Theme::Light);
     ASSERT_EQ(files.size(), 12u) << "lobe, overlay, attenuation and albedo, each as SVG, PNG and CSV";
     std::string error;
     fs::create_directories(f.dir.path() / "shots" / "red-figures-001"); // taken: the next number is used
@@ -601,7 +603,7 @@ TEST(Workspace, ExportedFiguresGoToANewFolderEachTimeOrAreDownloads) {
     EXPECT_EQ(readPng(fs::path(f.dir.path() / "shots" / "red-figures-003" / "lobe.png"), error)->rgb, png->rgb);
     Preset dark = f.ws.a();
     dark.lights.clear();
-    EXPECT_EQ(exportFigures(dark, nullptr, settings, 2.0f).size(), 9u) << "no light, no attenuation figure";
+    EXPECT_EQ(exportFigures(dark, nullptr, settings, 2.0f, Theme::Light).size(), 9u) << "no light, no attenuation figure";
 
     Workspace browser(WorkspaceOptions{{}, "/nonexistent-screenshots", true, {}});
     browser.start(f.dir.path(), f.red);
@@ -609,6 +611,33 @@ TEST(Workspace, ExportedFiguresGoToANewFolderEachTimeOrAreDownloads) {
     std::vector<Download> downloads = browser.takeDownloads();
     ASSERT_EQ(downloads.size(), 12u);
     EXPECT_EQ(downloads[0].name, "red-" + files[0].name);
+}
+
+// The figures are exported in the lab's theme: its plots' background and its curves' colours.
+TEST(Workspace, ExportedFiguresAreInTheLabsTheme) {
+    Fixture f;
+    ui::PlotSettings settings;
+    for (Theme theme : kThemes) {
+        std::vector<Download> files = exportFigures(f.ws.a(), nullptr, settings, 1.0f, theme);
+        ASSERT_EQ(files[0].name, "lobe.svg");
+        const std::string& svg = files[0].bytes;
+        const Palette& plot = themeColors(theme).plot;
+        auto hex = [](FigureColor c) {
+            char text[8];
+            std::snprintf(text, sizeof text, "#%02x%02x%02x", c.r, c.g, c.b);
+            return std::string(text);
+        };
+        EXPECT_NE(svg.find("fill=\"" + hex(colorOf(plot, Ink::Background)) + "\""), std::string::npos) << toString(theme);
+        EXPECT_NE(svg.find("stroke=\"" + hex(colorOf(plot, Ink::Diffuse)) + "\""), std::string::npos) << toString(theme);
+        std::string error;
+        const fs::path file = f.dir.path() / (std::string(toString(theme)) + "-lobe.png");
+        std::ofstream(file, std::ios::binary) << files[1].bytes;
+        std::optional<Image> png = readPng(file, error);
+        ASSERT_TRUE(png) << error;
+        const FigureColor bg = colorOf(plot, Ink::Background);
+        EXPECT_EQ(std::vector<std::uint8_t>(png->rgb.begin(), png->rgb.begin() + 3), (std::vector<std::uint8_t>{bg.r, bg.g, bg.b}))
+            << toString(theme) << ": the PNG's corner is the plots' background";
+    }
 }
 
 } // namespace

@@ -34,7 +34,7 @@ namespace {
 constexpr float kMinPresenterScale = 1.5f, kMaxPresenterScale = 2.5f, kPresenterStep = 0.25f;
 constexpr float kToastSeconds = 4.0f;
 constexpr float kTouchScale = 1.2f; // a finger's UI: larger text as well as larger widgets
-const glm::vec3 kWindowBackground(0.09f, 0.09f, 0.11f);
+const glm::vec3 kScreenshotBackground(0.09f, 0.09f, 0.11f); // between compare's halves: a model render, never themed
 
 } // namespace
 
@@ -52,6 +52,8 @@ struct App::Impl {
     ui::ViewportControls viewportControls;
     enum class Panels { All, PlotsOnly, None } panels = Panels::All; // Tab cycles
     bool showHelp = false, presenter = false, caption = false, lightShapes = true;
+    Theme theme = Theme::Dark; // the last frame's (the panel's radio buttons change panel.theme)
+    bool themeChosen = false;  // by the user, in the panel
     // The frame time while the model changes, outside and in presenter mode (T toggles the one in use):
     // the room sees the model, not the lab's timings, unless asked.
     bool frameTime = true, frameTimePresenting = false;
@@ -97,7 +99,9 @@ struct App::Impl {
         : options(std::move(o)),
           workspace({options.presetFolders, options.screenshotFolder, options.saveByDownload,
                      options.userFolder.empty() ? defaultUserFolder() : options.userFolder}),
-          presenter(options.presenter), caption(options.presenter) {}
+          presenter(options.presenter), caption(options.presenter) {
+        panel.theme = theme = options.theme.value_or(Theme::Dark);
+    }
 
     float windowWidth = 0; // the last frame's, in window units
 
@@ -244,7 +248,7 @@ void App::Impl::carryOut(const Request& r) {
     case Command::Screenshot: screenshotRequested = true; break;
     case Command::ExportFigures:
         workspace.saveFiles(exportFigures(workspace.a(), workspace.view.compare ? &workspace.b() : nullptr, plots,
-                                          panel.figureScale),
+                                          panel.figureScale, theme),
                             "Figures");
         break;
     case Command::FocusOpenPath: panel.focusOpenPath = true; break;
@@ -412,7 +416,7 @@ void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
         return;
     }
     target.bind();
-    clearFramebuffer(kWindowBackground, w, h); // (in compare mode the halves' label strips lie between the models)
+    clearFramebuffer(kScreenshotBackground, w, h); // (in compare mode the halves' label strips lie between the models)
     drawViewports(layout, toPixels, static_cast<float>(h) / toPixels, -v.x, -v.y);
     Image image = target.readRgb();
     bindFramebuffer(in.targetFramebuffer);
@@ -515,6 +519,12 @@ FrameOutput App::frame(const FrameInput& in) {
     model.clicks = clicksOf(in.events, m.pressed);
     model.panelInfo.compareStacked = layout.compareStacked;
     ui::ScreenEvents events = ui::drawScreen(layout, model);
+    if (std::exchange(m.theme, m.panel.theme) != m.panel.theme) { // chosen in the panel
+        m.themeChosen = true;
+        if (m.options.themeChosen) {
+            m.options.themeChosen(m.theme);
+        }
+    }
     m.panel.focusOpenPath = false;
     for (const InputEvent& k : in.events) {
         if (k.kind != InputEvent::Kind::Key || !k.down) {
@@ -589,9 +599,14 @@ FrameOutput App::Impl::output(bool touch) {
     return out;
 }
 
+Theme App::theme() const { return impl_->theme; }
+void App::setTheme(Theme theme) { impl_->panel.theme = impl_->theme = theme; }
+bool App::themeChosen() const { return impl_->themeChosen; }
+
 void App::compose(unsigned targetFramebuffer, int width, int height) {
     bindFramebuffer(targetFramebuffer);
-    clearFramebuffer(kWindowBackground, width, height);
+    const FigureColor w = themeColors(impl_->theme).ui.window; // between the windows, as on them
+    clearFramebuffer(glm::vec3(w.r, w.g, w.b) / 255.0f, width, height);
     for (const auto& [view, dest] : impl_->shown) {
         view->present(targetFramebuffer, dest);
     }

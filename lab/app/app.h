@@ -21,8 +21,10 @@
 #include "app/page_model.h"
 #include "app/workspace.h"
 #include "core/io/diagnostics.h"
+#include "core/plots/theme.h"
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -89,6 +91,13 @@ struct AppOptions {
     std::string shareBase;
     // The browser: every frame describes the lab for the page's parallel DOM (FrameOutput::page).
     bool describePage = false;
+    // The theme at start (core/plots/theme.h): the UI's, the plots' and the exported figures'
+    // colours; dark when none. The desktop's --theme (remembered), the page's prefers-color-scheme
+    // or the visitor's earlier choice.
+    std::optional<Theme> theme;
+    // Called when the user chooses a theme in the panel (not for setTheme): the desktop remembers
+    // it in the settings file, the page in its saved state, and stops following the system's.
+    std::function<void(Theme)> themeChosen;
 };
 
 // Owns the workspace, the renderer and the UI state (not copyable: impl_ is unique).
@@ -108,6 +117,13 @@ public:
     // `targetFramebuffer` (width × height pixels). The platform skips it, and the draw data and
     // the swap, when the frame would look exactly as the last (imgui_host.h).
     void compose(unsigned targetFramebuffer, int width, int height);
+
+    // The theme in use; setTheme changes it as the panel would, but is not the user's choice
+    // (the page follows prefers-color-scheme with it until the user chooses).
+    Theme theme() const;
+    void setTheme(Theme theme);
+    // Whether the user has chosen a theme in the panel since the lab started.
+    bool themeChosen() const;
 
 private:
     struct Impl;

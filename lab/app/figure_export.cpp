@@ -5,7 +5,8 @@
 
 namespace lab {
 
-std::vector<Download> exportFigures(const Preset& a, const Preset* b, const ui::PlotSettings& settings, float pngScale) {
+std::vector<Download> exportFigures(const Preset& a, const Preset* b, const ui::PlotSettings& settings, float pngScale,
+                                    Theme theme) {
     std::vector<Download> files;
     for (FigureKind kind : kFigureKinds) {
         FigureRequest r;
@@ -14,6 +15,7 @@ std::vector<Download> exportFigures(const Preset& a, const Preset* b, const ui::
         r.scale = settings.scale;
         r.overlayDeg = settings.overlayDeg;
         r.light = settings.attenuationLight;
+        r.theme = theme;
         std::string error;
         std::optional<FigureResult> f = makeFigure(a, b, r, error);
         if (!f) {

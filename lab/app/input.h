@@ -17,6 +17,7 @@
 #include <deque>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lab {
@@ -66,5 +67,9 @@ std::vector<std::pair<float, float>> clicksOf(const std::vector<InputEvent>& eve
 // GLFW's printable keys (space to the last punctuation key): their text arrives as Char events,
 // so only the other keys (Backspace, arrows, Enter, ...) must stay in order with text.
 bool isPrintableKey(int code);
+
+// The left-button clicks among `events`: a press and its release less than 4 units apart, at the
+// press's place. A press whose release has not come yet is carried over in `pending`.
+std::vector<std::pair<float, float>> clicksOf(const std::vector<InputEvent>& events, std::optional<InputEvent>& pending);
 
 } // namespace lab

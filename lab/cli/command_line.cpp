@@ -85,8 +85,15 @@ CLI::App* addCheckCommand(CLI::App& app, CommandLine& line, CheckArguments& a) {
 }
 
 // `plot`'s figure options as text, until they are checked into FigureOutputs.
+// A theme's name (core/plots/theme.h), or why not.
+const CLI::Validator kThemeName(
+    [](std::string& text) {
+        return themeFrom(text) ? std::string() : "unknown theme '" + text + "': the themes are " + themeNames();
+    },
+    "dark|light");
+
 struct FigureArguments {
-    std::string kind = "lobe", svg, png, csv;
+    std::string kind = "lobe", svg, png, csv, theme = "light";
     float scale = 1.0f;
     int light = 1;
     bool log = false;
@@ -95,6 +102,7 @@ struct FigureArguments {
     CLI::Option* overlayOption = nullptr;
     CLI::Option* scaleOption = nullptr;
     CLI::Option* lightOption = nullptr;
+    CLI::Option* themeOption = nullptr;
 };
 
 void addFigureOptions(CLI::App* plot, FigureArguments& a) {
@@ -117,6 +125,10 @@ void addFigureOptions(CLI::App* plot, FigureArguments& a) {
                         ->check(CLI::Range(1, 64))
                         ->capture_default_str();
     plot->add_flag("--log", a.log, "Logarithmic radial scale in the lobe and overlay figures");
+    a.themeOption = plot->add_option("--theme", a.theme, "The figure's colours: light (dark on white, for paper and slides) "
+                                                         "or dark (light on near black, as the lab's dark theme)")
+                        ->check(kThemeName)
+                        ->capture_default_str();
     a.overlayOption = plot->add_option("--overlay-deg", a.overlayDeg, "The overlay figure's three incident angles in degrees, "
                                                                       "e.g. 60,25,10")
                           ->delimiter(',')
@@ -132,6 +144,7 @@ bool figureOutputs(const FigureArguments& a, FigureOutputs& out) {
     out.request.scale = a.log ? RadialScale::Log : RadialScale::Linear;
     out.request.light = a.light - 1;
     out.request.overlayDeg = glm::vec3(a.overlayDeg[0], a.overlayDeg[1], a.overlayDeg[2]); // expected(3)
+    out.request.theme = *themeFrom(a.theme); // checked by kThemeName
     out.files.pngScale = a.scale;
     if (!a.svg.empty()) {
         out.files.svg = a.svg;
@@ -146,9 +159,10 @@ bool figureOutputs(const FigureArguments& a, FigureOutputs& out) {
         print(stderr, "lab plot: --scale is the PNG's: give --png FILE too\n");
         return false;
     }
-    if ((a.kindOption->count() || a.lightOption->count() || a.overlayOption->count() || a.log) && !out.any()) {
-        print(stderr, "lab plot: --figure, --light, --overlay-deg and --log choose a figure: give --svg, --png or --csv FILE "
-                      "too\n");
+    if ((a.kindOption->count() || a.lightOption->count() || a.overlayOption->count() || a.themeOption->count() || a.log) &&
+        !out.any()) {
+        print(stderr, "lab plot: --figure, --light, --overlay-deg, --theme and --log choose a figure: give --svg, --png or "
+                      "--csv FILE too\n");
         return false;
     }
     return true;
@@ -387,6 +401,9 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
                    "The course page's address (https://.../lab/): the QR code (Q) opens the scene there. Remembered in "
                    "$XDG_CONFIG_HOME/lighting-lab/settings.json")
         ->check(CLI::Validator([](std::string& text) { return shareBaseProblem(text); }, "URL"));
+    std::string theme;
+    app.add_option("--theme", theme, "The lab's colours, dark or light (a projector in a lit room), the plots' and the "
+                                     "exported figures' too. Remembered as --share-base is")->check(kThemeName);
     // For GUI tests: the screen rectangles of the main widgets, rewritten every frame.
     app.add_option("--layout-file", layoutFile, "")->group("");
 
@@ -414,6 +431,9 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     }
 
     std::string error;
+    if (!theme.empty()) {
+        line.theme = themeFrom(theme); // checked by kThemeName
+    }
     if (!preset.empty()) {
         line.preset = preset;
     }

@@ -25,6 +25,7 @@ struct CommandLine {
     std::filesystem::path screenshotFolder = ".";
     std::optional<std::filesystem::path> layoutFile;
     std::string shareBase; // --share-base (remembered in the settings file, cli/settings.h)
+    std::optional<Theme> theme; // --theme (remembered likewise)
     // render, plot, check
     std::vector<std::filesystem::path> presets;
     std::filesystem::path out;

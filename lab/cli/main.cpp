@@ -1,11 +1,12 @@
 // main.cpp — `lab`: parse the arguments (command_line.h), then run the command.
 //
-//   lab [--preset FILE] [--presenter] [--fullscreen] [--size WxH] [--frame-budget MS]
+//   lab [--preset FILE] [--presenter] [--fullscreen] [--size WxH] [--frame-budget MS] [--theme dark|light]
 //                                                      the interactive lab (a PNG preview where there is no display)
 //   lab render PRESET... --out PATH [--size WxH]
 //   lab render PRESET --sweep KEY=V1,V2,... [--sweep KEY2=...] --out FILE.png [--size WxH (a cell)]
 //   lab plot PRESET [--out FILE.csv] [--incident-deg A] [--albedo FILE.csv]
-//                   [--figure lobe|overlay|attenuation|albedo --svg FILE --png FILE --scale S --csv FILE]
+//                   [--figure lobe|overlay|attenuation|albedo --svg FILE --png FILE --scale S --csv FILE
+//                    --theme light|dark]
 //   lab check PRESET... --golden DIR [--update] [--report DIR] [--size WxH]
 //   lab exercise check EXERCISE ATTEMPT [--diff FILE.png]
 //   lab share PRESET_OR_EXERCISE --base URL [--qr FILE.png]
@@ -61,6 +62,22 @@ int runInteractive(const lab::CommandLine& line) {
         }
     }
     options.shareBase = settings.shareBase;
+    // The theme: --theme, remembered; else the one remembered; a choice in the panel is remembered too.
+    if (line.theme && line.theme != settings.theme) {
+        settings.theme = line.theme;
+        if (!lab::writeSettings(settings, lab::settingsFile(), error)) {
+            lab::print(stderr, "lab: cannot remember --theme: " + error + "\n");
+        }
+    }
+    options.theme = settings.theme;
+    options.themeChosen = [](lab::Theme theme) {
+        std::string ignored, why;
+        lab::Settings now = lab::readSettings(lab::settingsFile(), ignored); // as it is now, share_base kept
+        now.theme = theme;
+        if (!lab::writeSettings(now, lab::settingsFile(), why)) {
+            lab::print(stderr, "lab: cannot remember the theme: " + why + "\n");
+        }
+    };
     lab::WindowOptions window;
     window.fullscreen = line.fullscreen;
     if (line.windowSize) {

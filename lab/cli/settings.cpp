@@ -100,6 +100,13 @@ Settings readSettings(const fs::path& file, std::string& warning) {
             s.shareBase = base->get<std::string>();
         }
     }
+    if (auto theme = j.find("theme"); theme != j.end()) {
+        if (std::optional<Theme> t = theme->is_string() ? themeFrom(theme->get<std::string>()) : std::nullopt) {
+            s.theme = t;
+        } else {
+            warning += (warning.empty() ? "" : "; ") + file.string() + ": theme: expected one of " + themeNames() + " (ignored)";
+        }
+    }
     return s;
 }
 
@@ -107,6 +114,9 @@ bool writeSettings(const Settings& settings, const fs::path& file, std::string& 
     std::error_code ec;
     fs::create_directories(file.parent_path(), ec);
     nlohmann::json j = {{"share_base", settings.shareBase}};
+    if (settings.theme) {
+        j["theme"] = std::string(toString(*settings.theme));
+    }
     return writeFileAtomic(file, j.dump(2) + "\n", error);
 }
 

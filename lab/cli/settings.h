@@ -1,8 +1,11 @@
 // settings.h — the desktop lab's small settings file: $XDG_CONFIG_HOME/lighting-lab/settings.json
-// (else ~/.config/lighting-lab/settings.json). It holds what a course sets once, today the course
-// page's address for the QR codes (`lab --share-base URL`, remembered). Written atomically; a
+// (else ~/.config/lighting-lab/settings.json). It holds what a course sets once: the course
+// page's address for the QR codes (`lab --share-base URL`, remembered) and the theme (`--theme`,
+// or the one last chosen in the panel). Written atomically; a
 // file that does not read is reported and ignored, never overwritten unasked.
 #pragma once
+
+#include "core/plots/theme.h"
 
 #include <filesystem>
 #include <optional>
@@ -12,6 +15,7 @@ namespace lab {
 
 struct Settings {
     std::string shareBase; // "https://course.example.org/lab/", empty when never given
+    std::optional<Theme> theme; // "theme": "dark" or "light"; none when never chosen
 };
 
 std::filesystem::path settingsFile();

@@ -2,6 +2,7 @@
 #include "ui/dialogs.h"
 
 #include "core/io/safe_text.h"
+#include "ui/theme_style.h"
 #include "ui/widgets.h"
 
 #include <imgui.h>
@@ -39,7 +40,8 @@ bool problemDialog(const Problem& problem) {
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetIO().DisplaySize.x * 0.8f - 2.0f * ImGui::GetStyle().WindowPadding.x);
     ImGui::TextUnformatted(printable(problem.title).c_str());
     ImGui::Separator();
-    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 150, 140, 255));
+    const FigureColor error = currentColors().ui.error;
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(error.r, error.g, error.b, 255));
     for (const Diagnostic& d : problem.diagnostics) {
         ImGui::TextUnformatted(printable(d.str()).c_str());
     }

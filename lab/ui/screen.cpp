@@ -2,6 +2,7 @@
 #include "ui/screen.h"
 
 #include "ui/dialogs.h"
+#include "ui/theme_style.h"
 #include "ui/widgets.h"
 
 #include <imgui.h>
@@ -127,6 +128,7 @@ float uiScale() { return ImGui::GetFontSize() / 13.0f; }
 
 ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     ScreenEvents events;
+    applyTheme(m.panel->theme); // before the first widget: the panel may have changed it last frame
     events.typing = ImGui::GetIO().WantTextInput;
     events.pointerX = ImGui::GetIO().MousePos.x;
     events.pointerY = ImGui::GetIO().MousePos.y;

@@ -167,6 +167,20 @@ printf '{"share_base": "https://x.org/\\u001b[31m"}' >"$tmp/config2/lighting-lab
 expect settings-share-base-refused 0 'settings\.json: share_base: byte 0x1B at offset 14 is not allowed.*\(ignored\)' -- \
     env -u DISPLAY -u WAYLAND_DISPLAY XDG_CONFIG_HOME="$tmp/config2" TMPDIR="$tmp" "$lab"
 
+# --theme: remembered beside share_base; a bad name refused with the names; a bad remembered one ignored, said so.
+mkdir -p "$tmp/config3/lighting-lab"
+printf '{"share_base": "https://x.org/lab/"}' >"$tmp/config3/lighting-lab/settings.json"
+expect theme-remembered 0 'rendering a preview' -- \
+    env -u DISPLAY -u WAYLAND_DISPLAY XDG_CONFIG_HOME="$tmp/config3" TMPDIR="$tmp" "$lab" --theme light
+check theme-in-settings grep -q '"theme": "light"' "$tmp/config3/lighting-lab/settings.json"
+check theme-keeps-share-base grep -q '"share_base": "https://x.org/lab/"' "$tmp/config3/lighting-lab/settings.json"
+expect theme-unknown 2 "^--theme: unknown theme 'blue': the themes are dark, light" -- \
+    env -u DISPLAY -u WAYLAND_DISPLAY XDG_CONFIG_HOME="$tmp/config3" "$lab" --theme blue
+check theme-unknown-not-remembered grep -q '"theme": "light"' "$tmp/config3/lighting-lab/settings.json"
+printf '{"theme": "purple"}' >"$tmp/config3/lighting-lab/settings.json"
+expect settings-theme-refused 0 'settings\.json: theme: expected one of dark, light \(ignored\)' -- \
+    env -u DISPLAY -u WAYLAND_DISPLAY XDG_CONFIG_HOME="$tmp/config3" TMPDIR="$tmp" "$lab"
+
 # An exercise whose start names its own glTF model: the page has no such model, so no link (as for
 # a preset with one).
 mkdir -p "$tmp/own-model/models"

@@ -120,6 +120,13 @@ expect figure-unknown 2 '--figure: .*(lobe|not in)' -- "$lab" plot "$phong" --fi
 expect figure-scale-range 2 '--scale' -- "$lab" plot "$phong" --png "$tmp/x.png" --scale 20
 expect figure-scale-needs-png 2 'scale is the PNG' -- "$lab" plot "$phong" --svg "$tmp/x.svg" --scale 2
 expect figure-needs-a-file 2 'choose a figure' -- "$lab" plot "$phong" --figure overlay
+expect figure-theme-needs-a-file 2 'choose a figure' -- "$lab" plot "$phong" --theme dark --out "$tmp/x.csv"
+expect figure-theme-unknown 2 "^--theme: unknown theme 'sepia': the themes are dark, light" -- "$lab" plot "$phong" --theme sepia --svg "$tmp/x.svg"
+# The default theme is light (dark on white); --theme dark paints the dark theme's plot background.
+expect figure-theme-dark 0 'f-dark\.svg' -- "$lab" plot "$phong" --theme dark --svg "$tmp/f-dark.svg"
+check figure-theme-dark-background grep -q '<rect x="0" y="0" width="720.00" height="500.00" fill="#101014"/>' "$tmp/f-dark.svg"
+check figure-theme-light-by-default grep -q '<rect x="0" y="0" width="720.00" height="500.00" fill="#ffffff"/>' "$tmp/f-lobe.svg"
+check figure-dashed-curves grep -q 'id="lobe-diffuse".*stroke-dasharray="7.00 5.00"' "$tmp/f-lobe.svg"
 expect figure-overlay-angles 0 'f-ov\.csv' -- "$lab" plot "$phong" --figure overlay --overlay-deg 70,40,0 --csv "$tmp/f-ov.csv"
 check figure-overlay-angles-used grep -q '^theta_out_deg,total_at_70,total_at_40,total_at_0$' "$tmp/f-ov.csv"
 expect figure-overlay-three-angles 2 '--overlay-deg: .*3' -- "$lab" plot "$phong" --figure overlay --overlay-deg 70,40 --csv "$tmp/x.csv"

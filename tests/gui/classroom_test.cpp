@@ -8,6 +8,7 @@
 #include "core/exercise/exercise.h"
 #include "core/io/image.h"
 
+#include <array>
 #include <cstdio>
 
 #include <cstdlib>
@@ -319,6 +320,39 @@ TEST(GuiClassroom, TheQrCodeOnTheScreenDecodesToTheExercisesLinkOnTheCoursePage)
     EXPECT_NE(readText(config.path() / "lighting-lab" / "settings.json").find("https://course.example.org/lab/"),
               std::string::npos)
         << "--share-base is remembered";
+}
+
+// The themes: --theme light paints the UI in the light theme's colours (core/plots/theme.h), the
+// panel's radio button turns it dark, and that choice is remembered in the settings file. With
+// LAB_THEME_SHOTS set, the window in each theme is written there as a PNG, to be looked at.
+TEST(GuiClassroom, TheThemeColoursTheUiAndThePanelsChoiceIsRemembered) {
+    TempFolder config;
+    ::setenv("XDG_CONFIG_HOME", config.path().c_str(), 1);
+    const char* shots = std::getenv("LAB_THEME_SHOTS");
+    {
+        START_LAB(lab, "--preset", preset("12-blinn-phong"), "--theme", "light");
+        ::unsetenv("XDG_CONFIG_HOME"); // the lab has it; the other tests do not
+        auto background = [&] { // the panel's background right of the theme's radio buttons
+            const Rect r = lab.widget("theme.light");
+            const Image spot = lab.capture({r.x + r.w + 6, r.cy(), 1, 1});
+            return std::array<int, 3>{spot.rgb[0], spot.rgb[1], spot.rgb[2]};
+        };
+        auto keep = [&](const char* name) {
+            std::string error;
+            if (shots && !writePng(lab.capture(lab.widget("window")), fs::path(shots) / name, error)) {
+                ADD_FAILURE() << error;
+            }
+        };
+        EXPECT_EQ(background(), (std::array<int, 3>{244, 244, 247})) << "the light theme's window";
+        keep("theme-light.png");
+        Rect dark = scrolledTo(lab, "theme.dark");
+        lab.click(dark.cx(), dark.cy());
+        EXPECT_EQ(background(), (std::array<int, 3>{26, 27, 32})) << "the dark theme's window";
+        keep("theme-dark.png");
+    }
+    ::unsetenv("XDG_CONFIG_HOME");
+    EXPECT_NE(readText(config.path() / "lighting-lab" / "settings.json").find("\"theme\": \"dark\""), std::string::npos)
+        << "the panel's choice is remembered";
 }
 
 // Make exercise: the scene is the target; tick the shininess, set its start, title, save: the file

@@ -27,6 +27,9 @@ struct FigureLine {
     float width = 1.0f;
     FigureColor color;
     std::string id; // the SVG element's id when not empty ("lobe-total"): what the tests find
+    // Dashes: lengths along the line, on, off, on, off… (an even count; an "on" of 0 is a round
+    // dot); empty: solid. SVG's stroke-dasharray; the PNG and the screen draw dashRuns().
+    std::vector<float> dash = {};
 };
 
 struct FigurePolygon {
@@ -64,6 +67,11 @@ struct Figure {
 // with two decimals, text XML-escaped (control characters and invalid UTF-8 shown as escapes,
 // core/io/safe_text.h, so the document is always well-formed).
 std::string figureSvg(const Figure& figure);
+
+// The pieces of the polyline `points` that `dash` (FigureLine::dash) draws, each a polyline of its
+// own, as SVG's stroke-dasharray cuts it; a dot is a piece of two equal points. The whole line when
+// `dash` is empty or its lengths add up to less than half a pixel.
+std::vector<std::vector<glm::vec2>> dashRuns(const std::vector<glm::vec2>& points, const std::vector<float>& dash);
 
 // Smallest and largest PNG scales (the PNG is width·scale × height·scale pixels, rounded).
 inline constexpr float kMinFigureScale = 0.25f;

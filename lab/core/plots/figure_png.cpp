@@ -145,6 +145,44 @@ void disc(Coverage& cov, glm::vec2 c, float r) {
 
 } // namespace
 
+std::vector<std::vector<glm::vec2>> dashRuns(const std::vector<glm::vec2>& points, const std::vector<float>& dash) {
+    float period = 0.0f;
+    for (float d : dash) {
+        period += std::max(d, 0.0f);
+    }
+    if (points.size() < 2 || dash.size() < 2 || dash.size() % 2 != 0 || !(period >= 0.5f)) {
+        return {points};
+    }
+    std::vector<std::vector<glm::vec2>> runs{{points[0]}};
+    std::size_t k = 0; // the pattern's element the walk is in: even ones draw
+    float left = std::max(dash[0], 0.0f);
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+        const glm::vec2 a = points[i], b = points[i + 1];
+        const float length = glm::length(b - a);
+        float at = 0.0f;
+        while (length - at > left) { // the element ends inside this segment (length > 0 here)
+            at += left;
+            const glm::vec2 p = a + (b - a) * (at / length);
+            if (k % 2 == 0) {
+                runs.back().push_back(p);
+            }
+            k = (k + 1) % dash.size();
+            left = std::max(dash[k], 0.0f);
+            if (k % 2 == 0) {
+                runs.push_back({p});
+            }
+        }
+        left -= length - at;
+        if (k % 2 == 0) {
+            runs.back().push_back(b);
+        }
+    }
+    if (runs.back().size() < 2) { // a dash that begins exactly at the line's end draws nothing
+        runs.pop_back();
+    }
+    return runs;
+}
+
 Image rasterizeFigure(const Figure& f, float scale, const TextFont& font) {
     scale = std::clamp(std::isfinite(scale) ? scale : 1.0f, kMinFigureScale, kMaxFigureScale);
     Image image;
@@ -167,7 +205,9 @@ Image rasterizeFigure(const Figure& f, float scale, const TextFont& font) {
     };
     for (const FigureShape& shape : f.shapes) {
         if (const auto* l = std::get_if<FigureLine>(&shape)) {
-            line(cov, scaled(l->points), l->width * scale);
+            for (const std::vector<glm::vec2>& run : dashRuns(l->points, l->dash)) {
+                line(cov, scaled(run), l->width * scale);
+            }
             cov.paint(image, l->color);
         } else if (const auto* p = std::get_if<FigurePolygon>(&shape)) {
             polygon(cov, scaled(p->points));

@@ -54,8 +54,15 @@ std::string figureSvg(const Figure& f) {
             if (!l->id.empty()) {
                 out += " id=\"" + xml(l->id) + "\"";
             }
-            out += " fill=\"none\" stroke=\"" + colour(l->color) + "\" stroke-width=\"" + num(l->width) +
-                   "\" stroke-linecap=\"round\" stroke-linejoin=\"round\" points=\"" + points(l->points) + "\"/>\n";
+            out += " fill=\"none\" stroke=\"" + colour(l->color) + "\" stroke-width=\"" + num(l->width) + "\"";
+            if (!l->dash.empty()) {
+                std::string dashes;
+                for (float d : l->dash) {
+                    dashes += (dashes.empty() ? "" : " ") + num(d);
+                }
+                out += " stroke-dasharray=\"" + dashes + "\"";
+            }
+            out += " stroke-linecap=\"round\" stroke-linejoin=\"round\" points=\"" + points(l->points) + "\"/>\n";
         } else if (const auto* p = std::get_if<FigurePolygon>(&shape)) {
             out += "<polygon fill=\"" + colour(p->fill) + "\" points=\"" + points(p->points) + "\"/>\n";
         } else if (const auto* d = std::get_if<FigureDisc>(&shape)) {

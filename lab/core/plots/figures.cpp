@@ -1,7 +1,7 @@
 // figures.cpp — the four plot figures as Figures (figures.h): the page (title, subtitle, legend),
 // and on it the polar grid or the Cartesian axes (plot_drawing.h, as the lab's plots draw them)
 // and the curves from core/plots/plot_data.h and core/plots/energy.h. Layout in pixels at scale 1,
-// in the print style: dark on white, text measured with the font the PNG draws with.
+// in the figure style of the request's theme (theme.h), text measured with the font the PNG draws with.
 #include "core/plots/figures.h"
 
 #include "core/io/file_io.h"
@@ -32,8 +32,8 @@ constexpr float kWidth = 720.0f;
 constexpr float kPolarHeight = 500.0f;
 constexpr float kCartesianHeight = 460.0f;
 constexpr float kMargin = 18.0f;
-// The print style's sizes (plot_drawing.h).
-constexpr const PlotStyle& kStyle = kPrintStyle;
+// The figures' sizes (plot_drawing.h); a Page's style adds its theme's colours.
+constexpr const PlotStyle& kStyle = kFigureSizes;
 constexpr float kTitleSize = kStyle.title();
 constexpr float kTextSize = kStyle.text();
 constexpr float kPad = kStyle.pad();
@@ -48,11 +48,12 @@ std::string fitted(const std::string& text, float size, float width) {
     return font.fitted(text, size * font.lineHeightPerEm(), width);
 }
 
-// A figure page: its Figure, drawn on in the print style.
+// A figure page: its Figure, drawn on in the theme's figure style, on the plots' background.
 struct Page {
     Figure f;
-    PlotCanvas canvas{f, kStyle};
-    Page() = default;
+    PlotStyle style;
+    PlotCanvas canvas{f, style};
+    explicit Page(Theme theme) : style(figureStyle(theme)) { f.background = style.color(Ink::Background); }
     Page(const Page&) = delete;
 };
 
@@ -122,7 +123,7 @@ std::string angleText(float deg) { return std::string(kTheta) + "i = " + degrees
 
 FigureResult lobeFigure(const Preset& a, const Preset* b, const FigureRequest& r) {
     FigureResult out;
-    Page page;
+    Page page(r.theme);
     page.f.width = kWidth;
     page.f.height = kPolarHeight;
     std::vector<PlotSample> sa = reflectedIntensity(a, r.incidentDeg), sb;
@@ -160,7 +161,7 @@ FigureResult lobeFigure(const Preset& a, const Preset* b, const FigureRequest& r
 
 FigureResult overlayFigure(const Preset& a, const FigureRequest& r) {
     FigureResult out;
-    Page page;
+    Page page(r.theme);
     page.f.width = kWidth;
     page.f.height = kPolarHeight;
     std::array<std::vector<PlotSample>, 3> sets;
@@ -229,7 +230,7 @@ std::optional<FigureResult> attenuationFigure(const Preset& a, const FigureReque
 
     const glm::vec3 k = light.attenuation;
     FigureResult out;
-    Page page;
+    Page page(r.theme);
     page.f.width = kWidth;
     page.f.height = kCartesianHeight;
     page.f.title = "Attenuation: " + a.name;
@@ -280,7 +281,7 @@ std::optional<FigureResult> attenuationFigure(const Preset& a, const FigureReque
 
 FigureResult albedoFigure(const Preset& a, const Preset* b, const FigureRequest& r) {
     FigureResult out;
-    Page page;
+    Page page(r.theme);
     page.f.width = kWidth;
     page.f.height = kCartesianHeight;
     std::vector<AlbedoSample> ca = albedoCurve(lobeInputs(a, r.incidentDeg)), cb;

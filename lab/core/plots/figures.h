@@ -7,11 +7,13 @@
 // The numbers are those of the on-screen plots and `lab plot` (core/plots/plot_data.h reflectedIntensity,
 // lobePoints, attenuationCurve; core/plots/energy.h albedoCurve; core/plots/plot_layout.h ticks), every sample
 // drawn (no thinning), so a curve's points are the CSV's rows mapped by `placement`. Colours are
-// for paper and slides: dark ink on white. No ImGui, no GL, no files.
+// a theme's (theme.h): the light one by default, dark ink on white for paper and slides; the lab
+// exports in its own theme. No ImGui, no GL, no files.
 #pragma once
 
 #include "core/plots/figure.h"
 #include "core/plots/plot_data.h"
+#include "core/plots/theme.h"
 #include "core/scene/preset.h"
 
 #include <array>
@@ -33,6 +35,7 @@ struct FigureRequest {
     RadialScale scale = RadialScale::Linear;    // the polar figures' radial scale
     glm::vec3 overlayDeg{60.0f, 25.0f, 10.0f};  // the overlay's three incident angles
     int light = 0;                              // the attenuation's light, 0-based
+    Theme theme = Theme::Light;                 // the colours: dark on white unless asked
 };
 
 struct FigureResult {

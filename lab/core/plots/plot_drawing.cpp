@@ -1,4 +1,4 @@
-// plot_drawing.cpp — the palettes, the text helpers, and the frames, grids, axes and arrows every
+// plot_drawing.cpp — the curves' dashes, the text helpers, and the frames, grids, axes and arrows every
 // plot and figure is drawn with.
 #include "core/plots/plot_drawing.h"
 
@@ -19,39 +19,21 @@ namespace lab {
 // Colours, sizes, text
 //----------------------------------------------------------------------------------------
 
-namespace {
-
-constexpr Palette paletteOf(std::initializer_list<std::pair<Ink, FigureColor>> entries) {
-    Palette p{};
-    for (auto [ink, color] : entries) {
-        p[static_cast<std::size_t>(ink)] = color;
+std::vector<float> dashOf(Ink ink, float scale) {
+    std::vector<float> d;
+    switch (ink) {
+    case Ink::Diffuse:
+    case Ink::Overlay2: d = {7.0f, 5.0f}; break;
+    case Ink::Specular:
+    case Ink::Overlay3: d = {0.0f, 5.0f}; break;
+    case Ink::Compare: d = {12.0f, 5.0f, 0.0f, 5.0f}; break;
+    default: break;
     }
-    return p;
+    for (float& v : d) {
+        v *= scale;
+    }
+    return d;
 }
-
-} // namespace
-
-// Grid and axes bright enough to survive a projector: light grey on near black.
-constexpr Palette kScreenPalette = paletteOf({
-    {Ink::Text, {225, 225, 232}},       {Ink::Muted, {205, 205, 214}},     {Ink::Grid, {135, 135, 150}},
-    {Ink::Axis, {215, 215, 225}},       {Ink::Background, {16, 16, 20}},   {Ink::Diffuse, {90, 160, 255}},
-    {Ink::Specular, {255, 160, 60}},    {Ink::Total, {255, 255, 255}},     {Ink::Compare, {240, 100, 230}},
-    {Ink::Light, {255, 230, 90}},       {Ink::Mirror, {120, 220, 120}},    {Ink::Viewer, {90, 220, 230}},
-    {Ink::Half, {255, 110, 110}},       {Ink::Probe, {180, 180, 186}},     {Ink::Warning, {255, 120, 100}},
-    {Ink::Overlay1, {255, 110, 110}},   {Ink::Overlay2, {120, 230, 120}},  {Ink::Overlay3, {120, 170, 255}},
-});
-
-// The screen's hues darkened where white would wash them out; the total is black, as it is white
-// on screen.
-constexpr Palette kPrintPalette = paletteOf({
-    {Ink::Text, {25, 25, 30}},          {Ink::Muted, {90, 90, 100}},       {Ink::Grid, {200, 200, 210}},
-    {Ink::Axis, {60, 60, 70}},          {Ink::Background, {255, 255, 255}}, {Ink::Diffuse, {30, 110, 220}},
-    {Ink::Specular, {225, 120, 10}},    {Ink::Total, {20, 20, 20}},        {Ink::Compare, {200, 40, 180}},
-    {Ink::Light, {190, 140, 0}},        {Ink::Mirror, {40, 150, 60}},      {Ink::Viewer, {0, 140, 160}},
-    {Ink::Half, {200, 60, 60}},         {Ink::Probe, {110, 110, 120}},     {Ink::Warning, {200, 60, 40}},
-    {Ink::Overlay1, {215, 50, 50}},     {Ink::Overlay2, {40, 160, 60}},    {Ink::Overlay3, {50, 100, 230}},
-});
-
 
 float printedWidth(std::string_view text, float size) {
     const TextFont& font = sharedTextFont();
@@ -84,8 +66,8 @@ constexpr const char* kNinetyDegrees = "90\xc2\xb0";
 //----------------------------------------------------------------------------------------
 
 void PlotCanvas::line(std::vector<glm::vec2> points, float width, Ink ink, std::string id) {
-    figure_.shapes.emplace_back(std::in_place_type<FigureLine>,
-                                FigureLine{std::move(points), width, style_.color(ink), std::move(id)});
+    figure_.shapes.emplace_back(std::in_place_type<FigureLine>, FigureLine{std::move(points), width, style_.color(ink),
+                                                                           std::move(id), dashOf(ink, style_.scale)});
 }
 
 void PlotCanvas::text(glm::vec2 at, std::string text, float size, Ink ink, TextAnchor anchor, bool bold) {

@@ -3,8 +3,9 @@
 // window pixels or page pixels. A Figure is painted twice: onto ImGui's draw list for the screen
 // (ui/plots/plot_kit.h's paint) and into SVG and PNG for the figures (figure.h's writers).
 //
-// Colours are roles (Ink); a Palette gives each its colour: the screen's, light on the plots'
-// near-black background, bright enough for a projector; the print palette, dark on white. Sizes
+// Colours are roles (Ink); a Palette gives each its colour, one palette a theme (theme.h: dark,
+// light on near black; light, dark on white), the same on screen and in the figures. The curves
+// also differ by their dash (dashOf), so that no legend tells them apart by colour alone. Sizes
 // are the figures' page sizes times a PlotStyle's scale: 1 for the figures, the UI's font size
 // over the figures' text size on screen, so a plot grows with presenter mode. Text is measured
 // with the style's own measure: the font the figure's PNG draws with, or ImGui's.
@@ -53,8 +54,6 @@ enum class Ink {
     Count
 };
 using Palette = std::array<FigureColor, static_cast<std::size_t>(Ink::Count)>;
-extern const Palette kScreenPalette; // light on the plots' near-black background
-extern const Palette kPrintPalette;  // dark on white
 inline Ink overlayInk(std::size_t i) { return static_cast<Ink>(static_cast<std::size_t>(Ink::Overlay1) + i); }
 inline FigureColor colorOf(const Palette& palette, Ink ink) { return palette[static_cast<std::size_t>(ink)]; }
 
@@ -81,8 +80,13 @@ struct PlotStyle {
 };
 // The width of text as the figures' PNG draws it (text_raster.h's shared font).
 float printedWidth(std::string_view text, float size);
-// The figures' style: scale 1, the print palette, measured with the PNG's font.
-inline constexpr PlotStyle kPrintStyle{&kPrintPalette, 1.0f, &printedWidth};
+// The figures' sizes (scale 1, measured with the PNG's font); their colours are a theme's (theme.h figureStyle).
+inline constexpr PlotStyle kFigureSizes{nullptr, 1.0f, &printedWidth};
+
+// How a curve's ink is dashed, at `scale` (FigureLine::dash): the total and the overlay's first
+// angle solid, the diffuse term and the second angle dashed, the specular term and the third
+// dotted, set B's total dash-dot; every other ink solid (empty).
+std::vector<float> dashOf(Ink ink, float scale);
 
 inline constexpr const char* kDeg = "\xc2\xb0";   // °
 inline constexpr const char* kTheta = "\xce\xb8"; // θ

@@ -3,6 +3,7 @@
 
 #include "core/exercise/preset_fields.h"
 #include "ui/widget_map.h"
+#include "ui/theme_style.h"
 #include "ui/widgets.h"
 
 #include <imgui.h>
@@ -81,7 +82,8 @@ void exerciseSection(const ExercisePanelModel& e, std::vector<Request>& requests
     if (!e.score.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         if (e.solved) {
-            ImGui::TextColored(ImVec4(0.45f, 0.9f, 0.5f, 1.0f), "%s", e.score.c_str());
+            const FigureColor ok = currentColors().ui.success;
+            ImGui::TextColored(ImVec4(float(ok.r) / 255.0f, float(ok.g) / 255.0f, float(ok.b) / 255.0f, 1.0f), "%s", e.score.c_str());
         } else {
             ImGui::TextDisabled("%s", e.score.c_str());
         }

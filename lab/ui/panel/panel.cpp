@@ -407,6 +407,16 @@ void toolButtons(PanelState& state, std::vector<Request>& requests, bool solving
         commandButtons({{Command::MakeExercise, "exercise.make"}}, requests, true);
     }
     commandButtons({{Command::ToggleShareCode, "share.code"}}, requests, true);
+    // The theme: the UI's, the plots' and the exported figures' colours.
+    ImGui::TextUnformatted("Theme");
+    for (Theme t : kThemes) {
+        const char* label = t == Theme::Dark ? "dark" : "light (projector)";
+        sameLineIfFitsRadio(label);
+        if (ImGui::RadioButton(label, state.theme == t)) {
+            state.theme = t;
+        }
+        mark(t == Theme::Dark ? "theme.dark" : "theme.light");
+    }
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 // (ui/actions.h) for the app to carry out. ImGui only: no GL, no file access.
 #pragma once
 
+#include "core/plots/theme.h"
 #include "core/scene/preset.h"
 #include "core/scene/view_mode.h"
 #include "ui/actions.h"
@@ -41,6 +42,7 @@ struct PanelState {
     int listScrolledTo = -1;    // the preset the list last scrolled to: it follows the current one
     float figureScale = 2.0f;   // Export figures' PNGs: 1 is 720 pixels wide (kFigureScales)
     std::string exercisePath;   // "Make exercise": where it is saved
+    Theme theme = Theme::Dark;  // the UI's, the plots' and the exported figures' colours (core/plots/theme.h)
 };
 
 // The PNG scales Export figures offers: 720, 1440 (a projector, the default) and 2880 pixels wide.

@@ -2,7 +2,10 @@
 // canvases.
 #include "ui/plots/plot_kit.h"
 
+#include "ui/theme_style.h"
 #include "ui/widgets.h"
+
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cfloat>
@@ -17,7 +20,7 @@ namespace lab::ui::plotkit {
 PlotStyle screenStyle() {
     // The figures' text is 14 pixels; the UI's is ImGui's font size.
     // The rings get about a segment every 4 pixels.
-    return PlotStyle{&kScreenPalette, ImGui::GetFontSize() / 14.0f,
+    return PlotStyle{&currentColors().plot, ImGui::GetFontSize() / 14.0f,
                      [](std::string_view text, float size) {
                          return ImGui::GetFont()->CalcTextSizeA(size, FLT_MAX, 0.0f, text.data(), text.data() + text.size()).x;
                      },
@@ -30,7 +33,7 @@ ImU32 imColor(FigureColor c) { return IM_COL32(c.r, c.g, c.b, 255); }
 
 } // namespace
 
-ImU32 ink(Ink i) { return imColor(colorOf(kScreenPalette, i)); }
+ImU32 ink(Ink i) { return imColor(colorOf(currentColors().plot, i)); }
 
 namespace {
 
@@ -42,6 +45,19 @@ const std::vector<ImVec2>& imPoints(const std::vector<glm::vec2>& points) {
         buffer.push_back(toImVec2(p));
     }
     return buffer;
+}
+
+// A polyline, dashed as the figures' PNG dashes it (figure.h dashRuns). ImGui's lines end square
+// at their points, so a dash's round dot is a disc.
+void polyline(ImDrawList* dl, const std::vector<glm::vec2>& points, ImU32 color, float width, const std::vector<float>& dash) {
+    for (const std::vector<glm::vec2>& run : dashRuns(points, dash)) {
+        if (run.size() == 2 && glm::distance(run[0], run[1]) < 0.5f * width) {
+            dl->AddCircleFilled(toImVec2(0.5f * (run[0] + run[1])), 0.5f * width, color, 8);
+        } else if (run.size() >= 2) {
+            const std::vector<ImVec2>& pts = imPoints(run);
+            dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), color, 0, width);
+        }
+    }
 }
 
 void paintText(ImDrawList* dl, const FigureText& t) {
@@ -65,10 +81,7 @@ void paintText(ImDrawList* dl, const FigureText& t) {
 void paint(ImDrawList* dl, const Figure& figure) {
     for (const FigureShape& shape : figure.shapes) {
         if (const auto* l = std::get_if<FigureLine>(&shape)) {
-            if (l->points.size() >= 2) {
-                const std::vector<ImVec2>& pts = imPoints(l->points);
-                dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), imColor(l->color), 0, l->width);
-            }
+            polyline(dl, l->points, imColor(l->color), l->width, l->dash);
         } else if (const auto* g = std::get_if<FigurePolygon>(&shape)) {
             const std::vector<ImVec2>& pts = imPoints(g->points);
             dl->AddConvexPolyFilled(pts.data(), static_cast<int>(pts.size()), imColor(g->fill));
@@ -125,7 +138,7 @@ void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const 
         ImVec2 c(at.x + places[i].x, at.y + static_cast<float>(places[i].line) * p.line);
         if (t.swatch) {
             float y = c.y + p.line * 0.5f;
-            dl->AddLine(ImVec2(c.x, y), ImVec2(c.x + 1.4f * p.font, y), ink(t.ink), p.bold);
+            polyline(dl, {{c.x, y}, {c.x + 1.4f * p.font, y}}, ink(t.ink), p.bold, dashOf(t.ink, p.font / 14.0f));
             c.x += 1.4f * p.font + p.pad;
         }
         dl->AddText(c, ink(t.ink), t.text.c_str(), t.text.c_str() + t.text.size());

@@ -1,6 +1,6 @@
 // plot_kit.h — what the plot files of lab/ui share beyond core/plots/plot_drawing.h (not a public
-// API): the screen's style (the figures' geometry at the UI's scale, the screen palette, ImGui's
-// text measure), a Figure painted onto ImGui's draw list, the layout sizes of widgets (Pens),
+// API): the screen's style (the figures' geometry at the UI's scale, the current theme's palette
+// (ui/theme_style.h), ImGui's text measure), a Figure painted onto ImGui's draw list, the layout sizes of widgets (Pens),
 // readouts of coloured tokens that wrap into strips of their own, and canvases.
 //
 // A plot on screen is drawn as the figures are: shapes built with plot_drawing.h's vocabulary
@@ -28,12 +28,13 @@ namespace lab::ui::plotkit {
 //----------------------------------------------------------------------------------------
 
 // The figures' geometry scaled to this frame's font (so the plots grow with presenter mode), the
-// screen palette, text measured by ImGui's font.
+// current theme's palette, text measured by ImGui's font.
 PlotStyle screenStyle();
-// An ink of the screen palette, for ImGui.
+// An ink of the current theme's palette, for ImGui.
 ImU32 ink(Ink ink);
-// The figure's shapes onto `dl`, in order; its coordinates are screen pixels. Text is drawn with
-// ImGui's font at each text's size (the UI font is DejaVu Sans, as the figures').
+// The figure's shapes onto `dl`, in order, lines dashed as the figures dash them; its coordinates
+// are screen pixels. Text is drawn with ImGui's font at each text's size (the UI font is DejaVu
+// Sans, as the figures').
 void paint(ImDrawList* dl, const Figure& figure);
 
 // A plot on screen: a Figure drawn in the screen style, painted by paint(). Not copyable (the

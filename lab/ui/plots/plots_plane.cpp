@@ -13,6 +13,7 @@
 
 #include "core/lighting/lighting.h"
 #include "core/plots/plot_layout.h"
+#include "core/plots/theme.h"
 #include "core/scene/limits.h"
 
 #include <glm/glm.hpp>
@@ -369,10 +370,10 @@ PlotNeeds overlayNeeds(const Overlay& o, const Pens& p, float width) {
     return n;
 }
 
-// A colour's darker shade as a field background, white text on it readable.
-ImVec4 shade(ImU32 color, float k) {
-    ImVec4 c = ImGui::ColorConvertU32ToFloat4(color);
-    return ImVec4(c.x * k, c.y * k, c.z * k, 1.0f);
+// An ink's darker shade as a field background (theme.h kFieldShades: white text on it 4.5:1).
+ImVec4 shade(Ink ink, float k) {
+    const FigureColor c = shaded(colorOf(*screenStyle().palette, ink), k);
+    return ImVec4(float(c.r) / 255.0f, float(c.g) / 255.0f, float(c.b) / 255.0f, 1.0f);
 }
 
 void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Overlay& o, PlotSettings& s) {
@@ -408,9 +409,9 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
         if (i > 0) {
             ImGui::SameLine(0.0f, p.inner);
         }
-        ImGui::PushStyleColor(ImGuiCol_FrameBg, shade(ink(overlayInk(std::size_t(i))), 0.45f));
-        ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, shade(ink(overlayInk(std::size_t(i))), 0.6f));
-        ImGui::PushStyleColor(ImGuiCol_FrameBgActive, shade(ink(overlayInk(std::size_t(i))), 0.75f));
+        ImGui::PushStyleColor(ImGuiCol_FrameBg, shade(overlayInk(std::size_t(i)), kFieldShades[0]));
+        ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, shade(overlayInk(std::size_t(i)), kFieldShades[1]));
+        ImGui::PushStyleColor(ImGuiCol_FrameBgActive, shade(overlayInk(std::size_t(i)), kFieldShades[2]));
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 255, 255, 255));
         ImGui::SetNextItemWidth(field);
         ImGui::DragFloat(ids[i], &s.overlayDeg[i], 0.5f, -90.0f, 90.0f, unit.c_str());
