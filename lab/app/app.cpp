@@ -19,7 +19,6 @@
 #include "ui/screen.h"
 #include "ui/widget_map.h"
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -574,6 +573,7 @@ FrameOutput App::Impl::output(bool touch) {
     out.quit = workspace.quit();
     out.link = workspace.link();
     out.problem = problem ? printable(toString(*problem)) : std::string();
+    out.exerciseScore = workspace.exercise() ? exerciseScoreLine(scorer.score()) : std::string();
     out.downloads = workspace.takeDownloads();
     out.uiScale = presenter ? presenterScale : touch ? kTouchScale : 1.0f;
     out.touch = touch;

@@ -58,6 +58,9 @@ struct FrameOutput {
     std::string title;
     std::string link;               // the current scene as a preset link (shareable, restorable; may exceed kMaxLinkChars)
     std::string problem;            // the error dialog's text while it is shown (the page mirrors it for screen readers)
+    // The exercise's score as one line of plain text (exerciseScoreLine, app/exercise_score.h: "Score 42%: not
+    // solved yet", "Solved: score 100%"), as the panel's bar says it; "" outside an exercise (the page announces it).
+    std::string exerciseScore;
     std::vector<Download> downloads; // only when AppOptions::saveByDownload
     bool pickFile = false;           // the user asked to open a file (the browser shows its picker)
     bool copyLink = false;           // the user asked for the scene's link on the clipboard (the browser)
