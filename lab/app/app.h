@@ -18,6 +18,7 @@
 #pragma once
 
 #include "app/input.h"
+#include "app/orbit_clock.h"
 #include "app/workspace.h"
 #include "core/io/diagnostics.h"
 
@@ -61,6 +62,8 @@ struct FrameOutput {
     // The exercise's score as one line of plain text (exerciseScoreLine, app/exercise_score.h: "Score 42%: not
     // solved yet", "Solved: score 100%"), as the panel's bar says it; "" outside an exercise (the page announces it).
     std::string exerciseScore;
+    // Whether a light of the scene orbits by itself, and whether that motion is paused (Command::ToggleLightMotion).
+    MovingLights movingLights = MovingLights::None;
     std::vector<Download> downloads; // only when AppOptions::saveByDownload
     bool pickFile = false;           // the user asked to open a file (the browser shows its picker)
     bool copyLink = false;           // the user asked for the scene's link on the clipboard (the browser)
@@ -90,6 +93,9 @@ struct AppOptions {
     // The course page's address (https://.../lab/): the QR code (Q) opens the scene's link there.
     // The page gives its own; the desktop --share-base (remembered in the settings file).
     std::string shareBase;
+    // The user asked for less motion (the page: the prefers-reduced-motion media query): a scene whose
+    // light orbits opens with the motion paused (app/orbit_clock.h); Command::ToggleLightMotion resumes it.
+    bool reducedMotion = false;
 };
 
 // Owns the workspace, the renderer and the UI state (not copyable: impl_ is unique).

@@ -64,6 +64,7 @@ constexpr std::array kRows = {
     CommandRow{C::ExerciseLeave,      0,                   kNoModifier,   "Leave exercise",   ""},
     CommandRow{C::MakeExercise,       0,                   kNoModifier,   "Make exercise",    ""},
     CommandRow{C::SaveExercise,       0,                   kNoModifier,   "Save exercise",    ""},
+    CommandRow{C::ToggleLightMotion,  0,                   kNoModifier,   "Pause moving lights", ""},
 };
 // clang-format on
 

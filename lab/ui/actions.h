@@ -35,7 +35,7 @@ enum class Command {
     ToggleNormalMatrix, NextViewMode, ToggleWireframe, ToggleVertexNormals, ToggleCompare, ResetCamera, FrameModel,
     // The window and its tools (the app carries these out)
     ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
-    ToggleLightShapes,
+    ToggleLightShapes, ToggleLightMotion,
     ToggleFrameTime,
     ToggleFullscreen, Screenshot, FocusOpenPath, PickFile, CopyLink, ToggleShaderEditor, CompileShaders,
     ExportFigures,
