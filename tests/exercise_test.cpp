@@ -1,6 +1,6 @@
 // exercise_test.cpp — exercises round-trip through their file, every problem of a file is refused with
-// its JSON path, preset fields by path (changes, open paths, patches), locked fields, and the score of an
-// attempt from two images.
+// its JSON path, preset fields by path (changes, open paths, patches), locked fields, what is rendered to
+// score an attempt (the score itself: exercise_score_test.cpp).
 #include "core/exercise/exercise.h"
 #include "core/exercise/preset_fields.h"
 
@@ -779,139 +779,10 @@ TEST(Exercise, AnAttemptIsScoredThroughTheTargetsCamera) {
     EXPECT_EQ(scored.camera, e.target.camera);
     EXPECT_EQ(scored.material.shininess, 30.0f);
     EXPECT_EQ(targetAsScored(e), e.target);
-}
-
-//----------------------------------------------------------------------------------------
-// The score, from two images
-//----------------------------------------------------------------------------------------
-
-using Rgb = std::array<std::uint8_t, 3>;
-
-Image filled(Rgb colour, int side = 16) {
-    Image image;
-    image.width = side;
-    image.height = side;
-    for (int i = 0; i < side * side; ++i) {
-        image.rgb.insert(image.rgb.end(), colour.begin(), colour.end());
-    }
-    return image;
-}
-
-void setPixel(Image& image, int x, int y, Rgb colour) {
-    std::copy(colour.begin(), colour.end(), image.rgb.begin() + (std::ptrdiff_t(y) * image.width + x) * 3);
-}
-
-// The background in levels: 0.2, 0.4, 0.6 is 51, 102, 153.
-Exercise scoredExercise() {
-    Exercise e = shininessExercise();
-    e.start.background = {0.2f, 0.4f, 0.6f};
-    e.target.background = e.start.background;
-    return e;
-}
-constexpr Rgb kBackground{51, 102, 153};
-constexpr Rgb kModel{200, 100, 50};
-
-TEST(Exercise, IdenticalImagesAreSolved) {
-    const Exercise e = scoredExercise();
-    const Image image = filled(kModel);
-    ExerciseScore s = scoreExercise(e, e.target, image, image);
-    EXPECT_TRUE(s.image.sameSize);
-    EXPECT_TRUE(s.solved);
-    EXPECT_EQ(s.closeness, 1.0);
-    EXPECT_TRUE(s.misses.empty());
-    EXPECT_EQ(s.summary().rfind("Solved", 0), 0u) << s.summary();
-}
-
-TEST(Exercise, OnePixelOffIsNotSolvedWhenNoPixelMayFail) {
-    Exercise e = scoredExercise();
-    e.tolerance.maxFailing = 0.0f;
-    const Image target = filled(kModel);
-    Image attempt = target;
-    setPixel(attempt, 3, 4, {250, 100, 50}); // 50 levels off in red
-    ExerciseScore s = scoreExercise(e, e.target, attempt, target);
-    EXPECT_FALSE(s.solved);
-    EXPECT_LT(s.closeness, 1.0);
-    EXPECT_DOUBLE_EQ(s.closeness, 255.0 / 256.0);
-    EXPECT_EQ(s.image.failingPixels, 1u);
-    EXPECT_EQ(s.image.maxDifference, 50);
-    EXPECT_NE(s.summary().find("match"), std::string::npos) << s.summary();
-    EXPECT_EQ(s.summary().find("Solved"), std::string::npos) << s.summary();
-    // The same pixel within the exercise's pixel tolerance matches and passes.
-    e.tolerance.pixelTolerance = 50;
-    s = scoreExercise(e, e.target, attempt, target);
-    EXPECT_TRUE(s.solved) << s.summary();
-    EXPECT_EQ(s.closeness, 1.0);
-}
-
-TEST(Exercise, ThePixelToleranceIsTheExercisesOwn) {
-    const Exercise e = scoredExercise(); // the default: 6 levels
-    const Image target = filled(kModel);
-    Image attempt = target;
-    setPixel(attempt, 0, 0, {206, 100, 50});
-    EXPECT_EQ(scoreExercise(e, e.target, attempt, target).closeness, 1.0);
-    setPixel(attempt, 0, 0, {207, 100, 50});
-    EXPECT_DOUBLE_EQ(scoreExercise(e, e.target, attempt, target).closeness, 255.0 / 256.0);
-}
-
-TEST(Exercise, BackgroundPixelsAreNotCountedInTheCloseness) {
-    Exercise e = scoredExercise();
-    e.tolerance.maxFailing = 0.0f;
-    Image target = filled(kBackground);
-    for (int y = 0; y < 16; ++y) {
-        for (int x = 8; x < 16; ++x) {
-            setPixel(target, x, y, kModel); // the right half is the model: 128 pixels
-        }
-    }
-    Image attempt = target;
-    setPixel(attempt, 12, 5, {250, 100, 50});
-    ExerciseScore s = scoreExercise(e, e.target, attempt, target);
-    EXPECT_DOUBLE_EQ(s.closeness, 127.0 / 128.0);
-    EXPECT_FALSE(s.solved);
-    // A pixel that is the background in one image only is the model's.
-    attempt = target;
-    setPixel(attempt, 2, 2, kModel);
-    s = scoreExercise(e, e.target, attempt, target);
-    EXPECT_DOUBLE_EQ(s.closeness, 128.0 / 129.0);
-    // Nothing but background: nothing to get wrong.
-    s = scoreExercise(e, e.target, filled(kBackground), filled(kBackground));
-    EXPECT_EQ(s.closeness, 1.0);
-    EXPECT_TRUE(s.solved);
-}
-
-TEST(Exercise, AFieldToleranceMissBlocksSolvedEvenWithIdenticalImages) {
-    Exercise e = scoredExercise();
-    e.tolerance.fields = {{"material.shininess", 5.0f}};
-    const Image image = filled(kModel);
-    Preset attempt = e.target;
-    attempt.material.shininess = 70.0f;
-    ExerciseScore s = scoreExercise(e, attempt, image, image);
-    EXPECT_FALSE(s.solved);
-    EXPECT_EQ(s.closeness, 1.0);
-    ASSERT_EQ(s.misses.size(), 1u);
-    EXPECT_EQ(s.misses[0].field, "material.shininess");
-    EXPECT_EQ(s.misses[0].difference, 10.0f);
-    EXPECT_EQ(s.misses[0].within, 5.0f);
-    EXPECT_NE(s.summary().find("material.shininess"), std::string::npos) << s.summary();
-    attempt.material.shininess = 64.0f; // within 5
-    s = scoreExercise(e, attempt, image, image);
-    EXPECT_TRUE(s.solved) << s.summary();
-    EXPECT_TRUE(s.misses.empty());
-    // A field of several numbers: the largest difference counts.
-    e.open = {"material.shininess", "material.diffuse"};
-    e.tolerance.fields = {{"material.diffuse", 0.1f}};
-    attempt = e.target;
-    attempt.material.diffuse = e.target.material.diffuse + glm::vec3(0.0f, 0.25f, 0.05f);
-    s = scoreExercise(e, attempt, image, image);
-    ASSERT_EQ(s.misses.size(), 1u);
-    EXPECT_NEAR(s.misses[0].difference, 0.25f, 1e-6f);
-    EXPECT_FALSE(s.solved);
-}
-
-TEST(Exercise, ImagesOfDifferentSizesAreNotSolved) {
-    const Exercise e = scoredExercise();
-    ExerciseScore s = scoreExercise(e, e.target, filled(kModel, 16), filled(kModel, 8));
-    EXPECT_FALSE(s.image.sameSize);
-    EXPECT_FALSE(s.solved);
+    // The start, for d(start), is seen as an attempt is.
+    const Preset start = startAsScored(e);
+    EXPECT_EQ(start.camera, e.target.camera);
+    EXPECT_EQ(start.material.shininess, e.start.material.shininess);
 }
 
 } // namespace

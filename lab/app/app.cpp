@@ -76,7 +76,7 @@ struct App::Impl {
     unsigned long long frames = 0;
     bool screenshotRequested = false, toggleFullscreen = false, pickFile = false, copyLink = false;
 
-    OrbitClock orbits; // the moving lights (app/orbit_clock.h)
+    OrbitClock orbits{options.reducedMotion}; // the moving lights (app/orbit_clock.h)
 
     // Exercises: the live score, what the panel shows of the exercise and of a draft (app/exercise_score.h).
     ExerciseScorer scorer;
@@ -161,6 +161,7 @@ ui::ScreenModel App::Impl::screenModel() {
     m.panelInfo = {&workspace.presetFiles(), workspace.currentPreset(), name, doc.dirty(),
                    doc.canUndo(), doc.canRedo(), false, options.saveByDownload};
     m.panelInfo.exerciseFiles = &workspace.exerciseFiles();
+    m.panelInfo.lightsPaused = orbits.paused();
     m.panel = &panel;
     m.plots = &plots;
     m.shaderEditor = &shaderEditor;
@@ -236,6 +237,7 @@ void App::Impl::carryOut(const Request& r) {
     case Command::TogglePresenter: setPresenter(!presenter); break;
     case Command::ToggleCaption: caption = !caption; break;
     case Command::ToggleLightShapes: lightShapes = !lightShapes; break;
+    case Command::ToggleLightMotion: orbits.togglePaused(); break;
     case Command::ToggleFrameTime: frameTimeShown() = !frameTimeShown(); break;
     case Command::PresenterLarger:
         if (!presenter) {
@@ -587,6 +589,8 @@ FrameOutput App::Impl::output(bool touch) {
     out.quit = workspace.quit();
     out.link = workspace.link();
     out.problem = problem ? printable(toString(*problem)) : std::string();
+    out.exerciseScore = workspace.exercise() ? exerciseScoreLine(scorer.score()) : std::string();
+    out.movingLights = orbits.moving(workspace.a());
     out.downloads = workspace.takeDownloads();
     out.uiScale = presenter ? presenterScale : touch ? kTouchScale : 1.0f;
     out.touch = touch;

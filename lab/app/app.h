@@ -18,6 +18,7 @@
 #pragma once
 
 #include "app/input.h"
+#include "app/orbit_clock.h"
 #include "app/page_model.h"
 #include "app/workspace.h"
 #include "core/io/diagnostics.h"
@@ -59,6 +60,11 @@ struct FrameOutput {
     std::string title;
     std::string link;               // the current scene as a preset link (shareable, restorable; may exceed kMaxLinkChars)
     std::string problem;            // the error dialog's text while it is shown (the page mirrors it for screen readers)
+    // The exercise's score as one line of plain text (exerciseScoreLine, app/exercise_score.h: "Score 42%: not
+    // solved yet", "Solved: score 100%"), as the panel's bar says it; "" outside an exercise (the page announces it).
+    std::string exerciseScore;
+    // Whether a light of the scene orbits by itself, and whether that motion is paused (Command::ToggleLightMotion).
+    MovingLights movingLights = MovingLights::None;
     std::vector<Download> downloads; // only when AppOptions::saveByDownload
     bool pickFile = false;           // the user asked to open a file (the browser shows its picker)
     bool copyLink = false;           // the user asked for the scene's link on the clipboard (the browser)
@@ -98,6 +104,9 @@ struct AppOptions {
     // Called when the user chooses a theme in the panel (not for setTheme): the desktop remembers
     // it in the settings file, the page in its saved state, and stops following the system's.
     std::function<void(Theme)> themeChosen;
+    // The user asked for less motion (the page: the prefers-reduced-motion media query): a scene whose
+    // light orbits opens with the motion paused (app/orbit_clock.h); Command::ToggleLightMotion resumes it.
+    bool reducedMotion = false;
 };
 
 // Owns the workspace, the renderer and the UI state (not copyable: impl_ is unique).

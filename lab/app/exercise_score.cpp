@@ -41,6 +41,10 @@ bool ExerciseScorer::update(Renderer& renderer, Workspace& workspace, bool gestu
     }
     if (!target_) {
         target_ = renderScored(renderer, targetAsScored(exercise), workspace.mesh(Side::B));
+        std::optional<Image> start = renderScored(renderer, startAsScored(exercise), workspace.exerciseStartMesh());
+        if (target_ && start) {
+            startDifference_ = startDifference(exercise, *start, *target_);
+        }
     }
     std::optional<Image> tried = renderScored(renderer, scored, workspace.mesh(Side::A));
     bindFramebuffer(framebuffer);
@@ -48,7 +52,7 @@ bool ExerciseScorer::update(Renderer& renderer, Workspace& workspace, bool gestu
         return false;
     }
     bool wasSolved = score_ && score_->solved;
-    score_ = scoreExercise(exercise, workspace.a(), *tried, *target_);
+    score_ = scoreExercise(exercise, workspace.a(), *tried, *target_, startDifference_);
     if (score_->solved && !wasSolved) {
         workspace.note("Solved! Your attempt matches the target.");
     }
@@ -57,12 +61,14 @@ bool ExerciseScorer::update(Renderer& renderer, Workspace& workspace, bool gestu
     return true;
 }
 
+std::string exerciseScoreLine(const std::optional<ExerciseScore>& score) { return score ? score->line() : std::string{}; }
+
 ui::ExercisePanelModel exercisePanelModel(const ExerciseSession& session, const std::optional<ExerciseScore>& score) {
     const Exercise& e = session.exercise;
     ui::ExercisePanelModel view{printable(e.title, true), printable(e.instructions, true), {},
                           static_cast<int>(e.hints.size()) - session.hintsShown, e.open,
-                          score ? score->summary() : std::string{}, score ? score->closeness : 0.0,
-                          score && score->solved};
+                          exerciseScoreLine(score), score ? score->details() : std::string{},
+                          score ? score->progress : 0.0, score && score->solved};
     for (int i = 0; i < session.hintsShown; ++i) {
         view.hints.push_back(printable(e.hints[static_cast<std::size_t>(i)], true));
     }

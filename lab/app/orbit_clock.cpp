@@ -23,6 +23,8 @@ bool OrbitClock::advance(const Scene& a, const Scene& b, unsigned scenesOpened, 
         return p && i < p->lights.size() && p->lights[i].orbit.on && p->lights[i].orbit.degreesPerSecond != 0.0f;
     };
     bool newScene = std::exchange(scene_, scenesOpened) != scenesOpened;
+    userPaused_ = newScene ? startPaused_ : userPaused_;
+    paused = paused || userPaused_;
     std::vector<double>& seconds = motions_[0].seconds;
     seconds.resize(std::max(a.preset->lights.size(), b.preset ? b.preset->lights.size() : 0), 0.0);
     bool moving = false;

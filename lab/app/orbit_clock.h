@@ -4,7 +4,8 @@
 // `lab render` show); the live view, its markers and the probe show shown(): the scene with each
 // orbiting light where its clock has taken it. A light's clock runs while its orbit is on and
 // nothing is being dragged or edited, and starts again from 0 when its orbit is switched off or
-// a scene opens. A and B (compare mode) share one clock per light index, and each circles the
+// a scene opens. The user can pause them all (paused()), and a scene can open paused (reduced
+// motion). A and B (compare mode) share one clock per light index, and each circles the
 // centre of its own model's drawn bounds.
 //
 // While a light moves, frames come at a steady kFrameSeconds whatever a frame costs: the wait is
@@ -22,8 +23,23 @@
 
 namespace lab {
 
+// Whether a scene's lights move by themselves (their orbit), and whether that motion is paused.
+enum class MovingLights { None, Moving, Paused };
+
 class OrbitClock {
 public:
+    // `startPaused` (AppOptions::reducedMotion): every scene opens with its lights' motion paused.
+    explicit OrbitClock(bool startPaused = false) : startPaused_(startPaused), userPaused_(startPaused) {}
+
+    // The user's pause (Command::ToggleLightMotion): the clocks stand still until resumed, the
+    // lights shown where they were. A scene opened starts paused again when startPaused, moving
+    // otherwise.
+    bool paused() const { return userPaused_; }
+    void togglePaused() { userPaused_ = !userPaused_; }
+    MovingLights moving(const Preset& preset) const {
+        return !anyOrbit(preset) ? MovingLights::None : userPaused_ ? MovingLights::Paused : MovingLights::Moving;
+    }
+
     static constexpr float kFrameSeconds = 1.0f / 60.0f;
     // A clock never jumps more than this at once (the first frame after an idle wait would
     // otherwise turn the light by the whole wait).
@@ -35,8 +51,8 @@ public:
         std::shared_ptr<const Mesh> mesh;
     };
     // Runs the clocks of the lights that orbit in `a`, or in `b` (compare mode; null otherwise),
-    // by `deltaTime` unless `paused`. `scenesOpened` counts the scenes opened (a new one resets
-    // the clocks). True when some light is moving and not paused: another frame is due.
+    // by `deltaTime` unless `paused` (a drag) or paused(). `scenesOpened` counts the scenes opened (a new
+    // one resets the clocks). True when some light is moving and not paused: another frame is due.
     bool advance(const Scene& a, const Scene& b, unsigned scenesOpened, float deltaTime, bool paused);
 
     // The motion of side 0 (A) or 1 (B), and its scene as the live view shows it.
@@ -64,6 +80,8 @@ private:
     unsigned scene_ = 0;
     float sleep_ = kFrameSeconds; // the wait between orbit frames, corrected to a steady rate
     bool lastFrameMoved_ = false; // the last frame was asked for by the orbit
+    bool startPaused_ = false;
+    bool userPaused_ = false;
 };
 
 } // namespace lab

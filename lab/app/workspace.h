@@ -134,6 +134,9 @@ public:
     //--- exercises ----------------------------------------------------------------------
     const std::optional<ExerciseSession>& exercise() const { return exercise_; }
     std::optional<ExerciseDraft>& draft() { return draft_; }
+    // The mesh of the exercise's start (for d(start), core/exercise/score.h): A's or B's when the
+    // start has their model, else loaded; null when no exercise is open or it cannot load.
+    std::shared_ptr<const Mesh> exerciseStartMesh();
     // The exercise replaces the scene (asking first about unsaved changes): A its start, B its target.
     void openExercise(LoadedExercise loaded, std::optional<std::string> bundledName);
     // The exercise `draft` and the scene make, as saved (nullopt with the reasons when it is not one).

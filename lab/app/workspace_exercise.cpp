@@ -49,6 +49,20 @@ bool Workspace::runExercise(const Request& r) {
     }
 }
 
+std::shared_ptr<const Mesh> Workspace::exerciseStartMesh() {
+    if (!exercise_) {
+        return nullptr;
+    }
+    const Model& start = exercise_->exercise.start.model;
+    for (Side side : {Side::A, Side::B}) {
+        if (preset(side).model == start) {
+            return mesh(side);
+        }
+    }
+    Diagnostics ignored; // (it loaded when the exercise opened; a file gone since scores nothing)
+    return meshes_.get(start, doc_.folder(), ignored);
+}
+
 void Workspace::openExercise(LoadedExercise loaded, std::optional<std::string> bundledName) {
     whenChangesAreSafe("open the exercise " + loaded.exercise.title,
                        [this, loaded = std::move(loaded), bundledName = std::move(bundledName)]() {

@@ -5,6 +5,7 @@
 #include "cli/output.h"
 #include "cli/settings.h"
 #include "core/exercise/exercise.h"
+#include "core/exercise/score.h"
 #include "core/io/file_io.h"
 #include "core/io/safe_text.h"
 #include "core/share/qr_code.h"
@@ -73,16 +74,20 @@ int runExerciseCheck(const fs::path& exerciseFile, const fs::path& attemptFile, 
         return kExitFailure;
     }
     const Exercise& e = exercise->exercise;
+    // The attempt, the target and the start (d(start), core/exercise/score.h), as the lab renders them.
     LoadedPreset tried{attemptAsScored(e, attempt->preset), attempt->file};
     LoadedPreset target{targetAsScored(e), exercise->file};
+    LoadedPreset start{startAsScored(e), exercise->file};
     std::optional<Image> a = gpu.renderer.render(tried, kExerciseRenderSide, kExerciseRenderSide, diagnostics);
     std::optional<Image> t = a ? gpu.renderer.render(target, kExerciseRenderSide, kExerciseRenderSide, diagnostics)
                                : std::nullopt;
-    if (!a || !t) {
+    std::optional<Image> s = t ? gpu.renderer.render(start, kExerciseRenderSide, kExerciseRenderSide, diagnostics)
+                               : std::nullopt;
+    if (!a || !t || !s) {
         printDiagnostics(diagnostics);
         return kExitFailure;
     }
-    ExerciseScore score = scoreExercise(e, attempt->preset, *a, *t);
+    ExerciseScore score = scoreExercise(e, attempt->preset, *a, *t, startDifference(e, *s, *t));
     print(stdout, attemptFile.string() + ": " + score.summary() + "\n");
     if (diffOut) {
         std::string error;

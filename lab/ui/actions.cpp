@@ -70,6 +70,7 @@ constexpr std::array kRows = {
     CommandRow{C::OrbitDown,          0,                   kNoModifier,   "Orbit down",       ""},
     CommandRow{C::ZoomIn,             0,                   kNoModifier,   "Zoom in",          ""},
     CommandRow{C::ZoomOut,            0,                   kNoModifier,   "Zoom out",         ""},
+    CommandRow{C::ToggleLightMotion,  0,                   kNoModifier,   "Pause moving lights", ""},
 };
 // clang-format on
 

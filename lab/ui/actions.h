@@ -37,7 +37,7 @@ enum class Command {
     OrbitLeft, OrbitRight, OrbitUp, OrbitDown, ZoomIn, ZoomOut,
     // The window and its tools (the app carries these out)
     ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
-    ToggleLightShapes,
+    ToggleLightShapes, ToggleLightMotion,
     ToggleFrameTime,
     ToggleFullscreen, Screenshot, FocusOpenPath, PickFile, CopyLink, ToggleShaderEditor, CompileShaders,
     ExportFigures,

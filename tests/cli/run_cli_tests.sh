@@ -421,12 +421,12 @@ for ex in "$exercises"/*.json; do
     n=$(basename "$ex" .json)
     count=$((count + 1))
     if [[ -f $solutions/$n.solution.json ]]; then
-        expect "exercise-$n-solved" 0 "$n\.solution\.json: Solved" -- "$lab" exercise check "$ex" "$solutions/$n.solution.json"
+        expect "exercise-$n-solved" 0 "$n\.solution\.json: Solved: score 100%$" -- "$lab" exercise check "$ex" "$solutions/$n.solution.json"
     else
         echo "FAIL exercise-$n-has-a-solution: no tests/exercises/$n.solution.json"; failed=$((failed + 1))
     fi
     json_start "$ex" "$tmp/$n.start.json"
-    expect "exercise-$n-start-not-solved" 1 "$n\.start\.json: [0-9]+% of the model.s pixels match" -- \
+    expect "exercise-$n-start-scores-0" 1 "$n\.start\.json: Score 0%: not solved yet" -- \
         "$lab" exercise check "$ex" "$tmp/$n.start.json"
     link=$("$lab" share "$ex" --base "$base" 2>/dev/null)
     check "exercise-$n-linked-by-name" test "$link" = "$base#exercise=$n"
@@ -444,12 +444,16 @@ near() { # near NAME PATTERN EXERCISE PYTHON: the exercise's solution edited by 
     uedit "$solutions/$3.solution.json" "$tmp/near.json" "$4"
     expect "exercise-near-miss-$1" 1 "$2" -- "$lab" exercise check "$exercises/$3.json" "$tmp/near.json"
 }
-near shininess-50 'pixels match' 02-shininess 'p["material"]["shininess"] = 50'
+unsolved='Score [0-9]{1,2}%: not solved yet'
+near shininess-50 "$unsolved" 02-shininess 'p["material"]["shininess"] = 50'
 near attenuation-field 'lights\[0\]\.attenuation is 0\.1 away \(at most 0\.05\)' 05-attenuation \
     'p["lights"][0]["attenuation"] = [0, 0.1, 0.9]'
-near spot-cutoff-32 'pixels match' 06-spot-light 'p["lights"][0]["cutoff_deg"] = 32'
-near roughness-0.2 'pixels match' 07-cook-torrance-roughness 'p["cook_torrance"]["roughness"] = 0.2'
-near ior-1.8 'pixels match' 08-fresnel 'p["cook_torrance"]["ior"] = 1.8'
+near spot-cutoff-32 "$unsolved" 06-spot-light 'p["lights"][0]["cutoff_deg"] = 32'
+near roughness-0.2 "$unsolved" 07-cook-torrance-roughness 'p["cook_torrance"]["roughness"] = 0.2'
+near ior-1.8 "$unsolved" 08-fresnel 'p["cook_torrance"]["ior"] = 1.8'
+# The score is a progress (core/exercise/score.h): part of the way from the start (n = 8) to the
+# target (n = 80) scores between the two, neither 0% nor 100%.
+near shininess-30-part-way 'Score ([1-9]|[1-9][0-9])%: not solved yet' 02-shininess 'p["material"]["shininess"] = 30'
 
 # A field the exercise does not open, changed: refused with its JSON path. The camera is always free.
 shin=$exercises/02-shininess.json

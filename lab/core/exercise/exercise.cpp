@@ -1,4 +1,5 @@
-// exercise.cpp — the exercise written out, its locked fields, the score of an attempt (reading: exercise_read.cpp).
+// exercise.cpp — the exercise written out, its locked fields, what is rendered to score an attempt
+// (reading: exercise_read.cpp; the score: score.cpp).
 #include "core/exercise/exercise.h"
 
 #include "core/exercise/preset_fields.h"
@@ -9,12 +10,7 @@
 #include "core/io/suggest.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
-#include <cstdio>
-
-#include <glm/common.hpp>
-#include <glm/vec3.hpp>
 
 namespace lab {
 
@@ -237,89 +233,6 @@ Preset attemptAsScored(const Exercise& exercise, const Preset& attempt) {
 
 Preset targetAsScored(const Exercise& exercise) { return exercise.target; }
 
-std::string ExerciseScore::summary() const {
-    char line[256];
-    if (solved) {
-        std::snprintf(line, sizeof line, "Solved: %.0f%% of the model's pixels match", std::floor(closeness * 100.0));
-        return line;
-    }
-    std::snprintf(line, sizeof line, "%.0f%% of the model's pixels match", std::floor(closeness * 100.0));
-    std::string s = line;
-    if (!image.sameSize) {
-        return s + "; the renders differ in size";
-    }
-    if (image.failingShare > tolerance.maxFailingShare) {
-        std::snprintf(line, sizeof line, "; %.1f%% of the image differs by more than %d levels (at most %.1f%%)",
-                      image.failingShare * 100.0, tolerance.pixelTolerance, tolerance.maxFailingShare * 100.0);
-        s += line;
-    }
-    if (image.meanDifference > tolerance.maxMeanDifference) {
-        std::snprintf(line, sizeof line, "; the mean difference is %.2f levels (at most %.2f)", image.meanDifference,
-                      tolerance.maxMeanDifference);
-        s += line;
-    }
-    for (const FieldMiss& m : misses) {
-        char miss[200];
-        std::snprintf(miss, sizeof miss, "; %s is %.3g away (at most %.3g)", m.field.c_str(), double(m.difference),
-                      double(m.within));
-        s += miss;
-    }
-    return s;
-}
-
-ExerciseScore scoreExercise(const Exercise& exercise, const Preset& attempt, const Image& attemptImage,
-                            const Image& targetImage) {
-    ExerciseScore score;
-    const Tolerance tolerance = exercise.tolerance.image();
-    score.tolerance = tolerance;
-    score.image = compareImages(attemptImage, targetImage, tolerance);
-    if (score.image.sameSize) {
-        auto background = [](const glm::vec3& c) {
-            glm::vec3 v = glm::round(glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f)) * 255.0f);
-            return glm::ivec3(v);
-        };
-        glm::ivec3 ba = background(attempt.background), bt = background(exercise.target.background);
-        std::size_t model = 0, matching = 0;
-        const std::size_t n = attemptImage.rgb.size() / 3;
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::uint8_t* a = &attemptImage.rgb[i * 3];
-            const std::uint8_t* t = &targetImage.rgb[i * 3];
-            bool aBack = true, tBack = true;
-            int worst = 0;
-            for (int c = 0; c < 3; ++c) {
-                aBack = aBack && std::abs(int(a[c]) - ba[c]) <= 1;
-                tBack = tBack && std::abs(int(t[c]) - bt[c]) <= 1;
-                worst = std::max(worst, std::abs(int(a[c]) - int(t[c])));
-            }
-            if (aBack && tBack) {
-                continue;
-            }
-            ++model;
-            matching += worst <= tolerance.pixelTolerance ? 1 : 0;
-        }
-        score.closeness = model == 0 ? 1.0 : double(matching) / double(model);
-    }
-    PresetJson tried = presetValue(attempt), target = presetValue(exercise.target);
-    for (const FieldTolerance& f : exercise.tolerance.fields) {
-        const PresetJson* a = fieldAt(tried, f.field);
-        const PresetJson* t = fieldAt(target, f.field);
-        float worst = 0.0f;
-        if (!a || !t || a->is_number() != t->is_number() || (a->is_array() && a->size() != t->size())) {
-            worst = INFINITY;
-        } else if (a->is_number()) {
-            worst = std::abs(a->get<float>() - t->get<float>());
-        } else {
-            for (std::size_t i = 0; i < a->size(); ++i) {
-                worst = std::max(worst, std::abs((*a)[i].get<float>() - (*t)[i].get<float>()));
-            }
-        }
-        // Within float rounding of the edge counts (0.95 against 1 within 0.05 is 0.0500001 in float).
-        if (!(worst <= f.within + 1e-5f * std::max(1.0f, f.within))) {
-            score.misses.push_back({f.field, worst, f.within});
-        }
-    }
-    score.solved = score.image.passes(tolerance) && score.misses.empty();
-    return score;
-}
+Preset startAsScored(const Exercise& exercise) { return attemptAsScored(exercise, exercise.start); }
 
 } // namespace lab

@@ -16,7 +16,7 @@
 // alwaysFree). Every problem is reported with its JSON path. Solved: rendered at 256 x 256 with the
 // target's camera, the attempt and the target are within the image tolerance (the names of a
 // preset's `check` block; the defaults below), and every field tolerance holds.
-// No GL here: exercise_score.h compares the two renders whoever made them.
+// The score of an attempt is score.h. No GL here: the caller renders.
 #pragma once
 
 #include "core/io/image.h"
@@ -102,30 +102,10 @@ std::vector<std::string> lockedChanges(const Exercise& exercise, const Preset& a
 // attempt so whatever edited it: a key, a dropped file's values).
 Preset withLockedFieldsOfStart(const Exercise& exercise, const Preset& attempt);
 
-// What is rendered to score `attempt`: it, seen through the target's camera.
+// What is rendered to score `attempt`: it, seen through the target's camera; the target; the start,
+// seen as an attempt is (its render is d(start)'s, score.h).
 Preset attemptAsScored(const Exercise& exercise, const Preset& attempt);
 Preset targetAsScored(const Exercise& exercise);
-
-struct FieldMiss {
-    std::string field;
-    float difference = 0.0f; // the largest over the field's numbers
-    float within = 0.0f;
-};
-
-struct ExerciseScore {
-    Comparison image;          // attempt against target (image.h)
-    Tolerance tolerance;       // what it was held to (ExerciseTolerance::image)
-    double closeness = 0.0;    // the share of the model's pixels within the pixel tolerance, 0..1
-    std::vector<FieldMiss> misses; // field tolerances not met
-    bool solved = false;
-    // One line: "Solved: ..." or how close, and what is still too far: "83% of the model's pixels match;
-    // 1.2% of the image differs by more than 6 levels (at most 0.2%)".
-    std::string summary() const;
-};
-
-// Compares the renders of attemptAsScored and targetAsScored (the same size). The model's pixels
-// are those that are not the background's colour in either image.
-ExerciseScore scoreExercise(const Exercise& exercise, const Preset& attempt, const Image& attemptImage,
-                            const Image& targetImage);
+Preset startAsScored(const Exercise& exercise);
 
 } // namespace lab

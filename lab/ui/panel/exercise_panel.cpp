@@ -10,8 +10,6 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
 
 namespace lab::ui {
 
@@ -72,23 +70,21 @@ void exerciseSection(const ExercisePanelModel& e, std::vector<Request>& requests
     if (e.solved) {
         ImGui::PushStyleColor(ImGuiCol_PlotHistogram, IM_COL32(40, 170, 70, 255));
     }
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "%s%.0f%%", e.solved ? "Solved!  " : "", std::floor(e.closeness * 100.0));
-    ImGui::ProgressBar(static_cast<float>(e.closeness), ImVec2(-1, 0), e.score.empty() ? "..." : overlay);
+    // The bar says the score's line itself, as the page's live region and `lab exercise check` do.
+    ImGui::ProgressBar(static_cast<float>(e.progress), ImVec2(-1, 0), e.score.empty() ? "..." : e.score.c_str());
     mark(e.solved ? "exercise.solved" : "exercise.score");
     if (e.solved) {
         ImGui::PopStyleColor();
     }
-    if (!e.score.empty()) {
-        ImGui::PushTextWrapPos(0.0f);
-        if (e.solved) {
-            const FigureColor ok = currentColors().ui.success;
-            ImGui::TextColored(ImVec4(float(ok.r) / 255.0f, float(ok.g) / 255.0f, float(ok.b) / 255.0f, 1.0f), "%s", e.score.c_str());
-        } else {
-            ImGui::TextDisabled("%s", e.score.c_str());
-        }
-        ImGui::PopTextWrapPos();
+    ImGui::PushTextWrapPos(0.0f);
+    if (e.solved) {
+        const FigureColor ok = currentColors().ui.success;
+        ImGui::TextColored(ImVec4(float(ok.r) / 255.0f, float(ok.g) / 255.0f, float(ok.b) / 255.0f, 1.0f),
+                           "Your attempt matches the target.");
+    } else if (!e.details.empty()) {
+        ImGui::TextDisabled("%s", e.details.c_str());
     }
+    ImGui::PopTextWrapPos();
     for (std::size_t i = 0; i < e.hints.size(); ++i) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::Text("Hint %zu: %s", i + 1, e.hints[i].c_str());

@@ -21,8 +21,9 @@ struct ExercisePanelModel {
     std::vector<std::string> hints; // those shown so far
     int hintsLeft = 0;
     std::vector<std::string> open; // JSON paths (core/exercise/preset_fields.h)
-    std::string score;             // "87% of the model's pixels match ...", empty before the first score
-    double closeness = 0.0;        // 0..1
+    std::string score;             // its line: "Score 42%: not solved yet" (core/exercise/score.h), empty before the first score
+    std::string details;           // what is still too far: "0.5% of the image differs by more than 6 levels ..."
+    double progress = 0.0;         // 0..1, the bar's fill: 1 only when solved
     bool solved = false;
 };
 

@@ -7,6 +7,7 @@
 #include "core/scene/limits.h"
 #include "core/scene/field_path.h"
 #include "core/scene/field_table.h"
+#include "core/scene/light_orbit.h"
 #include "core/scene/preset_choices.h"
 #include "ui/panel/equation_panel.h"
 #include "ui/panel/exercise_panel.h"
@@ -349,6 +350,22 @@ void lightsSection(Preset& p, PanelState& state, const FieldGate& gate) {
     ImGui::PopID();
 }
 
+// Whenever a light orbits by itself: a box that pauses the motion (Command::ToggleLightMotion), so
+// that it can always be stopped (reduced motion opens scenes with it ticked, app/orbit_clock.h).
+void motionRow(const Preset& p, const PanelInfo& info, std::vector<Request>& requests) {
+    if (!anyOrbit(p)) {
+        return;
+    }
+    bool paused = info.lightsPaused;
+    if (ImGui::Checkbox(commandRow(Command::ToggleLightMotion).label, &paused)) {
+        requests.push_back({Command::ToggleLightMotion});
+    }
+    mark("lights.pause");
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("The moving light stands still where it is shown; untick to let it go on.");
+    }
+}
+
 void cameraSection(Preset& p, std::vector<Request>& requests) {
     fieldRowsOf("camera", p, nullptr, 0, FieldGate{}, nothingAfter); // looking around is never an exercise's field
     commandButton(Command::ResetCamera, requests);
@@ -456,7 +473,10 @@ void controlPanel(Preset& preset, DisplaySettings& view, const PanelInfo& info, 
         shadingSection(preset, view, gate);
     }
     if (lights && gate.any({"lights"}) && ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) {
+        motionRow(preset, info, requests);
         lightsSection(preset, state, gate);
+    } else if (lights && !gate.any({"lights"})) {
+        motionRow(preset, info, requests); // an exercise that opens no light: its motion can still be paused
     }
     if (model && gate.any({"model"}) && ImGui::CollapsingHeader("Model", all ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
         modelSection(preset, info, state, requests, gate);

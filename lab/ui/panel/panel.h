@@ -31,6 +31,7 @@ struct PanelInfo {
     const std::vector<std::filesystem::path>* exerciseFiles = nullptr; // the shipped exercises
     const ExercisePanelModel* exercise = nullptr; // an exercise is being solved
     DraftPanelModel* draft = nullptr;     // an exercise is being made
+    bool lightsPaused = false;            // the moving lights' motion is paused (Command::ToggleLightMotion)
 };
 
 // What the panel keeps between frames, and the workspace settings it edits in place.
