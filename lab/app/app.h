@@ -20,6 +20,7 @@
 #include "app/input.h"
 #include "app/workspace.h"
 #include "core/io/diagnostics.h"
+#include "ui/actions.h"
 
 #include <filesystem>
 #include <memory>
@@ -47,6 +48,9 @@ struct FrameInput {
     std::optional<std::string> openLink; // a link to open ("preset=name", "z=...": core/share/share_link.h)
     bool openLinkSaved = false;          // it is the page's own saved state (kMaxSavedLinkChars), not an address
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
+    // Who this frame's keys are for: the model's shortcuts, a window's widget, a text field
+    // (set by the ImGui host, platform/imgui_host.h, from ui/keyboard.h).
+    KeyOwner keys = KeyOwner::Canvas;
 };
 
 struct FrameOutput {

@@ -17,6 +17,9 @@ void helpWindow(bool& open) {
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowBgAlpha(0.92f);
     if (ImGui::Begin("Keyboard shortcuts (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+        ImGui::TextUnformatted("Letters, digits and the arrows act on the model. Tab takes the keyboard into the panel, "
+                               "where a ring marks the widget it is in;\nEsc brings it back to the model "
+                               "(a mouse click too). While a field is being typed in,\nonly the function keys and the Ctrl shortcuts that do not edit text work.");
         if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
             for (const HelpRow& row : helpRows()) {
                 ImGui::TableNextRow();
@@ -42,11 +45,9 @@ void rgb(const char* name, const glm::vec3& v) { ImGui::Text("%-18s %.4f  %.4f  
 void plotsHere(const Preset& preset, DisplaySettings& view) {
     ImGui::Checkbox("plots at this point", &view.plotsAtProbe);
     mark("probe.plots-here");
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("The plots use this point: its angle of incidence (from N and L), the light that\n"
-                          "arrives here (colour x Att x spot) and its V, and a small lobe is drawn on the\n"
-                          "model. Drag the marker to move the point. The preset's plot settings stay.");
-    }
+    itemTooltip("The plots use this point: its angle of incidence (from N and L), the light that "
+                "arrives here (colour x Att x spot) and its V, and a small lobe is drawn on the "
+                "model. Drag the marker to move the point. The preset's plot settings stay.");
     if (!view.plotsAtProbe) {
         return;
     }
