@@ -65,11 +65,15 @@ TEST(GuiKeyboard, TheKeyboardAloneReachesTheShininessAndChangesIt) {
     Image after = lab.viewShot(); // F12 works wherever the keyboard is
     EXPECT_GT(changedShare(before, after), 0.001) << "a sharper exponent changes the highlight";
 
-    // Esc again gives the keyboard back to the model: the ring goes, the arrows step the presets.
+    // Esc again gives the keyboard back to the model: the ring goes, the arrows step the presets (here
+    // the edit is unsaved, so Right asks first; Esc answers Cancel).
     lab.press("Escape");
     EXPECT_FALSE(lab.has("focus"));
     lab.press("Right");
-    EXPECT_GT(changedShare(after, lab.viewShot()), 0.05) << "Right, on the model, opens the next preset";
+    EXPECT_TRUE(lab.has("confirm.cancel")) << "Right, on the model, should ask to open the next preset";
+    lab.press("Escape");
+    EXPECT_FALSE(lab.has("confirm.cancel"));
+    EXPECT_EQ(compareImages(lab.viewShot(), after, Tolerance{}).maxDifference, 0) << "Cancel keeps the scene";
 }
 
 TEST(GuiKeyboard, InAWindowTheLettersAndArrowsAreTheWidgetsAndCtrlTabReachesTheNextWindow) {
