@@ -114,6 +114,21 @@ TEST_F(Keyboard, TabEntersThePanelTheArrowsChangeTheShininessAndEscGivesTheKeysB
     EXPECT_NE(link_, edited) << "back on the model, 1 is flat shading again";
 }
 
+// Tab from a widget goes on to the next field below it, not back to the window's first (ImGui 1.86's
+// own Tab restarts from the top unless a field is being typed in).
+TEST_F(Keyboard, TabFromAWidgetGoesOnToTheNextField) {
+    ASSERT_TRUE(walkTo("material.shininess"));
+    const float shininessY = widget("material.shininess")->y;
+    press(keys::Right); // the help marker: not a field
+    ASSERT_FALSE(atCorner("material.shininess"));
+    press(keys::Tab);
+    ASSERT_NE(widget("focus"), nullptr);
+    EXPECT_GT(widget("focus")->y, shininessY) << "Tab went back up to " << widget("focus")->y;
+    press(keys::Escape); // the field's typing ends
+    press(keys::Escape);
+    EXPECT_EQ(widget("focus"), nullptr);
+}
+
 // Page Up / Page Down a tenth of the slider (of its logarithm for the shininess's 1…1000), Home / End
 // its ends; the ring stays on the slider (ImGui's navigation would page away from it).
 TEST_F(Keyboard, PageKeysHomeAndEndMoveASliderThatHasTheKeyboard) {
