@@ -129,6 +129,27 @@ TEST_F(Keyboard, TabFromAWidgetGoesOnToTheNextField) {
     EXPECT_EQ(widget("focus"), nullptr);
 }
 
+// F1's help is read row by row from the keyboard (it may be taller than the screen and scroll), and
+// left: Esc gives the keyboard back to the model, the next Esc closes the help.
+TEST_F(Keyboard, TheHelpIsReadRowByRowAndEscLeavesThenClosesIt) {
+    press(keys::F1);
+    ASSERT_NE(widget("help"), nullptr);
+    press(keys::Tab); // the help has ImGui's focus: Tab goes into it, not into the panel
+    ASSERT_NE(widget("focus"), nullptr);
+    const ui::Rect* help = widget("help");
+    const float first = widget("focus")->y;
+    EXPECT_TRUE(widget("focus")->x >= help->x && widget("focus")->y >= help->y) << "the ring is in the help";
+    for (int i = 0; i < 5; ++i) {
+        press(keys::Down);
+    }
+    EXPECT_GT(widget("focus")->y, first) << "Down goes from row to row";
+    press(keys::Escape);
+    EXPECT_EQ(widget("focus"), nullptr);
+    EXPECT_NE(widget("help"), nullptr);
+    press(keys::Escape);
+    EXPECT_EQ(widget("help"), nullptr) << "Esc on the model closes the help";
+}
+
 // Page Up / Page Down a tenth of the slider (of its logarithm for the shininess's 1…1000), Home / End
 // its ends; the ring stays on the slider (ImGui's navigation would page away from it).
 TEST_F(Keyboard, PageKeysHomeAndEndMoveASliderThatHasTheKeyboard) {

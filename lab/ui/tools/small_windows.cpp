@@ -16,17 +16,24 @@ void helpWindow(bool& open) {
     ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowBgAlpha(0.92f);
+    // Never taller than the screen (a projector's 768 lines): the rows scroll instead.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(io.DisplaySize.x, io.DisplaySize.y * 0.95f));
     if (ImGui::Begin("Keyboard shortcuts (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
-        ImGui::TextUnformatted("Letters, digits and the arrows act on the model. Tab takes the keyboard into the panel, "
-                               "where a ring marks the widget it is in;\nEsc brings it back to the model "
-                               "(a mouse click too). While a field is being typed in,\nonly the function keys and the Ctrl shortcuts that do not edit text work.");
+        ImGui::TextUnformatted("Letters, digits and the arrows act on the model. Tab takes the keyboard into the panel (a ring "
+                               "marks the widget that has it); Esc or a click gives it back.\nWhile a field is being typed "
+                               "in, only the function keys and the Ctrl shortcuts that do not edit text work.");
         if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-            for (const HelpRow& row : helpRows()) {
+            const std::vector<HelpRow> rows = helpRows();
+            for (std::size_t i = 0; i < rows.size(); ++i) {
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(row.keys.c_str());
+                // A row the keyboard can stop at (Tab into this window, then Down), so it reads and
+                // scrolls the list without a mouse.
+                ImGui::PushID(static_cast<int>(i));
+                ImGui::Selectable(rows[i].keys.c_str(), false, ImGuiSelectableFlags_SpanAllColumns);
+                ImGui::PopID();
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(row.help.c_str());
+                ImGui::TextUnformatted(rows[i].help.c_str());
             }
             ImGui::EndTable();
         }
