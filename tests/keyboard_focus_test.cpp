@@ -4,10 +4,12 @@
 // the next). The GUI test (tests/gui/keyboard_test.cpp) does the same through a real X server.
 #include "app/app.h"
 #include "core/share/share_link.h"
+#include "cpu_imgui.h"
 #include "platform/headless_app.h"
 #include "platform/headless_gl.h"
 #include "test_files.h"
 #include "ui/actions.h"
+#include "ui/keyboard.h"
 #include "ui/widget_map.h"
 
 #include <gtest/gtest.h>
@@ -127,6 +129,42 @@ TEST_F(Keyboard, TabFromAWidgetGoesOnToTheNextField) {
     press(keys::Escape); // the field's typing ends
     press(keys::Escape);
     EXPECT_EQ(widget("focus"), nullptr);
+}
+
+TEST_F(Keyboard, EnterOnTheModelTakesTheKeyboardIntoThePanelAsTabDoes) {
+    press(keys::Enter);
+    ASSERT_NE(widget("focus"), nullptr);
+    const ui::Rect *f = widget("focus"), *panel = widget("panel");
+    EXPECT_TRUE(f->x >= panel->x && f->y >= panel->y && f->y + f->h <= panel->y + panel->h);
+}
+
+// The browser's setting: Tab is the page's (it leaves the canvas for the page's controls: no trap in
+// the canvas), Enter enters the panel; on the ImGui context alone, without the app.
+TEST(KeyboardFocus, WhereTabIsThePagesEnterStillEntersThePanel) {
+    CpuImGui imgui(1.0f);
+    ImGui::GetIO().DisplaySize = ImVec2(800, 600);
+    auto frame = [] {
+        ImGui::NewFrame();
+        ImGui::Begin("Lighting Lab###panel");
+        ImGui::Button("a");
+        ImGui::End();
+        ImGui::Render();
+    };
+    frame();
+    ui::KeyboardFocus keyboard;
+    keyboard.tabEntersWindows(false);
+    std::vector<ui::KeyPress> tab{{keys::Tab, kNoModifier}};
+    EXPECT_EQ(keyboard.beforeNewFrame(tab, false), KeyOwner::Canvas);
+    EXPECT_FALSE(tab[0].used) << "the page's Tab must reach the browser untouched";
+    frame();
+    std::vector<ui::KeyPress> enter{{keys::Enter, kNoModifier}};
+    EXPECT_EQ(keyboard.beforeNewFrame(enter, false), KeyOwner::Panel);
+    EXPECT_TRUE(enter[0].used);
+    keyboard.tabEntersWindows(true);
+    std::vector<ui::KeyPress> escapeAndClick{};
+    EXPECT_EQ(keyboard.beforeNewFrame(escapeAndClick, true), KeyOwner::Canvas) << "a mouse press gives the keys back";
+    std::vector<ui::KeyPress> tabAgain{{keys::Tab, kNoModifier}};
+    EXPECT_EQ(keyboard.beforeNewFrame(tabAgain, false), KeyOwner::Panel);
 }
 
 // F1's help is read row by row from the keyboard (it may be taller than the screen and scroll), and

@@ -232,6 +232,8 @@ bool ImGuiHost::start(App& app, std::string& error) {
     return true;
 }
 
+void ImGuiHost::setTabEntersWindows(bool on) { impl_->keyboard.tabEntersWindows(on); }
+
 FrameOutput ImGuiHost::frame(const FrameInput& in, const std::function<void()>& platformNewFrame) {
     Impl& m = *impl_;
     ImGui_ImplOpenGL3_NewFrame();

@@ -69,9 +69,11 @@ constexpr std::array kRows = {
 
 // The keys inside a window (ImGui's keyboard navigation, ui/keyboard.h): not commands, but the help
 // lists them with the shortcuts.
-constexpr std::array<std::pair<const char*, const char*>, 6> kWindowKeyHelp = {{
+constexpr std::array<std::pair<const char*, const char*>, 7> kWindowKeyHelp = {{
     {"Tab / Shift+Tab", "from the model into the control panel (or the open tool window); then the next / previous "
                         "field to type a value in"},
+    {"Enter, on the model",
+     "into the control panel as Tab does (in the browser, where Tab goes to the page's controls)"},
     {"Ctrl+Tab", "the next window: control panel, plots, the open tools (keep Ctrl down and press Tab again to go on)"},
     {"Arrows, in a window",
      "move between widgets; on a slider after Space, Left / Right change it (Shift: 10x faster, Ctrl: 10x finer)"},

@@ -56,19 +56,21 @@ KeyOwner KeyboardFocus::beforeNewFrame(std::vector<KeyPress>& presses, bool mous
     for (KeyPress& p : presses) {
         if (p.key == keys::Escape && p.modifiers == 0 && closeTooltip()) {
             p.used = true;
-        }
-        if (p.key != keys::Tab || (p.modifiers & kAlt) || window_) {
             continue;
         }
-        if (p.modifiers & kCtrl) {
-            window_ = true; // ImGui's window switcher chooses the window
-        } else if (typing) {
-            window_ = true; // from a field typed in after a click: ImGui tabs on from it
-        } else if (ImGuiWindow* target = tabTarget()) {
+        if (window_ || (p.modifiers & kAlt)) {
+            continue;
+        }
+        const bool tab = p.key == keys::Tab, enter = p.key == keys::Enter && p.modifiers == 0;
+        if (tab && ((p.modifiers & kCtrl) || typing)) {
+            window_ = true; // ImGui's window switcher, or its Tab on from a field typed in after a click
+        } else if ((tab && tabEnters_) || (enter && !typing && g.OpenPopupStack.Size == 0)) {
             // The window's last widget, or its first (ImGui's own Tab would skip to its first text
-            // field and start typing there), with the ring. The Tab itself goes no further.
-            ImGui::FocusWindow(target);
-            window_ = entering_ = p.used = true;
+            // field and start typing there), with the ring. The key itself goes no further.
+            if (ImGuiWindow* target = tabTarget()) {
+                ImGui::FocusWindow(target);
+                window_ = entering_ = p.used = true;
+            }
         }
     }
     ImGuiIO& io = ImGui::GetIO();

@@ -19,7 +19,7 @@ void helpWindow(bool& open) {
     // Never taller than the screen (a projector's 768 lines): the rows scroll instead.
     ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(io.DisplaySize.x, io.DisplaySize.y * 0.95f));
     if (ImGui::Begin("Keyboard shortcuts (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
-        ImGui::TextUnformatted("Letters, digits and the arrows act on the model. Tab takes the keyboard into the panel (a ring "
+        ImGui::TextUnformatted("Letters, digits and the arrows act on the model. Tab or Enter takes the keyboard into the panel (a ring "
                                "marks the widget that has it); Esc or a click gives it back.\nWhile a field is being typed "
                                "in, only the function keys and the Ctrl shortcuts that do not edit text work.");
         if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
