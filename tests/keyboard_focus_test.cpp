@@ -132,7 +132,9 @@ TEST_F(Keyboard, TabFromAWidgetGoesOnToTheNextField) {
 }
 
 TEST_F(Keyboard, EnterOnTheModelTakesTheKeyboardIntoThePanelAsTabDoes) {
+    EXPECT_EQ(frames(1).keys, KeyOwner::Canvas);
     press(keys::Enter);
+    EXPECT_EQ(frames(1).keys, KeyOwner::Panel) << "the frame says who has the keys (the page decides about Tab)";
     ASSERT_NE(widget("focus"), nullptr);
     const ui::Rect *f = widget("focus"), *panel = widget("panel");
     EXPECT_TRUE(f->x >= panel->x && f->y >= panel->y && f->y + f->h <= panel->y + panel->h);

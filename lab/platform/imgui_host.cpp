@@ -243,6 +243,7 @@ FrameOutput ImGuiHost::frame(const FrameInput& in, const std::function<void()>& 
     ImGui::NewFrame();
     m.keyboard.afterNewFrame();
     FrameOutput out = m.app->frame(input);
+    out.keys = input.keys;
     ImGui::Render();
     std::string drawn = snapshot(*ImGui::GetDrawData(), in);
     out.presented = in.repaint || out.viewportDrawn || drawn != m.lastDrawn;
