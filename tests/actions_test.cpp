@@ -38,6 +38,35 @@ TEST(Commands, KeysFindTheirCommandAndPlainKeysWaitWhileTyping) {
     EXPECT_EQ(commandForKey('S', kCtrl, true), Command::Save);
     EXPECT_EQ(commandForKey(keys::F12, kNoModifier, true), Command::Screenshot);
     EXPECT_EQ(commandForKey(keys::KeypadAdd, kCtrl, false), Command::PresenterLarger);
+    EXPECT_EQ(commandForKey('H', kNoModifier, false), Command::TogglePanels);
+    EXPECT_EQ(commandForKey(keys::Tab, kNoModifier, false), std::nullopt);
+}
+
+// In a window, the plain keys are the widget's (WCAG 2.1.4: single-key shortcuts only where the model
+// has the keyboard); Ctrl shortcuts and the function keys still work.
+TEST(Commands, AWidgetWithTheKeyboardKeepsThePlainKeys) {
+    EXPECT_EQ(commandForKey('1', kNoModifier, KeyOwner::Canvas), Command::ShadingFlat);
+    EXPECT_EQ(commandForKey('1', kNoModifier, KeyOwner::Panel), std::nullopt);
+    EXPECT_EQ(commandForKey(keys::Right, kNoModifier, KeyOwner::Panel), std::nullopt);
+    EXPECT_EQ(commandForKey(keys::Escape, kNoModifier, KeyOwner::Panel), std::nullopt);
+    EXPECT_EQ(commandForKey('Z', kCtrl, KeyOwner::Panel), Command::Undo);
+    EXPECT_EQ(commandForKey('Z', kCtrl, KeyOwner::Typing), std::nullopt);
+    EXPECT_EQ(commandForKey(keys::F12, kNoModifier, KeyOwner::Panel), Command::Screenshot);
+    EXPECT_EQ(commandForKey(keys::F1, kNoModifier, KeyOwner::Typing), Command::ToggleHelp);
+}
+
+// Tab is the keyboard's way into the windows (ui/keyboard.h) and a browser's between its controls: no
+// command takes it, nor F5 (reload), F6 (address bar) or a Ctrl+letter that browsers keep or readers expect.
+TEST(Commands, NoCommandTakesTabOrABrowsersKey) {
+    for (const CommandRow& row : commandTable()) {
+        EXPECT_NE(row.key, keys::Tab) << keyName(row.key, row.modifiers) << " is the keyboard navigation's";
+        EXPECT_FALSE(row.key == keys::F1 + 4 || row.key == keys::F1 + 5) << keyName(row.key, row.modifiers);
+        if ((row.modifiers & kCtrl) && row.key < 128) {
+            EXPECT_EQ(std::string("WTNLRQPFDHJK").find(static_cast<char>(row.key)), std::string::npos)
+                << keyName(row.key, row.modifiers) << " is a browser's";
+        }
+    }
+    EXPECT_EQ(commandRow(Command::TogglePanels).key, 'H');
 }
 
 TEST(Commands, HelpJoinsABindingsOfOneCommand) {

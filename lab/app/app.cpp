@@ -532,7 +532,7 @@ FrameOutput App::frame(const FrameInput& in) {
         if (k.kind != InputEvent::Kind::Key || !k.down) {
             continue;
         }
-        if (std::optional<Command> c = commandForKey(k.code, k.modifiers, events.typing)) {
+        if (std::optional<Command> c = commandForKey(k.code, k.modifiers, in.keys)) {
             events.requests.push_back({*c, *c == Command::SaveAs || *c == Command::Save ? m.panel.saveAsPath : ""});
         }
     }

@@ -23,6 +23,7 @@
 #include "app/workspace.h"
 #include "core/io/diagnostics.h"
 #include "core/plots/theme.h"
+#include "ui/actions.h"
 
 #include <filesystem>
 #include <functional>
@@ -49,6 +50,9 @@ struct FrameInput {
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
     std::vector<PageEdit> pageEdits;     // the page's own controls (app/page_model.h), in order
     std::optional<std::string> pageFocus; // the page's control that has the keyboard (its field's path, "" none)
+    // Who this frame's keys are for: the model's shortcuts, a window's widget, a text field
+    // (set by the ImGui host, platform/imgui_host.h, from ui/keyboard.h).
+    KeyOwner keys = KeyOwner::Canvas;
 };
 
 struct FrameOutput {
@@ -74,6 +78,7 @@ struct FrameOutput {
     bool viewportDrawn = false;  // the model's viewport was drawn this frame (otherwise its cached copy was shown)
     bool presented = true;   // the window was drawn (false: it would have looked exactly as the last; no swap needed)
     std::string page;            // AppOptions::describePage: the page's description of the lab (app/page_model.h)
+    KeyOwner keys = KeyOwner::Canvas; // who this frame's keys went to (the page: Tab is the browser's only on the model)
     float viewportScale = 1.0f;  // the fraction of the view's width and height drawn (< 1 while dragging on a slow machine)
 };
 

@@ -4,6 +4,7 @@
 #include "render/gl.h"
 #include "render/renderer.h"
 #include "ui/actions.h"
+#include "ui/keyboard.h"
 
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
@@ -84,6 +85,58 @@ std::string snapshot(const ImDrawData& data, const FrameInput& in) {
     return bytes;
 }
 
+// The frame's key presses (auto-repeats too), with their places in `events`, and whether a mouse
+// button went down: for the keyboard's owner (ui/keyboard.h).
+std::vector<ui::KeyPress> keyPresses(const std::vector<InputEvent>& events, std::vector<std::size_t>& at,
+                                     bool& mousePressed) {
+    std::vector<ui::KeyPress> presses;
+    mousePressed = false;
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const InputEvent& e = events[i];
+        if (e.kind == InputEvent::Kind::Key && e.down) {
+            presses.push_back({e.code, e.modifiers});
+            at.push_back(i);
+        }
+        mousePressed = mousePressed || (e.kind == InputEvent::Kind::Button && e.down);
+    }
+    return presses;
+}
+
+// This frame's input as ImGui and the app are to see it: who the keys are for, and without the
+// presses the keyboard's owner took (an Esc that closed a tooltip).
+FrameInput routed(const FrameInput& in, ui::KeyboardFocus& keyboard) {
+    FrameInput out = in;
+    std::vector<std::size_t> at;
+    bool mousePressed = false;
+    std::vector<ui::KeyPress> presses = keyPresses(in.events, at, mousePressed);
+    out.keys = keyboard.beforeNewFrame(presses, mousePressed);
+    for (std::size_t i = presses.size(); i-- > 0;) {
+        if (presses[i].used) {
+            out.events.erase(out.events.begin() + static_cast<std::ptrdiff_t>(at[i]));
+        }
+    }
+    return out;
+}
+
+// ImGui's named keys as the lab's key codes, which are GLFW's on every platform (app/input.h); the
+// GLFW backend sets the same, the headless app has no backend.
+void mapKeys(ImGuiIO& io) {
+    // clang-format off
+    const std::pair<ImGuiKey, int> map[] = {
+        {ImGuiKey_Tab, keys::Tab},           {ImGuiKey_LeftArrow, keys::Left}, {ImGuiKey_RightArrow, keys::Right},
+        {ImGuiKey_UpArrow, keys::Up},        {ImGuiKey_DownArrow, keys::Down}, {ImGuiKey_PageUp, keys::PageUp},
+        {ImGuiKey_PageDown, keys::PageDown}, {ImGuiKey_Home, keys::Home},      {ImGuiKey_End, keys::End},
+        {ImGuiKey_Insert, keys::Insert},     {ImGuiKey_Delete, keys::Delete},  {ImGuiKey_Backspace, keys::Backspace},
+        {ImGuiKey_Space, keys::Space},       {ImGuiKey_Enter, keys::Enter},    {ImGuiKey_Escape, keys::Escape},
+        {ImGuiKey_KeyPadEnter, keys::KeypadEnter},
+        {ImGuiKey_A, 'A'}, {ImGuiKey_C, 'C'}, {ImGuiKey_V, 'V'}, {ImGuiKey_X, 'X'}, {ImGuiKey_Y, 'Y'}, {ImGuiKey_Z, 'Z'},
+    };
+    // clang-format on
+    for (const auto& [key, code] : map) {
+        io.KeyMap[key] = code;
+    }
+}
+
 } // namespace
 
 namespace {
@@ -104,7 +157,8 @@ struct ImGuiHost::Impl {
     bool touch = false;
     bool backend = false;
     Pointer pointer;
-    std::string lastDrawn; // the last frame's draw data (snapshot())
+    ui::KeyboardFocus keyboard; // the model's or a window's widget's (ui/keyboard.h)
+    std::string lastDrawn;      // the last frame's draw data (snapshot())
 
     // Rebuilds the font atlas at `s` and scales a copy of the base style, instead of stretching;
     // for a finger (`t`), taller fields, wider grabs and scrollbars, and a margin around each
@@ -149,6 +203,7 @@ ImGuiHost::ImGuiHost(std::vector<std::string> fontFiles) : impl_(std::make_uniqu
     ImGui::GetIO().IniFilename = nullptr; // the layout is the app's, not a file's
     // A steady caret: a blinking one would need a frame twice a second in an idle lab.
     ImGui::GetIO().ConfigInputTextCursorBlink = false;
+    mapKeys(ImGui::GetIO());
     ImGui::StyleColorsDark();
     impl_->baseStyle = ImGui::GetStyle();
 }
@@ -177,13 +232,18 @@ bool ImGuiHost::start(App& app, std::string& error) {
     return true;
 }
 
+void ImGuiHost::setTabEntersWindows(bool on) { impl_->keyboard.tabEntersWindows(on); }
+
 FrameOutput ImGuiHost::frame(const FrameInput& in, const std::function<void()>& platformNewFrame) {
     Impl& m = *impl_;
     ImGui_ImplOpenGL3_NewFrame();
     platformNewFrame();
-    feed(in.events, m.pointer);
+    const FrameInput input = routed(in, m.keyboard);
+    feed(input.events, m.pointer);
     ImGui::NewFrame();
-    FrameOutput out = m.app->frame(in);
+    m.keyboard.afterNewFrame();
+    FrameOutput out = m.app->frame(input);
+    out.keys = input.keys;
     ImGui::Render();
     std::string drawn = snapshot(*ImGui::GetDrawData(), in);
     out.presented = in.repaint || out.viewportDrawn || drawn != m.lastDrawn;

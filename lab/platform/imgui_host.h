@@ -35,6 +35,10 @@ public:
     // the platform need not swap. Fonts are rebuilt when the app asks for another UI scale.
     FrameOutput frame(const FrameInput& in, const std::function<void()>& platformNewFrame);
 
+    // The browser: false, so that Tab leaves the canvas for the page's controls and Enter takes the
+    // keyboard into the lab's windows instead (ui/keyboard.h). True to start with (the desktop).
+    void setTabEntersWindows(bool on);
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;

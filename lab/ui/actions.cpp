@@ -26,7 +26,7 @@ constexpr std::array kRows = {
     CommandRow{C::ToggleVertexNormals, 'N',                kNoModifier,   "Vertex normals",   "vertex normals as short lines over the model"},
     CommandRow{C::ToggleCompare,      'C',                 kNoModifier,   "Compare",          "compare mode: the view split in two"},
     CommandRow{C::ToggleShareCode,    'Q',                 kNoModifier,   "QR code (Q)",      "a large QR code of the scene's link, for students' phones (the exercise too)"},
-    CommandRow{C::TogglePanels,       keys::Tab,           kNoModifier,   "Panels",           "cycle the panels: all, plots and model, model only"},
+    CommandRow{C::TogglePanels,       'H',                 kNoModifier,   "Panels",           "hide the panels in turn: all, plots and model, model only"},
     CommandRow{C::TogglePresenter,    'P',                 kNoModifier,   "Presenter",        "presenter mode (large UI, with the caption)"},
     CommandRow{C::ToggleCaption,      'I',                 kNoModifier,   "Caption",          "show or hide the caption: the preset's name and description"},
     CommandRow{C::ToggleLightShapes,  'L',                 kNoModifier,   "Light shapes",     "show or hide the spot cones and the directional lights' rays"},
@@ -74,6 +74,23 @@ constexpr std::array kRows = {
 };
 // clang-format on
 
+// The keys inside a window (ImGui's keyboard navigation, ui/keyboard.h): not commands, but the help
+// lists them with the shortcuts.
+constexpr std::array<std::pair<const char*, const char*>, 7> kWindowKeyHelp = {{
+    {"Tab / Shift+Tab", "from the model into the control panel (or the open tool window); then the next / previous "
+                        "field to type a value in"},
+    {"Enter, on the model",
+     "into the control panel as Tab does (in the browser, where Tab goes to the page's controls)"},
+    {"Ctrl+Tab", "the next window: control panel, plots, the open tools (keep Ctrl down and press Tab again to go on)"},
+    {"Arrows, in a window",
+     "move between widgets; on a slider after Space, Left / Right change it (Shift: 10x faster, Ctrl: 10x finer)"},
+    {"Space / Enter, in a window",
+     "press a button, tick a box, open a list, start changing a slider; Enter types a value instead"},
+    {"Page Up / Page Down / Home / End, in a window", "a page up or down, the first or last widget"},
+    {"Esc, in a window", "end the slider or the typing, close a list or a tooltip; then leave the window: the keys "
+                         "above act on the model again"},
+}};
+
 // What the mouse and drops do: not commands, but the help lists them with the keys.
 constexpr std::array<std::pair<const char*, const char*>, 4> kPointerHelp = {{
     {"Left drag / Right or middle drag / Wheel", "orbit / pan / zoom; drag a light marker to move the light"},
@@ -88,6 +105,11 @@ std::string baseKeyName(int key) {
     case keys::Enter: return "Enter";
     case keys::KeypadEnter: return "Keypad Enter";
     case keys::Tab: return "Tab";
+    case keys::Space: return "Space";
+    case keys::PageUp: return "Page Up";
+    case keys::PageDown: return "Page Down";
+    case keys::Home: return "Home";
+    case keys::End: return "End";
     case keys::Left: return "Left";
     case keys::Right: return "Right";
     case keys::Up: return "Up";
@@ -117,13 +139,20 @@ const CommandRow& commandRow(Command command) {
     return kRows.front(); // unreachable: every command has a row (tested)
 }
 
-std::optional<Command> commandForKey(int key, unsigned modifiers, bool typing) {
+std::optional<Command> commandForKey(int key, unsigned modifiers, KeyOwner owner) {
     for (const CommandRow& row : kRows) {
-        if (row.key != 0 && row.key == key && row.modifiers == modifiers && (row.whileTyping || !typing)) {
-            return row.command;
+        if (row.key == 0 || row.key != key || row.modifiers != modifiers) {
+            continue;
         }
+        // A widget with the keyboard keeps the plain keys; a text field all but the whileTyping rows.
+        bool fires = owner == KeyOwner::Canvas || row.whileTyping || (owner == KeyOwner::Panel && (row.modifiers & kCtrl));
+        return fires ? std::optional<Command>(row.command) : std::nullopt;
     }
     return std::nullopt;
+}
+
+std::optional<Command> commandForKey(int key, unsigned modifiers, bool typing) {
+    return commandForKey(key, modifiers, typing ? KeyOwner::Typing : KeyOwner::Canvas);
 }
 
 std::string keyName(int key, unsigned modifiers) {
@@ -150,6 +179,9 @@ std::vector<HelpRow> helpRows() {
             }
         }
         rows.push_back(std::move(help));
+    }
+    for (const auto& [keysText, help] : kWindowKeyHelp) {
+        rows.push_back({keysText, help});
     }
     for (const auto& [keysText, help] : kPointerHelp) {
         rows.push_back({keysText, help});

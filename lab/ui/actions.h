@@ -18,12 +18,18 @@ namespace lab {
 
 // GLFW key codes; letters and digits are their upper-case ASCII codes.
 namespace keys {
-constexpr int Space = 32, Escape = 256, Enter = 257, Tab = 258, Right = 262, Left = 263, Down = 264, Up = 265;
+constexpr int Space = 32, Escape = 256, Enter = 257, Tab = 258, Backspace = 259, Insert = 260, Delete = 261;
+constexpr int Right = 262, Left = 263, Down = 264, Up = 265, PageUp = 266, PageDown = 267, Home = 268, End = 269;
 constexpr int F1 = 290, F11 = 300, F12 = 301, Equal = 61, Minus = 45, KeypadAdd = 334, KeypadSubtract = 333;
 constexpr int KeypadEnter = 335;
 constexpr int LeftShift = 340, LeftControl = 341, LeftAlt = 342, LeftSuper = 343;
 constexpr int RightShift = 344, RightControl = 345, RightAlt = 346, RightSuper = 347;
 } // namespace keys
+
+// Who a key press is for. The model (the canvas) has the keyboard unless a window's widget does:
+// then the plain keys (letters, digits, arrows, Space, Esc) are the widget's and only the rows with
+// Ctrl, or marked whileTyping, are shortcuts; while a text field has it, only the whileTyping rows.
+enum class KeyOwner { Canvas, Panel, Typing };
 
 // Modifier bits of a key press. No row uses Alt, so a press with Alt held runs no command.
 enum Modifier : unsigned { kNoModifier = 0, kCtrl = 1, kShift = 2, kAlt = 4 };
@@ -72,7 +78,9 @@ std::span<const CommandRow> commandTable();
 // The first row of `command`.
 const CommandRow& commandRow(Command command);
 
-// The command bound to a key press; while `typing`, only rows marked whileTyping.
+// The command bound to a key press for `owner` (see KeyOwner).
+std::optional<Command> commandForKey(int key, unsigned modifiers, KeyOwner owner);
+// ... the canvas's, or while `typing` only rows marked whileTyping.
 std::optional<Command> commandForKey(int key, unsigned modifiers, bool typing);
 
 // "Ctrl+Shift+Z", "F1", "Left".
@@ -84,7 +92,8 @@ struct HelpRow {
     std::string help;
 };
 
-// Every command with a help text (its bindings joined by " / "), then the mouse and drops.
+// Every command with a help text (its bindings joined by " / "), then the keys inside a window
+// (ImGui's keyboard navigation), then the mouse and drops.
 std::vector<HelpRow> helpRows();
 
 } // namespace lab

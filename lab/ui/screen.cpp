@@ -2,6 +2,7 @@
 #include "ui/screen.h"
 
 #include "ui/dialogs.h"
+#include "ui/keyboard.h"
 #include "ui/theme_style.h"
 #include "ui/widgets.h"
 
@@ -16,11 +17,9 @@ namespace lab::ui {
 
 namespace {
 
-// NoNavInputs: Tab is the lab's (it cycles the panels); without it ImGui 1.86 would take a Tab in a
-// focused window to activate its next field, and the next Tab would go to that field.
+// Keyboard navigation is on (ui/keyboard.h says when the keys are a window's rather than the model's).
 constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
-                                    ImGuiWindowFlags_NoNavInputs;
+                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
 
 void beginFixed(const char* title, const Rect& r, ImGuiWindowFlags extra = 0) {
     ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
@@ -161,6 +160,7 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     m.captions.wipeDragged = m.viewportControls->drag == ViewportControls::Drag::Wipe;
     lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewportControls->light, m.lightShapes);
     captionStrips(m.captions, layout);
+    markKeyboardFocus();
     events.gesture = ImGui::IsAnyItemActive() || events.viewport.gesture;
     events.dragging = events.gesture && ImGui::IsAnyMouseDown();
     return events;

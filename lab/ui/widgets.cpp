@@ -3,10 +3,14 @@
 
 #include "core/scene/limits.h"
 
+#include "ui/tooltip.h"
+
 #include <glm/common.hpp>
+#include <imgui_internal.h> // a help marker: an item over its text (ItemAdd, ButtonBehavior)
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace lab::ui {
@@ -62,13 +66,47 @@ bool commandButton(Command command, std::vector<Request>& requests, bool enabled
     ImGui::BeginDisabled(!enabled);
     bool clicked = ImGui::Button(row.label);
     ImGui::EndDisabled();
-    if (row.key != 0 && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-        ImGui::SetTooltip("%s", keyName(row.key, row.modifiers).c_str());
+    if (row.key != 0) {
+        itemTooltip(keyName(row.key, row.modifiers).c_str());
     }
     if (clicked) {
         requests.push_back({command});
     }
     return clicked;
+}
+
+bool sliderPageKeys(float& value, float min, float max, bool logarithmic) {
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    const ImGuiID id = g.LastItemData.ID;
+    if (g.ActiveId != id || id == 0 || g.ActiveIdSource != ImGuiInputSource_Nav || ImGui::TempInputIsActive(id) ||
+        !(min < max)) {
+        return false;
+    }
+    // The slider reads these keys while it is active, so ImGui's navigation does not page away from it.
+    const ImGuiKey claimed[] = {ImGuiKey_PageUp, ImGuiKey_PageDown, ImGuiKey_Home, ImGuiKey_End};
+    for (ImGuiKey k : claimed) {
+        g.ActiveIdUsingKeyInputMask |= ImU64(1) << k;
+    }
+    auto pressed = [](ImGuiKey k) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(k)); };
+    float to = value;
+    if (pressed(ImGuiKey_Home)) {
+        to = min;
+    } else if (pressed(ImGuiKey_End)) {
+        to = max;
+    } else if (int step = int(pressed(ImGuiKey_PageUp)) - int(pressed(ImGuiKey_PageDown)); step != 0) {
+        if (logarithmic && min > 0.0f) { // a tenth of the slider's length, as the grab moves
+            double t = std::log(std::max(value, min) / min) / std::log(max / min) + 0.1 * step;
+            to = static_cast<float>(min * std::pow(double(max) / min, std::clamp(t, 0.0, 1.0)));
+        } else {
+            to = std::clamp(value + 0.1f * static_cast<float>(step) * (max - min), min, max);
+        }
+    }
+    if (to == value) {
+        return false;
+    }
+    value = to;
+    ImGui::MarkItemEdited(id);
+    return true;
 }
 
 void disabledWrapped(const char* text) {
@@ -80,25 +118,25 @@ void disabledWrapped(const char* text) {
 void helpMarker(const char* text) {
     sameLineIfFits(ImGui::CalcTextSize("(?)").x);
     ImGui::TextDisabled("(?)");
-    // Hovered with a mouse; tapped with a finger (which leaves no hovering cursor): a popup that
-    // stays until the next tap.
+    // The marker is a widget of its own over its text, so the keyboard reaches it (its tooltip shows
+    // while it has the ring) as the pointer does. A tap (a finger leaves no hovering cursor), a click
+    // or Space opens the text as a popup that stays until the next tap or Esc.
     ImGui::PushID(text);
-    if (ImGui::IsItemClicked()) {
+    const ImRect bb(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+    const ImGuiID id = ImGui::GetID("(?)");
+    ImGui::ItemAdd(bb, id);
+    bool hovered = false, held = false;
+    if (ImGui::ButtonBehavior(bb, id, &hovered, &held)) {
         ImGui::OpenPopup("help");
     }
-    bool popup = ImGui::BeginPopup("help");
-    if (popup || ImGui::IsItemHovered()) {
-        if (!popup) {
-            ImGui::BeginTooltip();
-        }
+    ImGui::RenderNavHighlight(bb, id);
+    if (ImGui::BeginPopup("help")) {
         ImGui::PushTextWrapPos(std::min(ImGui::GetFontSize() * 30.0f, ImGui::GetIO().DisplaySize.x * 0.8f));
         ImGui::TextUnformatted(text);
         ImGui::PopTextWrapPos();
-        if (popup) {
-            ImGui::EndPopup();
-        } else {
-            ImGui::EndTooltip();
-        }
+        ImGui::EndPopup();
+    } else {
+        itemTooltip(text);
     }
     ImGui::PopID();
 }

@@ -5,6 +5,7 @@
 
 #include "core/scene/limits.h"
 #include "ui/actions.h"
+#include "ui/tooltip.h"
 #include "ui/widget_map.h"
 
 #include <glm/vec3.hpp>
@@ -21,6 +22,9 @@ bool limitedColorEdit(const char* label, glm::vec3& value, const limits::Range& 
 // A vec3 dragged in `speed` steps, optionally clamped.
 bool dragVec3(const char* label, glm::vec3& value, float speed, float min = 0.0f, float max = 0.0f,
               const char* format = "%.3f");
+// After a SliderFloat that the keyboard is changing (Space on it, ui/keyboard.h): Page Up / Page Down
+// move it a tenth of its length, Home / End to its ends (ImGui 1.86 has only the arrows). True if changed.
+bool sliderPageKeys(float& value, float min, float max, bool logarithmic);
 // A button for `command`, labelled from the command table (with its shortcut in the tooltip);
 // a click appends the command to `requests`. Disabled (greyed) when `enabled` is false.
 bool commandButton(Command command, std::vector<Request>& requests, bool enabled = true);
@@ -35,7 +39,8 @@ void sameLineIfFits(const char* buttonLabel);
 void sameLineIfFitsRadio(const char* label);
 // Greyed text wrapped at the window's edge (a phone's panel is narrow).
 void disabledWrapped(const char* text);
-// A "(?)" marker with a tooltip.
+// A "(?)" marker with a tooltip (ui/tooltip.h), reachable by the keyboard; a tap, a click or Space
+// opens it as a popup that stays.
 void helpMarker(const char* text);
 
 // Before Begin() of a tool window (shader editor, sweep): `columns` × `lines` text lines where

@@ -73,12 +73,12 @@ TEST(GuiFit, TheWindowAndEveryPlotFitTheScreenNormalAndInPresenterMode) {
     }
     lab.settle();
     expectEverythingFits(lab, screenW, screenH, "presenter 2.5x");
-    // Tab cycles all / plots and model / model only; presenter mode may have hidden the panel.
+    // H cycles all / plots and model / model only; presenter mode may have hidden the panel.
     for (int i = 0; i < 3 && !(lab.has("panel") && lab.has("plots")); ++i) {
-        lab.press("Tab");
+        lab.press("h");
         lab.settle();
     }
-    ASSERT_TRUE(lab.has("panel") && lab.has("plots")) << "Tab should bring every panel back";
+    ASSERT_TRUE(lab.has("panel") && lab.has("plots")) << "H should bring every panel back";
     expectEverythingFits(lab, screenW, screenH, "presenter 2.5x, all panels");
 }
 

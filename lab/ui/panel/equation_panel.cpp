@@ -41,9 +41,7 @@ void factor(const char* label, ViewMode mode, const Preset& preset, DisplaySetti
         ImGui::PopStyleColor(2);
     }
     mark(std::string("equation.") + viewName(mode));
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-        ImGui::SetTooltip("%s", why.empty() ? toString(mode) : why.c_str());
-    }
+    itemTooltip(why.empty() ? toString(mode) : why.c_str());
 }
 
 void lightChoice(const Preset& preset, DisplaySettings& view) {

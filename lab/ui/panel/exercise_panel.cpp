@@ -33,9 +33,7 @@ bool FieldGate::field(const std::string& path) const {
                 open.erase(at);
             }
         }
-        if (ImGui::IsItemHovered()) {
-            ImGui::SetTooltip("Students may change %s", path.c_str());
-        }
+        itemTooltip(("Students may change " + path).c_str());
         mark("open." + path);
         ImGui::PopID();
         ImGui::SameLine();

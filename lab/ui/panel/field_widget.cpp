@@ -59,6 +59,7 @@ bool numbersWidget(const FieldRow& row, Preset& preset, LightDesc* light, const 
         float& value = fieldValue<float>(row, preset, light);
         ImGuiSliderFlags flags = (row.style & kStyleLogarithmic) ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
         bool changed = ImGui::SliderFloat(id.c_str(), &value, r.sliderMin, r.sliderMax, row.format, flags);
+        changed = sliderPageKeys(value, r.sliderMin, r.sliderMax, row.style & kStyleLogarithmic) || changed;
         value = limits::clamp(r, value); // typed values too (Ctrl+click)
         return changed;
     }

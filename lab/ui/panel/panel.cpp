@@ -124,7 +124,7 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
         ImGui::EndListBox();
     }
     mark("presets.list");
-    ImGui::TextDisabled("Left/Right: previous/next preset");
+    ImGui::TextDisabled("Left/Right on the model: previous/next preset");
     if (info.exerciseFiles && !info.exerciseFiles->empty()) {
         exerciseList(*info.exerciseFiles, requests);
     }

@@ -516,8 +516,8 @@ void options(PlotSettings& s) {
     }
     const char* const* labels = width <= ImGui::GetContentRegionAvail().x ? full : brief;
     auto tip = [&](const char* text) {
-        if (labels == brief && ImGui::IsItemHovered()) {
-            ImGui::SetTooltip("%s", text);
+        if (labels == brief) {
+            itemTooltip(text);
         }
     };
     int scale = s.scale == RadialScale::Linear ? 0 : 1;
@@ -536,11 +536,9 @@ void options(PlotSettings& s) {
     sameLineIfFits(checkWidth(labels[3]));
     ImGui::Checkbox(labels[3], &s.lockScale);
     mark("plot.lock");
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("Off: the outer ring is the largest total in the plot, and follows every change.\n"
-                          "On: the outer ring keeps its value, so a change (another BRDF, a shininess)\n"
-                          "shows its real size; lobes beyond it are cut at the ring.");
-    }
+    itemTooltip("Off: the outer ring is the largest total in the plot, and follows every change. "
+                "On: the outer ring keeps its value, so a change (another BRDF, a shininess) "
+                "shows its real size; lobes beyond it are cut at the ring.");
 }
 
 } // namespace

@@ -87,9 +87,7 @@ void probeSliders(const ProbeLobe& at, float field) {
     ImGui::SliderFloat("V##viewer", &viewer, -180.0f, 180.0f, unit.c_str());
     mark("plot.viewer");
     ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-        ImGui::SetTooltip("The probed point's angles (plots at the probe): move the probe's marker to change them.");
-    }
+    itemTooltip("The probed point's angles (plots at the probe): move the probe's marker to change them.");
 }
 
 } // namespace lab::ui

@@ -16,14 +16,24 @@ void helpWindow(bool& open) {
     ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowBgAlpha(0.92f);
+    // Never taller than the screen (a projector's 768 lines): the rows scroll instead.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(io.DisplaySize.x, io.DisplaySize.y * 0.95f));
     if (ImGui::Begin("Keyboard shortcuts (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+        ImGui::TextUnformatted("Letters, digits and the arrows act on the model. Tab or Enter takes the keyboard into the panel (a ring "
+                               "marks the widget that has it); Esc or a click gives it back.\nWhile a field is being typed "
+                               "in, only the function keys and the Ctrl shortcuts that do not edit text work.");
         if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-            for (const HelpRow& row : helpRows()) {
+            const std::vector<HelpRow> rows = helpRows();
+            for (std::size_t i = 0; i < rows.size(); ++i) {
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(row.keys.c_str());
+                // A row the keyboard can stop at (Tab into this window, then Down), so it reads and
+                // scrolls the list without a mouse.
+                ImGui::PushID(static_cast<int>(i));
+                ImGui::Selectable(rows[i].keys.c_str(), false, ImGuiSelectableFlags_SpanAllColumns);
+                ImGui::PopID();
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(row.help.c_str());
+                ImGui::TextUnformatted(rows[i].help.c_str());
             }
             ImGui::EndTable();
         }
@@ -42,11 +52,9 @@ void rgb(const char* name, const glm::vec3& v) { ImGui::Text("%-18s %.4f  %.4f  
 void plotsHere(const Preset& preset, DisplaySettings& view) {
     ImGui::Checkbox("plots at this point", &view.plotsAtProbe);
     mark("probe.plots-here");
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("The plots use this point: its angle of incidence (from N and L), the light that\n"
-                          "arrives here (colour x Att x spot) and its V, and a small lobe is drawn on the\n"
-                          "model. Drag the marker to move the point. The preset's plot settings stay.");
-    }
+    itemTooltip("The plots use this point: its angle of incidence (from N and L), the light that "
+                "arrives here (colour x Att x spot) and its V, and a small lobe is drawn on the "
+                "model. Drag the marker to move the point. The preset's plot settings stay.");
     if (!view.plotsAtProbe) {
         return;
     }
