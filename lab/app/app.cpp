@@ -2,6 +2,7 @@
 #include "app/app.h"
 
 #include "app/exercise_score.h"
+#include "app/shader_compile.h"
 #include "app/share_code.h"
 #include "app/figure_export.h"
 #include "app/frame_speed.h"
@@ -120,19 +121,11 @@ struct App::Impl {
 
     ui::ScreenModel screenModel();
     PageFacts pageTools() { return openTools(shaderEditor, sweep); }
-    // The page's focused control: its widget gets the focus ring, on the compact layout's tab that has it.
-    void focusPage(const std::optional<std::string>& path) {
-        if (path && ui::widgets().focus(*path) && !path->empty()) {
-            std::optional<ui::PanelTab> tab = panelTabOf(*path, panel.selectedLight);
-            panel.tab = tab.value_or(panel.tab);
-        }
-    }
     void carryOut(const FrameInput& in, const ui::ScreenEvents& events);
     void carryOut(const Request& request);
-    void compileShaders(bool builtin);
     void probeAt(const ui::ViewportEvents& viewport);
     void collectMessages(float deltaTime);
-    FrameOutput output(bool touch);
+    FrameOutput output(bool touch, const ui::ScreenModel& drawn, bool orbiting);
     void drawViewports(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy);
     bool updateViewports(const ui::Layout& layout, const FrameInput& in, float scale);
     std::vector<std::pair<const CachedViewport*, Viewport>> shown; // this frame's renders and where they go
@@ -260,10 +253,10 @@ void App::Impl::carryOut(const Request& r) {
     case Command::ToggleShaderEditor: shaderEditor.open = !shaderEditor.open; break;
     case Command::CompileShaders:
         if (shaderEditor.open) {
-            compileShaders(false);
+            compileShaders(renderer, shaderEditor, false);
         }
         break;
-    case Command::RevertShaders: compileShaders(true); break;
+    case Command::RevertShaders: compileShaders(renderer, shaderEditor, true); break;
     case Command::ToggleSweep: sweep.open = !sweep.open; break;
     case Command::SaveSweep:
         if (sweepImage.image()) {
@@ -271,30 +264,6 @@ void App::Impl::carryOut(const Request& r) {
         }
         break;
     default: workspace.run(r); break;
-    }
-}
-
-void App::Impl::compileShaders(bool builtin) {
-    StageSources sources = builtin ? builtinStageSources()
-                                   : StageSources{shaderEditor.vertex, shaderEditor.fragment, shaderEditor.lighting};
-    Diagnostics d;
-    shaderEditor.log.clear();
-    shaderEditor.lastCompileFailed = !renderer.setStageSources(sources, d);
-    if (shaderEditor.lastCompileFailed) {
-        shaderEditor.log.push_back("Compile failed; the previous shaders keep running:");
-        for (const Diagnostic& x : d) {
-            shaderEditor.log.push_back(x.str());
-        }
-        return;
-    }
-    shaderEditor.customActive = !builtin;
-    // The plots and the probe evaluate the C++ build of the built-in lighting.glsl.
-    shaderEditor.customLighting = sources.lighting != shaderSource("lighting.glsl");
-    shaderEditor.log.push_back(builtin ? "Built-in shaders restored." : "Compiled: the edited shaders are running.");
-    if (builtin) {
-        shaderEditor.vertex = sources.vertex;
-        shaderEditor.fragment = sources.fragment;
-        shaderEditor.lighting = sources.lighting;
     }
 }
 
@@ -511,11 +480,8 @@ FrameOutput App::frame(const FrameInput& in) {
         ws.start(fs::current_path(), m.options.preset); // the first preset opens in the first frame
         m.started = true;
     }
-    std::vector<Request> pageRequests; // the page's controls go first: this frame's panel shows their values
-    if (std::string refused = applyPageEdits(ws, in.pageEdits, m.pageTools(), pageRequests); !refused.empty()) {
-        ws.note(refused);
-    }
-    m.focusPage(in.pageFocus);
+    // The page's controls go first: this frame's panel shows their values.
+    std::vector<Request> pageRequests = takePageInput(ws, in.pageEdits, in.pageFocus, m.pageTools(), m.panel);
     ui::ScreenModel model = m.screenModel();
     ui::placeText(layout, m.steadyCaption(ui::measureText(model.captions, layout.view), layout.view)); // beside the model, never over it
     model.clicks = clicksOf(in.events, m.pressed);
@@ -569,22 +535,15 @@ FrameOutput App::frame(const FrameInput& in) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }
 
-    FrameOutput out = m.output(in.touch);
+    FrameOutput out = m.output(in.touch, model, orbiting);
     out.typing = events.typing;
     out.viewportScale = scale;
     out.redrawIn = redrawIn;
-    if (m.options.describePage) {
-        PageFacts tools = m.pageTools();
-        out.page = m.page.json(ws, {ws.exercise() ? &m.exerciseView : nullptr, m.toastLeft > 0.0f ? m.toast : "",
-                                    out.problem, probeWords(m.probe.shown() ? m.probe.result() : nullptr),
-                                    legendWords(model.captions.legend), orbiting,
-                                    model.shareCode ? model.shareCode->link : "", tools.shader, tools.sweep});
-    }
     return out;
 }
 
 // What the frame hands the platform: the window's title, the scene's link, files, requests.
-FrameOutput App::Impl::output(bool touch) {
+FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool orbiting) {
     FrameOutput out;
     out.quit = workspace.quit();
     out.link = workspace.link();
@@ -600,6 +559,13 @@ FrameOutput App::Impl::output(bool touch) {
     out.pickFile = std::exchange(pickFile, false);
     out.copyLink = std::exchange(copyLink, false);
     out.viewportDrawn = viewportDrawn;
+    if (options.describePage) {
+        PageFacts tools = pageTools();
+        out.page = page.json(workspace, {workspace.exercise() ? &exerciseView : nullptr, toastLeft > 0.0f ? toast : "",
+                                         out.problem, probeWords(probe.shown() ? probe.result() : nullptr),
+                                         legendWords(drawn.captions.legend), orbiting,
+                                         drawn.shareCode ? drawn.shareCode->link : "", tools.shader, tools.sweep});
+    }
     return out;
 }
 

@@ -7,6 +7,7 @@
 #include "core/scene/field_edit.h"
 #include "core/scene/field_path.h"
 #include "core/scene/field_table.h"
+#include "ui/widget_map.h"
 
 #include "core/io/safe_text.h"
 
@@ -408,6 +409,18 @@ std::string applyPageEdits(Workspace& ws, const std::vector<PageEdit>& edits, co
         }
     }
     return problems;
+}
+
+std::vector<Request> takePageInput(Workspace& ws, const std::vector<PageEdit>& edits,
+                                   const std::optional<std::string>& focus, const PageFacts& tools, ui::PanelState& panel) {
+    std::vector<Request> requests;
+    if (std::string refused = applyPageEdits(ws, edits, tools, requests); !refused.empty()) {
+        ws.note(refused);
+    }
+    if (focus && ui::widgets().focus(*focus) && !focus->empty()) {
+        panel.tab = panelTabOf(*focus, panel.selectedLight).value_or(panel.tab);
+    }
+    return requests;
 }
 
 std::optional<ui::PanelTab> panelTabOf(const std::string& path, int& selectedLight) {

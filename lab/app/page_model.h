@@ -15,6 +15,7 @@
 #include "core/lighting/probe.h"
 #include "ui/layout.h"
 #include "ui/panel/exercise_panel.h"
+#include "ui/panel/panel.h"
 #include "ui/tools/shader_editor.h"
 #include "ui/tools/sweep_view.h"
 
@@ -66,6 +67,12 @@ std::string applyPageEdits(Workspace& workspace, const std::vector<PageEdit>& ed
 
 // The facts of the tool windows that are open (the rest empty).
 PageFacts openTools(ui::ShaderEditorState& shader, ui::SweepViewState& sweep);
+
+// The page's input for this frame: its field edits carried out (applyPageEdits; what is refused
+// becomes the workspace's note), its focused control ringed on the canvas (on the compact layout's tab
+// that has it); returns its commands.
+std::vector<Request> takePageInput(Workspace& workspace, const std::vector<PageEdit>& edits,
+                                   const std::optional<std::string>& focus, const PageFacts& tools, ui::PanelState& panel);
 
 // The tool window's text field at `path` ("shader.lighting", "sweep.key0", "sweep.val1") while it is open, else nullptr.
 std::string* toolField(const std::string& path, const PageFacts& tools);
