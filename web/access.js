@@ -107,6 +107,7 @@
     const label = b.label + (b.keys ? ' (' + b.keys + ')' : '');
     return el('button', { type: 'button', 'data-key': 'command-' + b.command + '-' + (b.index ?? -1),
       'aria-current': b.current ? 'true' : null, 'aria-keyshortcuts': b.keys ? b.keys.replace(/\s/g, '') : null,
+      'aria-pressed': b.pressed === undefined ? null : String(b.pressed),
       text: b.label, 'aria-label': b.keys ? label : null, onclick: () => command(b) });
   }
 
@@ -123,6 +124,15 @@
     if (s.log) box.append(el('pre', { class: 'log', role: 'status', text: s.log }));
     if (s.link) box.append(el('p', {}, 'The QR code opens ', el('a', { href: s.link, text: s.link })));
     return box;
+  }
+
+  // The page's theme: the lab's two, chosen here as in the lab's panel (and remembered as a choice).
+  function themeControl() {
+    const select = el('select', { id: 'lab-theme', 'data-key': 'theme', onchange: (e) => {
+      labThemeChosen(e.target.value);
+      Module.ccall('lab_set_theme', null, ['string'], [e.target.value]);
+    } }, el('option', { value: 'dark', text: 'dark' }), el('option', { value: 'light', text: 'light (a projector in a lit room)' }));
+    return el('div', { class: 'row', 'data-key': 'theme' }, el('label', { for: 'lab-theme', text: 'Theme' }), select);
   }
 
   // The compact layout's tabs as a tablist: arrows move between tabs, Tab into the chosen one.
@@ -166,6 +176,7 @@
         'aria-controls': 'panel-' + t.id, text: t.label, onclick: () => selectTab(t.id, true) }));
       const panel = el('div', { role: 'tabpanel', id: 'panel-' + t.id, 'data-tab': t.id, 'aria-labelledby': 'tab-' + t.id });
       for (const s of m.sections.filter((s) => s.tab === t.id)) panel.append(section(s));
+    if (t.id === 'model') panel.append(themeControl());
       panels.append(panel);
     }
     selectTab(m.tabs.some((t) => t.id === chosenTab) ? chosenTab : m.tabs[0].id, false);
@@ -192,7 +203,8 @@
       }
       for (const b of s.buttons) {
         const e = root.querySelector(`[data-key="command-${b.command}-${b.index ?? -1}"]`);
-        if (e) e.setAttribute('aria-current', b.current ? 'true' : 'false');
+        if (e && b.index !== undefined) e.setAttribute('aria-current', b.current ? 'true' : 'false');
+        if (e && b.pressed !== undefined) e.setAttribute('aria-pressed', String(b.pressed));
       }
     }
   }
@@ -239,6 +251,9 @@
       if (score.textContent !== text) score.textContent = text;
     }
     document.getElementById('lab-document').textContent = m.title;
+    document.documentElement.dataset.theme = m.theme;
+    const theme = document.getElementById('lab-theme');
+    if (theme && theme !== document.activeElement) theme.value = m.theme;
     messages(m);
     // The pictures' words once a change has settled (a second without one), not every frame.
     const p = JSON.stringify(m.pictures);

@@ -125,7 +125,7 @@ struct App::Impl {
     void carryOut(const Request& request);
     void probeAt(const ui::ViewportEvents& viewport);
     void collectMessages(float deltaTime);
-    FrameOutput output(bool touch, const ui::ScreenModel& drawn, bool orbiting);
+    FrameOutput output(bool touch, const ui::ScreenModel& drawn);
     void drawViewports(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy);
     bool updateViewports(const ui::Layout& layout, const FrameInput& in, float scale);
     std::vector<std::pair<const CachedViewport*, Viewport>> shown; // this frame's renders and where they go
@@ -535,7 +535,7 @@ FrameOutput App::frame(const FrameInput& in) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }
 
-    FrameOutput out = m.output(in.touch, model, orbiting);
+    FrameOutput out = m.output(in.touch, model);
     out.typing = events.typing;
     out.viewportScale = scale;
     out.redrawIn = redrawIn;
@@ -543,7 +543,7 @@ FrameOutput App::frame(const FrameInput& in) {
 }
 
 // What the frame hands the platform: the window's title, the scene's link, files, requests.
-FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool orbiting) {
+FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn) {
     FrameOutput out;
     out.quit = workspace.quit();
     out.link = workspace.link();
@@ -563,7 +563,7 @@ FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool orb
         PageFacts tools = pageTools();
         out.page = page.json(workspace, {workspace.exercise() ? &exerciseView : nullptr, toastLeft > 0.0f ? toast : "",
                                          out.problem, probeWords(probe.shown() ? probe.result() : nullptr),
-                                         legendWords(drawn.captions.legend), orbiting,
+                                         legendWords(drawn.captions.legend), out.movingLights, toString(theme),
                                          drawn.shareCode ? drawn.shareCode->link : "", tools.shader, tools.sweep});
     }
     return out;

@@ -191,7 +191,10 @@ int controls(Writer& w, FieldGroup group, Preset& p, LightDesc* light, int light
     return count;
 }
 
-void button(Writer& w, Command command, int index = -1, std::string_view label = {}, bool current = false) {
+// A command's button; `index` its argument (a list's entry, `current` when it is the one shown);
+// `pressed` 0 or 1 for a toggle's state, -1 for none.
+void button(Writer& w, Command command, int index = -1, std::string_view label = {}, bool current = false,
+            int pressed = -1) {
     const CommandRow& row = commandRow(command);
     w.open('{').key("command").num(static_cast<int>(command)).key("label").str(label.empty() ? row.label : label);
     if (row.key) {
@@ -199,6 +202,9 @@ void button(Writer& w, Command command, int index = -1, std::string_view label =
     }
     if (index >= 0) {
         w.key("index").num(index).key("current").flag(current);
+    }
+    if (pressed >= 0) {
+        w.key("pressed").flag(pressed == 1);
     }
     w.close('}');
 }
@@ -215,7 +221,7 @@ void sectionStart(Writer& w, std::string_view id, std::string_view label, std::s
     w.open('{').key("id").str(id).key("label").str(label).key("tab").str(tab);
 }
 
-void fileSections(Writer& w, Workspace& ws, const ui::ExercisePanelModel* exercise) {
+void fileSections(Writer& w, Workspace& ws, const ui::ExercisePanelModel* exercise, MovingLights motion) {
     sectionStart(w, "file", "File", "model");
     w.key("controls").open('[').close(']');
     if (exercise) { // an exercise is not made from an exercise
@@ -238,10 +244,16 @@ void fileSections(Writer& w, Workspace& ws, const ui::ExercisePanelModel* exerci
     w.close(']').close('}');
     sectionStart(w, "view", "View", "model");
     w.key("controls").open('[').close(']');
-    buttons(w, {Command::OrbitLeft, Command::OrbitRight, Command::OrbitUp, Command::OrbitDown, Command::ZoomIn,
-                Command::ZoomOut, Command::FrameModel, Command::ResetCamera, Command::NextViewMode, Command::ToggleCompare,
-                Command::ToggleWireframe});
-    w.close('}');
+    w.key("buttons").open('[');
+    for (Command c : {Command::OrbitLeft, Command::OrbitRight, Command::OrbitUp, Command::OrbitDown, Command::ZoomIn,
+                      Command::ZoomOut, Command::FrameModel, Command::ResetCamera, Command::NextViewMode,
+                      Command::ToggleCompare, Command::ToggleWireframe}) {
+        button(w, c);
+    }
+    if (motion != MovingLights::None) { // a toggle button, pressed while the moving lights stand still
+        button(w, Command::ToggleLightMotion, -1, {}, false, motion == MovingLights::Paused ? 1 : 0);
+    }
+    w.close(']').close('}');
 }
 
 void fieldSections(Writer& w, Preset& p, const ui::ExercisePanelModel* exercise) {
@@ -348,7 +360,7 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
         w.open('{').key("id").str(tab[0]).key("label").str(tab[1]).close('}');
     }
     w.close(']').key("sections").open('[');
-    fileSections(w, ws, facts.exercise);
+    fileSections(w, ws, facts.exercise, facts.motion);
     fieldSections(w, ws.edited(), facts.exercise);
     toolSections(w, facts);
     w.close(']');
@@ -362,7 +374,7 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
         w.close('}');
     }
     w.key("readouts").open('{').key("probe").str(facts.probe).key("legend").str(facts.legend);
-    w.key("orbiting").flag(facts.orbiting).close('}');
+    w.close('}').key("theme").str(facts.theme);
     w.key("messages").open('{').key("toast").str(facts.toast).key("problem").str(facts.problem).close('}');
     if (!described_ || *described_ != ws.a()) {
         described_ = ws.a();

@@ -11,6 +11,7 @@
 // panel's (one undo step a change). No ImGui, no GL, no browser: JSON text in, JSON text out.
 #pragma once
 
+#include "app/orbit_clock.h"
 #include "app/workspace.h"
 #include "core/lighting/probe.h"
 #include "ui/layout.h"
@@ -32,7 +33,8 @@ struct PageFacts {
     std::string problem; // the error dialog's text while it is shown
     std::string probe;   // the pixel probe's readout, "" when none
     std::string legend;  // the factor view's legend, "" when the lit model is shown
-    bool orbiting = false; // a light moves by itself (the Pause button's text)
+    MovingLights motion = MovingLights::None; // a light moves by itself: the Pause button, pressed while paused
+    std::string_view theme = "dark";           // the theme in use (the page's own colours follow it)
     std::string shareLink; // the QR code's link while it is shown
     // The tool windows while they are open: the page offers their fields too (and sets them).
     ui::ShaderEditorState* shader = nullptr;

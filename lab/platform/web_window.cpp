@@ -31,6 +31,7 @@
 
 #include "app/frame_pacer.h"
 #include "app/touch.h"
+#include "core/plots/theme.h"
 #include "core/share/share_link.h" // kMaxLinkChars
 #include "platform/imgui_glfw.h"
 #include "platform/imgui_host.h"
@@ -392,6 +393,14 @@ EMSCRIPTEN_KEEPALIVE void lab_page_focus(const char* path) {
         gState->changed = true;
     }
 }
+// The page's theme: the system's while the visitor has not chosen one, or the page's own control
+// ("dark", "light"); as the panel's choice, but not remembered as one by the lab.
+EMSCRIPTEN_KEEPALIVE void lab_set_theme(const char* name) {
+    if (std::optional<Theme> theme = themeFrom(name); gState && theme) {
+        gState->app.setTheme(*theme);
+        gState->changed = true;
+    }
+}
 // For browser tests: the frames drawn so far (an idle page draws none).
 EMSCRIPTEN_KEEPALIVE int lab_frames() { return gState ? gState->frames : 0; }
 // For browser tests: 1 when the lab has handled everything it was given and owes no frame.
@@ -431,6 +440,7 @@ WindowResult runLab(const AppOptions& options, const WindowOptions&, std::string
     if (!s->host.start(s->app, error)) {
         return WindowResult::Failed;
     }
+    s->host.setTabEntersWindows(false); // Tab leaves the canvas for the page's controls (web/access.js)
     labJsMark("started");
     int saved = 0;
     char* link = labJsInitialLink(static_cast<int>(kMaxLinkChars), &saved);

@@ -26,10 +26,10 @@ async function openLab(fragment = '', options = {}) {
   return lab;
 }
 
-// Tab cycles the panels (all, plots and model, model only): twice leaves the view alone on the canvas.
+// H cycles the panels (all, plots and model, model only): twice leaves the view alone on the canvas.
 async function hidePanels(page) {
-  await press(page, 'Tab');
-  await press(page, 'Tab');
+  await press(page, 'h');
+  await press(page, 'h');
 }
 
 
