@@ -1,6 +1,12 @@
 // access.test.mjs — the page for every student (issue 38): the parallel DOM that screen readers
 // read and the keyboard drives (web/access.js, app/page_model.h), checked through the accessibility
 // tree (Playwright's role queries, the DevTools protocol's Accessibility.getFullAXTree) and by
+// The page's tab `name` chosen with the keyboard (the controls of the other tabs are hidden, as on the phone).
+async function openTab(page, name) {
+  await page.getByRole('tab', { name }).focus();
+  await page.keyboard.press('Enter');
+}
+
 // axe-core's WCAG 2.1 A and AA rules.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -62,18 +68,24 @@ test('every field the panel shows has its native control, with the range, step, 
   }
   // The accessibility tree (what a screen reader gets): every control has a name, every slider and
   // spin button its value.
+  // One tab at a time, as a screen reader meets them.
   const cdp = await context.newCDPSession(page);
-  const { nodes } = await cdp.send('Accessibility.getFullAXTree');
-  const controls = nodes.filter((n) => !n.ignored && ['slider', 'spinbutton', 'combobox', 'checkbox', 'radio', 'button', 'tab'].includes(n.role?.value));
-  assert.ok(controls.length > 60, `controls in the accessibility tree: ${controls.length}`);
+  const controls = [];
+  for (const tab of ['Model', 'Material', 'Lights', 'Plots']) {
+    await openTab(page, tab);
+    const { nodes } = await cdp.send('Accessibility.getFullAXTree');
+    controls.push(...nodes.filter((n) => !n.ignored &&
+      ['slider', 'spinbutton', 'combobox', 'checkbox', 'radio', 'button', 'textbox'].includes(n.role?.value)));
+  }
+  assert.ok(controls.length > 100, `controls in the accessibility tree: ${controls.length}`);
   for (const n of controls) {
     assert.ok(n.name?.value, `a ${n.role.value} without a name`);
     if (n.role.value === 'slider' || n.role.value === 'spinbutton') {
       assert.ok(n.value?.value !== undefined && n.value.value !== '', `${n.name.value}: no value in the tree`);
     }
   }
-  assert.ok(controls.some((n) => n.role.value === 'slider' && /degrees/.test(JSON.stringify(n.properties))),
-    'a slider in degrees says so in its value text');
+  // A slider's value text says its unit (Chromium's tree reports the number; its label names the unit too).
+  assert.equal(await page.locator('#f-plot_incident_deg').getAttribute('aria-valuetext'), '45 degrees');
   assert.deepEqual(problems, []);
   await context.close();
 });
@@ -127,8 +139,7 @@ test('keys typed into the page\'s controls fire no shortcut; the camera buttons 
   assert.equal(value('material.shininess'), 1, 'the typed value was taken when the focus left');
   // Orbit and zoom without a drag (WCAG 2.5.1): buttons, by keyboard.
   const before = await viewPixels(page);
-  await page.getByRole('tab', { name: 'Model' }).focus();
-  await page.keyboard.press('Enter');
+  await openTab(page, 'Model');
   const orbit = page.getByRole('button', { name: 'Orbit left' });
   await orbit.focus();
   await page.keyboard.press('Enter');
@@ -146,6 +157,7 @@ for (const [name, fragment, options] of [
   ['the default scene', '', {}],
   ['an exercise', '#exercise=02-shininess', {}],
   ['the phone layout', '', { width: 390, height: 844, touch: true, scale: 3 }],
+  ['the light theme', '', { media: { colorScheme: 'light' } }],
 ]) {
   test(`axe-core finds no WCAG 2.1 A or AA violation: ${name}`, async () => {
     const { page, context, problems } = await newLabPage(env.browser, env.base + fragment, options);
@@ -168,4 +180,43 @@ test('at 200% zoom (half the window at twice the pixels) and 320 CSS pixels wide
     assert.deepEqual(problems, []);
     await context.close();
   }
+});
+
+test('the page follows the system\'s light or dark setting until the visitor chooses a theme, then keeps the choice', async () => {
+  const { page, context, problems } = await newLabPage(env.browser, env.base, { media: { colorScheme: 'light' } });
+  const theme = () => page.evaluate(() => window.labPageModel.theme);
+  assert.equal(await theme(), 'light', 'a light system opens the light theme');
+  const panel = (await widgets(page)).panel;
+  const shot = PNG.sync.read(await page.screenshot({ clip: { x: panel.x + 4, y: panel.y + panel.h - 12, width: 4, height: 4 } }));
+  assert.ok(shot.data[0] > 200 && shot.data[1] > 200 && shot.data[2] > 200, `the panel is light: ${[...shot.data.slice(0, 3)]}`);
+  await page.emulateMedia({ colorScheme: 'dark' });
+  await page.waitForFunction(() => window.labPageModel.theme === 'dark');
+  // The visitor's choice, with the page's own control: kept over the system's from then on, and after a reload.
+  await openTab(page, 'Model');
+  await page.getByRole('combobox', { name: 'Theme' }).selectOption('light');
+  await page.waitForFunction(() => window.labPageModel.theme === 'light');
+  await page.emulateMedia({ colorScheme: 'dark' });
+  await page.reload();
+  await page.waitForFunction(() => window.labReady === true && window.labPageModel && window.labPageModel.theme === 'light');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('under prefers-reduced-motion a moving light opens paused, and its button starts it', async () => {
+  const { page, context, problems } = await newLabPage(env.browser, `${env.base}#preset=25-moving-light`,
+    { media: { reducedMotion: 'reduce' } });
+  await openTab(page, 'Model');
+  const pause = page.getByRole('button', { name: 'Pause moving lights' });
+  assert.equal(await pause.getAttribute('aria-pressed'), 'true', 'paused');
+  const before = await viewPixels(page);
+  await page.waitForTimeout(1000);
+  await settle(page);
+  assert.ok(compare(before, await viewPixels(page), { pixel: 8 }).failingShare < 0.0005, 'nothing moves');
+  await pause.focus();
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(() => document.querySelector('[aria-pressed]').getAttribute('aria-pressed') === 'false');
+  await frames(page, 30);
+  assert.ok(compare(before, await viewPixels(page), { pixel: 8 }).failingShare > 0.002, 'the light moves');
+  assert.deepEqual(problems, []);
+  await context.close();
 });

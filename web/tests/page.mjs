@@ -43,10 +43,12 @@ export function withBrowser(options) {
 
 // A fresh page (its own profile: no saved state) at `url` with the lab running, and what went
 // wrong on it. `touch`: a phone or tablet (touch screen, mobile viewport, coarse pointer);
-// `initScript`: run before the page's own scripts. `loadMs`: from the request to the lab running.
-export async function newLabPage(browser, url, { width = 1280, height = 760, scale = 1, touch = false, initScript } = {}) {
+// `initScript`: run before the page's own scripts; `media`: the system's settings the page sees
+// ({ colorScheme: 'light', reducedMotion: 'reduce' }). `loadMs`: from the request to the lab running.
+export async function newLabPage(browser, url, { width = 1280, height = 760, scale = 1, touch = false, initScript,
+  media = {} } = {}) {
   const context = await browser.newContext({ viewport: { width, height }, deviceScaleFactor: scale, acceptDownloads: true,
-    hasTouch: touch, isMobile: touch });
+    hasTouch: touch, isMobile: touch, colorScheme: 'dark', reducedMotion: 'no-preference', ...media });
   if (initScript) {
     await context.addInitScript(initScript);
   }
