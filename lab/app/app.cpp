@@ -81,7 +81,7 @@ struct App::Impl {
 
     // Exercises: the live score, what the panel shows of the exercise and of a draft (app/exercise_score.h).
     ExerciseScorer scorer;
-    PageModel page; // the browser page's parallel DOM (AppOptions::describePage)
+    PageModel page; // the browser page's parallel DOM (FrameInput::describePage)
     ui::ExercisePanelModel exerciseView;
     ui::DraftPanelModel draftView;
     ShareCode shareCode; // the scene's link as a QR code (Q)
@@ -125,7 +125,7 @@ struct App::Impl {
     void carryOut(const Request& request);
     void probeAt(const ui::ViewportEvents& viewport);
     void collectMessages(float deltaTime);
-    FrameOutput output(bool touch, const ui::ScreenModel& drawn);
+    FrameOutput output(bool touch, const ui::ScreenModel& drawn, bool describe);
     void drawViewports(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy);
     bool updateViewports(const ui::Layout& layout, const FrameInput& in, float scale);
     std::vector<std::pair<const CachedViewport*, Viewport>> shown; // this frame's renders and where they go
@@ -535,7 +535,7 @@ FrameOutput App::frame(const FrameInput& in) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }
 
-    FrameOutput out = m.output(in.touch, model);
+    FrameOutput out = m.output(in.touch, model, in.describePage);
     out.typing = events.typing;
     out.viewportScale = scale;
     out.redrawIn = redrawIn;
@@ -543,7 +543,7 @@ FrameOutput App::frame(const FrameInput& in) {
 }
 
 // What the frame hands the platform: the window's title, the scene's link, files, requests.
-FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn) {
+FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool describe) {
     FrameOutput out;
     out.quit = workspace.quit();
     out.link = workspace.link();
@@ -559,7 +559,7 @@ FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn) {
     out.pickFile = std::exchange(pickFile, false);
     out.copyLink = std::exchange(copyLink, false);
     out.viewportDrawn = viewportDrawn;
-    if (options.describePage) {
+    if (describe) {
         PageFacts tools = pageTools();
         out.page = page.json(workspace, {workspace.exercise() ? &exerciseView : nullptr, toastLeft > 0.0f ? toast : "",
                                          out.problem, probeWords(probe.shown() ? probe.result() : nullptr),

@@ -50,6 +50,9 @@ struct FrameInput {
     unsigned targetFramebuffer = 0;      // the GL framebuffer to draw into (0: the window's)
     std::vector<PageEdit> pageEdits;     // the page's own controls (app/page_model.h), in order
     std::optional<std::string> pageFocus; // the page's control that has the keyboard (its field's path, "" none)
+    // The browser, a few times a second: this frame describes the lab for the page's parallel DOM
+    // (FrameOutput::page). Not every frame: a drag would pay for the description and the DOM's update.
+    bool describePage = false;
     // Who this frame's keys are for: the model's shortcuts, a window's widget, a text field
     // (set by the ImGui host, platform/imgui_host.h, from ui/keyboard.h).
     KeyOwner keys = KeyOwner::Canvas;
@@ -77,7 +80,7 @@ struct FrameOutput {
     float redrawIn = -1.0f;
     bool viewportDrawn = false;  // the model's viewport was drawn this frame (otherwise its cached copy was shown)
     bool presented = true;   // the window was drawn (false: it would have looked exactly as the last; no swap needed)
-    std::string page;            // AppOptions::describePage: the page's description of the lab (app/page_model.h)
+    std::string page;            // FrameInput::describePage: the page's description of the lab (app/page_model.h)
     KeyOwner keys = KeyOwner::Canvas; // who this frame's keys went to (the page: Tab is the browser's only on the model)
     float viewportScale = 1.0f;  // the fraction of the view's width and height drawn (< 1 while dragging on a slow machine)
 };
@@ -100,8 +103,6 @@ struct AppOptions {
     // The course page's address (https://.../lab/): the QR code (Q) opens the scene's link there.
     // The page gives its own; the desktop --share-base (remembered in the settings file).
     std::string shareBase;
-    // The browser: every frame describes the lab for the page's parallel DOM (FrameOutput::page).
-    bool describePage = false;
     // The theme at start (core/plots/theme.h): the UI's, the plots' and the exported figures'
     // colours; dark when none. The desktop's --theme (remembered), the page's prefers-color-scheme
     // or the visitor's earlier choice.

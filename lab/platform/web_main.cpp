@@ -15,7 +15,6 @@ int main() {
     options.presetFolders = {"/presets"};   // bundled with the page (see CMakeLists.txt)
     options.screenshotFolder = "/screenshots";
     options.saveByDownload = true;
-    options.describePage = true; // the page's parallel DOM (web/access.js)
     // The visitor's own theme if they chose one (the panel, or the page's control), else the system's
     // light or dark setting, which the page follows until a choice is made (labFollowTheme, index.html).
     if (char* theme = emscripten_run_script_string("labSavedTheme()")) {

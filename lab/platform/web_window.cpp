@@ -171,7 +171,13 @@ struct WebState : PlatformInput {
     std::optional<std::string> pendingLink;
     bool pendingLinkSaved = false; // pendingLink is the saved state, not an address
     int frames = 0;
+    double describedAt = -1e9; // when the lab last described itself for the page (FrameInput::describePage)
+    bool describeOwed = false; // the last frame drawn was not described: one is drawn when the interval is up
 };
+
+// The page's parallel DOM follows the lab at most this often (app/page_model.h): a drag's frames
+// between two descriptions are not described, and the frame that ends it is, after this delay.
+constexpr double kDescribeInterval = 0.2;
 
 WebState* gState = nullptr;
 
@@ -252,7 +258,7 @@ void deliver(WebState& s, const FrameOutput& out) {
         labJsSetLink(out.link.c_str(), out.link.size() <= kMaxLinkChars ? 1 : 0);
         s.lastLink = out.link;
     }
-    if (out.page != s.lastPage) {
+    if (!out.page.empty() && out.page != s.lastPage) {
         labJsPage(out.page.c_str());
         s.lastPage = out.page;
     }
@@ -278,6 +284,7 @@ void frame(void* arg) {
     double start = glfwGetTime();
     FrameInput in = nextInput(s, dpr);
     in.framesDue = s.pacer.dueAfterThis(!s.queue.empty());
+    in.describePage = start - s.describedAt >= kDescribeInterval;
     FrameOutput out = s.host.frame(in, [&] {
         ImGui_ImplGlfw_NewFrame();
         ImGuiIO& io = ImGui::GetIO();
@@ -286,6 +293,13 @@ void frame(void* arg) {
         io.DeltaTime = in.deltaTime;
     });
     deliver(s, out);
+    s.describeOwed = !in.describePage;
+    if (in.describePage) {
+        s.describedAt = start;
+    } else { // a frame drawn when the interval is up describes what this one changed
+        const auto left = static_cast<float>(s.describedAt + kDescribeInterval - start);
+        out.redrawIn = out.redrawIn < 0.0f ? left : std::min(out.redrawIn, left);
+    }
     s.lastCost = static_cast<float>(glfwGetTime() - start);
     s.pacer.drawn(glfwGetTime(), out.redrawIn, !s.queue.empty());
     if (++s.frames == 1) {
@@ -403,9 +417,10 @@ EMSCRIPTEN_KEEPALIVE void lab_set_theme(const char* name) {
 }
 // For browser tests: the frames drawn so far (an idle page draws none).
 EMSCRIPTEN_KEEPALIVE int lab_frames() { return gState ? gState->frames : 0; }
-// For browser tests: 1 when the lab has handled everything it was given and owes no frame.
+// For browser tests: 1 when the lab has handled everything it was given, owes no frame and the page
+// has its description of the last frame.
 EMSCRIPTEN_KEEPALIVE int lab_settled() {
-    return gState && !gState->changed && !gState->pendingLink && gState->queue.empty() &&
+    return gState && !gState->changed && !gState->pendingLink && gState->queue.empty() && !gState->describeOwed &&
            !gState->pacer.due(glfwGetTime(), false);
 }
 // For browser tests: the screen rectangles of the main widgets, in CSS pixels ("name x y w h").
