@@ -55,6 +55,7 @@ TEST(FieldEdit, RefusesWhatAPresetFileWouldAndLeavesThePresetAsItWas) {
         {{"camera.up[1]", "0"}, "not a field the page can set"},           // hidden rows
         {{"material.colour", "1"}, "not a field the page can set"},
         {{"model.gltf", "x.glb"}, "not a field the page can set"},
+        {{"model.subdivisions[0]", "2"}, "a sphere or a torus needs at least 3"},
     };
     for (const auto& [edit, message] : refused) {
         std::string problem = setFieldFromText(p, edit.first, edit.second);

@@ -12,6 +12,7 @@
 #include "core/io/safe_text.h"
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -113,6 +114,7 @@ constexpr SectionSpec kSections[] = {
 };
 constexpr const char* kTabs[][2] = {{"model", "Model"}, {"material", "Material"}, {"lights", "Lights"}, {"plots", "Plots"}};
 constexpr const char* kKinds[] = {"number", "vec3", "color", "direction", "int2", "switch", "choice", "text"}; // FieldKind's order
+static_assert(std::size(kKinds) == static_cast<std::size_t>(FieldKind::Text) + 1, "a name for every FieldKind");
 
 // A number's step: the row's, or the last digit its format shows ("%.3f": 0.001).
 double stepOf(const FieldRow& row) {

@@ -139,8 +139,15 @@ std::string setFieldFromText(Preset& preset, std::string_view path, std::string_
             return where + ": " + problems.front().message;
         }
     }
+    // The model's source is read by hand, not by the table (preset_read.cpp): its rules here, as there.
+    const Model& m = preset.model;
     if (fieldKey(*row) == "builtin") {
-        preset.model.subdivisions = defaultSubdivisions(preset.model.builtin);
+        preset.model.subdivisions = defaultSubdivisions(m.builtin);
+    } else if (fieldKey(*row) == "subdivisions" && (m.builtin == Builtin::Sphere || m.builtin == Builtin::Torus) &&
+               (!limits::contains(limits::kSubdivisionsRound, m.subdivisions.x) ||
+                !limits::contains(limits::kSubdivisionsRound, m.subdivisions.y))) {
+        preset = std::move(before);
+        return where + ": a sphere or a torus needs at least " + std::to_string(limits::kSubdivisionsRound.min);
     }
     return {};
 }
