@@ -223,12 +223,12 @@ TEST_F(Keyboard, AHelpMarkerShowsItsTooltipOnTheRingAndEscClosesItFirst) {
 }
 
 TEST_F(Keyboard, ATooltipStaysWhileThePointerIsOverItAndGoesWhenItLeaves) {
-    const ui::Rect* slider = widget("material.shininess");
-    ASSERT_NE(slider, nullptr);
+    ASSERT_NE(widget("material.shininess"), nullptr);
+    const ui::Rect slider = *widget("material.shininess"); // a copy: the next frame makes the map anew
     // The marker is the last thing on the slider's line: find it by hovering along the line's end.
-    const float y = slider->y + slider->h / 2;
+    const float y = slider.y + slider.h / 2;
     float markerX = -1;
-    for (float x = slider->x + slider->w; x < slider->x + slider->w + 120 && markerX < 0; x += 4) {
+    for (float x = slider.x + slider.w; x < slider.x + slider.w + 120 && markerX < 0; x += 4) {
         moveTo(x, y);
         if (tooltipShown()) {
             markerX = x;
