@@ -135,13 +135,14 @@
     return el('div', { class: 'row', 'data-key': 'theme' }, el('label', { for: 'lab-theme', text: 'Theme' }), select);
   }
 
-  // The compact layout's tabs as a tablist: arrows move between tabs, Tab into the chosen one.
+  // The compact layout's tabs as a tablist: arrows move between tabs, and each tab is a Tab stop too (so
+  // that Tab alone reaches every control: Tab to a tab, Enter or Space opens it, Tab into it).
   function selectTab(id, focus) {
     chosenTab = id;
     for (const t of tabs.querySelectorAll('[role=tab]')) {
       const on = t.dataset.tab === id;
       t.setAttribute('aria-selected', on);
-      t.tabIndex = on ? 0 : -1;
+      t.tabIndex = 0;
       if (on && focus) t.focus();
     }
     for (const p of panels.children) p.hidden = p.dataset.tab !== id;

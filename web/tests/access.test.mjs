@@ -123,6 +123,30 @@ test('an exercise is solved with the keyboard alone: Tab from the canvas to the 
   await context.close();
 });
 
+test('Tab alone reaches every tab and, through it, every control; Shift+Tab goes back to the canvas', async () => {
+  const { page, context, problems } = await newLabPage(env.browser, env.base);
+  await page.focus('#canvas');
+  const visited = [];
+  for (let i = 0; i < 6; ++i) {
+    await page.keyboard.press('Tab');
+    visited.push(await page.evaluate(() => document.activeElement.id));
+  }
+  assert.deepEqual(visited.slice(0, 4), ['tab-model', 'tab-material', 'tab-lights', 'tab-plots'], visited.join(' '));
+  // Enter on the Lights tab, then Tab past the other tabs into it: the first light's first control.
+  await page.focus('#tab-lights');
+  await page.keyboard.press('Enter');
+  for (let i = 0; i < 4 && !(await page.evaluate(() => document.activeElement.dataset.path)); ++i) {
+    await page.keyboard.press('Tab');
+  }
+  assert.match(await page.evaluate(() => document.activeElement.dataset.path || ''), /^lights\[0\]\./);
+  for (let i = 0; i < 8 && await page.evaluate(() => document.activeElement.id) !== 'canvas'; ++i) {
+    await page.keyboard.press('Shift+Tab');
+  }
+  assert.equal(await page.evaluate(() => document.activeElement.id), 'canvas', 'no trap: back on the canvas');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
 test('keys typed into the page\'s controls fire no shortcut; the camera buttons orbit and zoom', async () => {
   const { page, context, problems } = await newLabPage(env.browser, env.base);
   const shininess = page.getByRole('spinbutton', { name: /shininess/ });
