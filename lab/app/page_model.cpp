@@ -1,7 +1,7 @@
 // page_model.cpp — the page's parallel DOM as data (page_model.h).
 #include "app/page_model.h"
 
-#include "core/exercise/preset_fields.h"
+#include "core/exercise/exercise.h"
 #include "core/lighting/probe.h"
 #include "core/plots/describe.h"
 #include "core/scene/field_edit.h"
@@ -11,7 +11,6 @@
 
 #include "core/io/safe_text.h"
 
-#include <algorithm>
 #include <iterator>
 #include <cmath>
 #include <cstdio>
@@ -167,15 +166,8 @@ void control(Writer& w, const FieldRow& row, Preset& p, LightDesc* light, const 
     w.close('}');
 }
 
-// Whether the exercise being solved lets the student change `path` (ui/panel FieldGate's rule).
-bool open(const ui::ExercisePanelModel* exercise, const std::string& path) {
-    return !exercise || alwaysFree(path) ||
-           std::any_of(exercise->open.begin(), exercise->open.end(), [&](const std::string& o) { return covers(o, path); });
-}
-
 // The controls of `group` (of one light) that the panel would show, in the table's order; how many.
-int controls(Writer& w, FieldGroup group, Preset& p, LightDesc* light, int lightIndex,
-             const ui::ExercisePanelModel* exercise) {
+int controls(Writer& w, FieldGroup group, Preset& p, LightDesc* light, int lightIndex, const Exercise* exercise) {
     int count = 0;
     w.key("controls").open('[');
     for (const FieldRow& row : fieldRows()) {
@@ -184,7 +176,7 @@ int controls(Writer& w, FieldGroup group, Preset& p, LightDesc* light, int light
             continue;
         }
         std::string path = fieldPath(row, lightIndex);
-        if (open(exercise, path)) {
+        if (!exercise || fieldIsOpen(*exercise, path)) { // the exercise's gate, as the panel's
             control(w, row, p, light, path);
             ++count;
         }
@@ -258,7 +250,7 @@ void fileSections(Writer& w, Workspace& ws, const ui::ExercisePanelModel* exerci
     w.close(']').close('}');
 }
 
-void fieldSections(Writer& w, Preset& p, const ui::ExercisePanelModel* exercise) {
+void fieldSections(Writer& w, Preset& p, const Exercise* exercise) {
     for (const SectionSpec& s : kSections) {
         for (std::size_t i = 0; i < (s.group == G::Lights ? p.lights.size() : 1); ++i) {
             const bool light = s.group == G::Lights;
@@ -363,7 +355,7 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
     }
     w.close(']').key("sections").open('[');
     fileSections(w, ws, facts.exercise, facts.motion);
-    fieldSections(w, ws.edited(), facts.exercise);
+    fieldSections(w, ws.edited(), ws.exercise() ? &ws.exercise()->exercise : nullptr);
     toolSections(w, facts);
     w.close(']');
     if (const ui::ExercisePanelModel* e = facts.exercise) {
@@ -411,9 +403,7 @@ std::string applyPageEdits(Workspace& ws, const std::vector<PageEdit>& edits, co
         std::string problem;
         if (std::string* field = toolField(e.path, tools)) {
             *field = e.value;
-        } else if (ws.exercise() && !alwaysFree(path) &&
-            std::none_of(ws.exercise()->exercise.open.begin(), ws.exercise()->exercise.open.end(),
-                         [&](const std::string& o) { return covers(o, path); })) {
+        } else if (ws.exercise() && !fieldIsOpen(ws.exercise()->exercise, path)) {
             problem = path + ": this exercise does not let you change it";
         } else {
             problem = setFieldFromText(ws.edited(), path, e.value);
