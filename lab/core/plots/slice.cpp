@@ -114,6 +114,15 @@ SliceMarker planeToSlice(float incidentDeg, float outgoingDeg) {
     return m;
 }
 
+glm::vec3 divergingColor(float t) {
+    // PuOr's 5-class stops, from B's side (purple) to A's (orange).
+    static constexpr glm::vec3 stops[5] = {{94.0f, 60.0f, 153.0f}, {178.0f, 171.0f, 210.0f}, {247.0f, 247.0f, 247.0f},
+                                           {253.0f, 184.0f, 99.0f}, {230.0f, 97.0f, 1.0f}};
+    const float u = (std::clamp(std::isfinite(t) ? t : 0.0f, -1.0f, 1.0f) + 1.0f) * 2.0f; // 0 … 4
+    const int i = std::min(static_cast<int>(u), 3);
+    return glm::mix(stops[i], stops[i + 1], u - static_cast<float>(i)) / 255.0f;
+}
+
 std::string sliceCsv(const SliceImage& image) {
     std::string out = "theta_h_deg,theta_d_deg,diffuse,specular,total\n";
     const int n = image.side();

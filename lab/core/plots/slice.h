@@ -74,6 +74,12 @@ struct SliceMarker {
 };
 SliceMarker planeToSlice(float incidentDeg, float outgoingDeg);
 
+// The slice of the difference's palette, diverging about 0: t in [−1, 1] (the value over the largest
+// |A − B|), ColorBrewer's PuOr (Harrower and Brewer 2003; safe for the common colour blindnesses):
+// purple where B reflects more (t < 0), near-white at 0, orange where A does (t > 0); linear between
+// its five stops, clamped outside [−1, 1].
+glm::vec3 divergingColor(float t);
+
 // "theta_h_deg,theta_d_deg,diffuse,specular,total" and one row per sample, θh varying fastest.
 std::string sliceCsv(const SliceImage& image);
 
