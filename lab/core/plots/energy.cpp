@@ -3,6 +3,7 @@
 
 #include "core/io/number_format.h"
 #include "core/lighting/lighting.h"
+#include "core/plots/hemisphere_rule.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/vec3.hpp>
@@ -11,14 +12,12 @@
 
 namespace lab {
 
-namespace {
-
 // The specular panels' edges in α, the angle from R: 0, π/4096, π/2048, …, π/2, π. A Phong lobe
 // cos^n α is about 1/√n wide, so from n ≈ 1 to n ≈ 10^6 it spans a few panels at any shininess.
 // Two more edges where the horizon starts and ends cutting the circle of directions at α from R
 // (90° − θi and 90° + θi, the last edge: beyond it everything is below the horizon), so that each
 // panel's integrand is smooth.
-std::vector<double> panelEdges(double ti) {
+std::vector<double> specularPanelEdges(double ti) {
     const double pi = glm::pi<double>(), first = pi / 2 - ti, last = pi / 2 + ti;
     std::vector<double> edges{0.0};
     for (int k = 12; k >= 0; --k) {
@@ -34,8 +33,6 @@ std::vector<double> panelEdges(double ti) {
     edges.push_back(last);
     return edges;
 }
-
-} // namespace
 
 void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights) {
     nodes.assign(static_cast<std::size_t>(n), 0.0);
@@ -81,9 +78,8 @@ std::optional<Albedo> albedo(const LobeInputs& inputs, const AlbedoRule& rule) {
         return glsl::lightContribution(inputs.material, inputs.brdf, inputs.terms, light, glm::vec3(0.0f), N,
                                        glm::vec3(V));
     };
-    std::vector<double> x, w, xPhi, wPhi;
+    std::vector<double> x, w;
     gaussLegendre(rule.nodes, x, w);
-    gaussLegendre(rule.phiSteps, xPhi, wPhi);
     // φ on [0, π] by midpoints, doubled: every term is symmetric about the plane of incidence.
     const double dPhi = glm::pi<double>() / rule.phiSteps;
     std::vector<double> cosPhi, sinPhi;
@@ -102,38 +98,11 @@ std::optional<Albedo> albedo(const LobeInputs& inputs, const AlbedoRule& rule) {
         }
     }
 
-    // Specular, about R = 2(N·L)N − L: dω = sin α dα dφ, with e1 in the plane of incidence (towards
-    // the horizon) and e2 across it. N·V = cos α cos θi − sin α sin θi cos φ, which is > 0 (V above
-    // the horizon) for cos φ < cot α cot θi: where that cuts the circle, φ runs from the cut to π by
-    // Gauss-Legendre (the integrand vanishes at the cut, no kink inside), else over [0, π] by midpoints.
-    const double sinTi = std::sin(double(ti)), cosTi = std::cos(double(ti));
-    const glm::dvec3 R(sinTi, cosTi, 0.0), e1(cosTi, -sinTi, 0.0), e2(0.0, 0.0, 1.0);
-    const std::vector<double> edges = panelEdges(double(ti));
+    // Specular, about R (hemisphere_rule.h): each direction above the horizon with its dω.
     glm::dvec3 specular(0.0);
-    for (std::size_t k = 0; k + 1 < edges.size(); ++k) {
-        const double a = edges[k], b = edges[k + 1];
-        for (std::size_t i = 0; i < x.size(); ++i) {
-            const double alpha = a + 0.5 * (b - a) * (x[i] + 1.0);
-            const double sinA = std::sin(alpha), cosA = std::cos(alpha);
-            const double weight = 0.5 * (b - a) * w[i] * sinA * 2.0;
-            auto at = [&](double cosP, double sinP) {
-                const glm::dvec3 V = cosA * R + sinA * (cosP * e1 + sinP * e2);
-                return V.y > 0.0 ? V.y * glm::dvec3(terms(V).specular) : glm::dvec3(0.0);
-            };
-            const double cut = cosA * cosTi, across = sinA * sinTi; // N·V = cut − across·cos φ
-            if (cut >= across) {
-                for (std::size_t j = 0; j < cosPhi.size(); ++j) {
-                    specular += weight * dPhi * at(cosPhi[j], sinPhi[j]);
-                }
-            } else if (cut > -across) {
-                const double phi0 = std::acos(cut / across), half = 0.5 * (glm::pi<double>() - phi0);
-                for (std::size_t j = 0; j < xPhi.size(); ++j) {
-                    const double phi = phi0 + half * (xPhi[j] + 1.0);
-                    specular += weight * half * wPhi[j] * at(std::cos(phi), std::sin(phi));
-                }
-            }
-        }
-    }
+    forEachSpecularNode(double(ti), rule, [&](const glm::dvec3& V, double dw) {
+        specular += dw * V.y * glm::dvec3(terms(V).specular);
+    });
 
     const double scale = 1.0 / (glm::pi<double>() * NoL);
     return Albedo{glm::vec3(diffuse * scale), glm::vec3(specular * scale)};
