@@ -5,6 +5,7 @@
 #include "cli/settings.h"
 #include "core/io/safe_text.h"
 #include "core/io/suggest.h"
+#include "core/scene/field_table.h"
 #include "core/scene/limits.h"
 
 #include <CLI/CLI.hpp>
@@ -93,7 +94,7 @@ const CLI::Validator kThemeName(
     "dark|light");
 
 struct FigureArguments {
-    std::string kind = "lobe", svg, png, csv, theme = "light";
+    std::string kind = "lobe", svg, png, csv, theme = "light", component = "specular";
     float scale = 1.0f;
     int light = 1;
     bool log = false;
@@ -103,6 +104,7 @@ struct FigureArguments {
     CLI::Option* scaleOption = nullptr;
     CLI::Option* lightOption = nullptr;
     CLI::Option* themeOption = nullptr;
+    CLI::Option* componentOption = nullptr;
 };
 
 void addFigureOptions(CLI::App* plot, FigureArguments& a) {
@@ -111,7 +113,8 @@ void addFigureOptions(CLI::App* plot, FigureArguments& a) {
         kinds.emplace_back(toString(k));
     }
     a.kindOption = plot->add_option("--figure", a.kind, "Which figure --svg, --png and --csv write: lobe, overlay (three incident "
-                                                        "angles), attenuation (of --light) or albedo")
+                                                        "angles), attenuation (of --light), albedo or slice (the BRDF over "
+                                                        "the half and difference angles)")
                        ->check(CLI::IsMember(kinds))
                        ->capture_default_str();
     plot->add_option("--svg", a.svg, "SVG file to write the figure to")->check(kNotEmpty);
@@ -124,7 +127,11 @@ void addFigureOptions(CLI::App* plot, FigureArguments& a) {
     a.lightOption = plot->add_option("--light", a.light, "The attenuation figure's light, from 1")
                         ->check(CLI::Range(1, 64))
                         ->capture_default_str();
-    plot->add_flag("--log", a.log, "Logarithmic radial scale in the lobe and overlay figures");
+    plot->add_flag("--log", a.log, "Logarithmic radial scale in the lobe and overlay figures, log colours in the slice");
+    a.componentOption = plot->add_option("--component", a.component, "The slice figure's image: diffuse, specular or total "
+                                                                     "(its CSV has all three)")
+                            ->check(CLI::IsMember({"diffuse", "specular", "total"}))
+                            ->capture_default_str();
     a.themeOption = plot->add_option("--theme", a.theme, "The figure's colours: light (dark on white, for paper and slides) "
                                                          "or dark (light on near black, as the lab's dark theme)")
                         ->check(kThemeName)
@@ -145,6 +152,16 @@ bool figureOutputs(const FigureArguments& a, FigureOutputs& out) {
     out.request.light = a.light - 1;
     out.request.overlayDeg = glm::vec3(a.overlayDeg[0], a.overlayDeg[1], a.overlayDeg[2]); // expected(3)
     out.request.theme = *themeFrom(a.theme); // checked by kThemeName
+    out.request.component = a.component == "diffuse" ? PlotComponent::Diffuse
+                            : a.component == "total" ? PlotComponent::Total : PlotComponent::Specular; // IsMember
+    if (a.componentOption->count() && out.request.kind != FigureKind::Slice) {
+        print(stderr, "lab plot: --component is the slice figure's: give --figure slice\n");
+        return false;
+    }
+    if (a.lightOption->count() && out.request.kind == FigureKind::Slice) {
+        print(stderr, "lab plot: --light is the attenuation figure's; the slice is for a unit white light, as --out\n");
+        return false;
+    }
     out.files.pngScale = a.scale;
     if (!a.svg.empty()) {
         out.files.svg = a.svg;
@@ -159,10 +176,11 @@ bool figureOutputs(const FigureArguments& a, FigureOutputs& out) {
         print(stderr, "lab plot: --scale is the PNG's: give --png FILE too\n");
         return false;
     }
-    if ((a.kindOption->count() || a.lightOption->count() || a.overlayOption->count() || a.themeOption->count() || a.log) &&
+    if ((a.kindOption->count() || a.lightOption->count() || a.overlayOption->count() || a.themeOption->count() || a.log ||
+         a.componentOption->count()) &&
         !out.any()) {
-        print(stderr, "lab plot: --figure, --light, --overlay-deg, --theme and --log choose a figure: give --svg, --png or "
-                      "--csv FILE too\n");
+        print(stderr, "lab plot: --figure, --light, --overlay-deg, --theme, --component and --log choose a figure: give --svg, "
+                      "--png or --csv FILE too\n");
         return false;
     }
     return true;
@@ -344,6 +362,56 @@ CLI::App* addExerciseCommand(CLI::App& app, ExerciseArguments& a, CLI::App*& che
     return exercise;
 }
 
+// `lab fit`, as typed.
+struct FitArguments {
+    std::string preset, brdf, distribution, out;
+    CLI::Option* distributionOption = nullptr;
+};
+
+std::vector<std::string> choiceNames(std::span<const FieldChoice> choices) {
+    std::vector<std::string> names;
+    for (const FieldChoice& c : choices) {
+        names.emplace_back(c.name);
+    }
+    return names;
+}
+
+CLI::App* addFitCommand(CLI::App& app, FitArguments& a) {
+    CLI::App* fit = app.add_subcommand("fit", "Fit a reflection model to a preset's specular reflection (least squares over "
+                                              "the incident angles 0-75 degrees) and write the fitted preset");
+    fit->add_option("preset", a.preset, "Preset file whose specular reflection is fitted")->required()->check(kNotEmpty);
+    fit->add_option("--brdf", a.brdf, "The model to fit: phong, blinn-phong or cook-torrance")
+        ->required()
+        ->check(CLI::IsMember(choiceNames(kBrdfChoices)));
+    a.distributionOption = fit->add_option("--distribution", a.distribution, "Cook-Torrance's distribution: beckmann "
+                                                                             "(default), gaussian or ggx")
+                               ->check(CLI::IsMember(choiceNames(kDistributionChoices)));
+    fit->add_option("--out", a.out, "JSON file to write the fitted preset to")->required()->check(kNotEmpty);
+    return fit;
+}
+
+// False (with the message printed) for --distribution without --brdf cook-torrance.
+bool fitLine(const FitArguments& a, CommandLine& line) {
+    line.command = CommandLine::Command::Fit;
+    line.presets = {a.preset};
+    line.out = a.out;
+    for (const FieldChoice& c : kBrdfChoices) {
+        if (c.name == a.brdf) {
+            line.fit.brdf = static_cast<BrdfModel>(c.value);
+        }
+    }
+    for (const FieldChoice& c : kDistributionChoices) {
+        if (c.name == a.distribution) {
+            line.fit.distribution = static_cast<Distribution>(c.value);
+        }
+    }
+    if (a.distributionOption->count() && line.fit.brdf != BrdfModel::CookTorrance) {
+        print(stderr, "lab fit: --distribution is Cook-Torrance's: give --brdf cook-torrance, or leave it out\n");
+        return false;
+    }
+    return true;
+}
+
 struct ShareArguments {
     std::string file, base, qr;
 };
@@ -418,6 +486,8 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     addExerciseCommand(app, exerciseArguments, exerciseCheck);
     ShareArguments shareArguments;
     CLI::App* share = addShareCommand(app, shareArguments);
+    FitArguments fitArguments;
+    CLI::App* fit = addFitCommand(app, fitArguments);
 
     try {
         app.parse(argc, argv);
@@ -444,16 +514,15 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     if (!windowSize.empty()) {
         line.windowSize = *parseSize(windowSize, error); // validated by SizeValidator
     }
-    if ((*render && !renderLine(renderArguments, line)) || (*plot && !plotLine(plotArguments, line))) {
+    if ((*render && !renderLine(renderArguments, line)) || (*plot && !plotLine(plotArguments, line)) ||
+        (*fit && !fitLine(fitArguments, line))) {
         return kExitBadInput;
     }
-    if (*check) {
+    if (*check) { // one subcommand at most (require_subcommand)
         checkLine(checkArguments, line);
-    }
-    if (*exerciseCheck) {
+    } else if (*exerciseCheck) {
         exerciseLine(exerciseArguments, line);
-    }
-    if (*share) {
+    } else if (*share) {
         shareLine(shareArguments, line);
     }
     return line;

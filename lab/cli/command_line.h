@@ -16,7 +16,7 @@
 namespace lab {
 
 struct CommandLine {
-    enum class Command { Lab, Render, Plot, Check, ExerciseCheck, Share } command = Command::Lab;
+    enum class Command { Lab, Render, Plot, Check, ExerciseCheck, Share, Fit } command = Command::Lab;
     // lab (the interactive lab)
     std::optional<std::filesystem::path> preset;
     bool presenter = false, fullscreen = false;
@@ -43,6 +43,8 @@ struct CommandLine {
     std::filesystem::path shared;
     std::string base; // share --base
     std::optional<std::filesystem::path> qrOut;
+    // fit PRESET --brdf MODEL [--distribution D] --out FITTED.json (presets.front(), out)
+    FitRequest fit;
 };
 
 // The parsed command line, or the exit status when parsing ends the program: 0 after --help or

@@ -1,4 +1,4 @@
-// commands.h — the headless commands behind `lab render`, `lab plot` and `lab check`.
+// commands.h — the headless commands behind `lab render`, `lab plot`, `lab check` and the others.
 //
 // Each returns the process exit status: 0 success, 2 bad input (a message on stderr naming the
 // file and place; for `check` also a golden that does not read), 1 an internal failure or, for
@@ -7,6 +7,7 @@
 
 #include "core/io/image.h"
 #include "core/plots/figures.h"
+#include "core/plots/fit.h"
 #include "core/scene/sweep.h"
 #include "core/scene/view_mode.h"
 
@@ -96,6 +97,12 @@ int runExerciseCheck(const std::filesystem::path& exercise, const std::filesyste
 // long for a version-20 code is refused with --qr (exit 2), noted without.
 int runShare(const std::filesystem::path& file, const std::string& base,
              const std::optional<std::filesystem::path>& qrOut, const std::filesystem::path& shippedPresets);
+
+// `lab fit PRESET --brdf MODEL [--distribution D] --out FITTED.json` (fit_command.cpp): the preset
+// with `request`'s model fitted to its specular reflection (core/plots/fit.h), everything else as it
+// was (a glTF model's path made relative to FITTED's folder), written atomically; prints the
+// parameters and the remaining error, and each bound that binds. 2 for bad input or nothing to fit.
+int runFit(const std::filesystem::path& preset, const FitRequest& request, const std::filesystem::path& out);
 
 // No GUI in this build (or no display): renders the preset (or the defaults) to a PNG in the
 // temporary folder and prints its path.

@@ -114,6 +114,7 @@ int main(int argc, char** argv) {
     case lab::CommandLine::Command::Check: return lab::runCheck(line.presets, line.check);
     case lab::CommandLine::Command::ExerciseCheck: return lab::runExerciseCheck(line.exercise, line.attempt, line.diffOut);
     case lab::CommandLine::Command::Share: return lab::runShare(line.shared, line.base, line.qrOut, shippedPresets());
+    case lab::CommandLine::Command::Fit: return lab::runFit(line.presets.front(), line.fit, line.out);
     case lab::CommandLine::Command::Lab: break;
     }
     return runInteractive(line);

@@ -107,7 +107,7 @@ check plot-same-file-nothing-written test ! -e "$tmp/d.csv"
 expect plot-albedo-unwritable 2 'lab plot: ' -- "$lab" plot "$phong" --albedo "$tmp/none/x.csv"
 
 # --- plot --figure: SVG, PNG and CSV of one figure (core/plots/figures.h) --------------------------
-for fig in lobe overlay attenuation albedo; do
+for fig in lobe overlay attenuation albedo slice; do
   expect "figure-$fig" 0 "f-$fig\.svg" -- "$lab" plot "$phong" --figure $fig --svg "$tmp/f-$fig.svg" --png "$tmp/f-$fig.png" --csv "$tmp/f-$fig.csv"
   check "figure-$fig-svg" grep -q '</svg>' "$tmp/f-$fig.svg"
   check "figure-$fig-png-width" test "$(png_size "$tmp/f-$fig.png" | cut -d' ' -f1)" = 720
@@ -142,6 +142,36 @@ expect figure-no-such-light 2 'figure attenuation: light 3 does not exist' -- "$
 check figure-no-such-light-nothing-written test ! -e "$tmp/x.svg"
 expect figure-same-file 2 '^lab plot: --png .*y\.svg: --svg writes that file too \(as .*/y\.svg\) \(nothing was written\)' -- "$lab" plot "$phong" --svg "$tmp/y.svg" --png "$tmp/./y.svg"
 expect figure-unwritable 2 'lab plot: .*none' -- "$lab" plot "$phong" --svg "$tmp/none/x.svg"
+# The slice (core/plots/slice.h): 91 × 91 rows, θh fastest, for a unit white light (so no --light).
+check figure-slice-header test "$(head -1 "$tmp/f-slice.csv")" = "theta_h_deg,theta_d_deg,diffuse,specular,total"
+check figure-slice-rows test "$(wc -l < "$tmp/f-slice.csv")" -eq 8282
+check figure-slice-order test "$(sed -n '3p;93p' "$tmp/f-slice.csv" | cut -d, -f1,2 | tr '\n' ' ')" = "1,0 0,1 "
+check figure-slice-image grep -q '<image id="slice-a" .*href="data:image/png;base64,iVBORw0KGgo' "$tmp/f-slice.svg"
+expect figure-slice-no-light 2 '^lab plot: --light is the attenuation figure' -- "$lab" plot "$phong" --figure slice --light 1 --csv "$tmp/x.csv"
+expect figure-component-is-the-slices 2 '^lab plot: --component is the slice' -- "$lab" plot "$phong" --figure lobe --component total --svg "$tmp/x.svg"
+expect figure-component-unknown 2 '--component: .*not in' -- "$lab" plot "$phong" --figure slice --component shiny --svg "$tmp/x.svg"
+check figure-slice-refusals-wrote-nothing test ! -e "$tmp/x.csv" -a ! -e "$tmp/x.svg"
+
+# --- fit: one model fitted to another's specular lobe (core/plots/fit.h) --------------------------
+ct=$src/presets/13-cook-torrance-beckmann-schlick.json
+expect fit-blinn-phong 0 '^Blinn-Phong: shininess 20\.[0-9]+, specular × [0-9.]+; remaining error' -- \
+    "$lab" fit "$ct" --brdf blinn-phong --out "$tmp/fitted.json"
+check fit-is-a-preset "$lab" plot "$tmp/fitted.json" --out "$tmp/fitted.csv"
+check fit-model-written grep -q '"brdf": "blinn-phong"' "$tmp/fitted.json"
+expect fit-says-bound 0 'bound: the ior ended on its largest value, 100' -- \
+    "$lab" fit "$phong" --brdf cook-torrance --distribution ggx --out "$tmp/fitted-ct.json"
+expect fit-distribution-needs-ct 2 '^lab fit: --distribution is Cook-Torrance' -- \
+    "$lab" fit "$phong" --brdf phong --distribution ggx --out "$tmp/y.json"
+expect fit-unknown-brdf 2 '^--brdf: .*not in' -- "$lab" fit "$phong" --brdf lambert --out "$tmp/y.json"
+expect fit-needs-out 2 '--out' -- "$lab" fit "$phong" --brdf phong
+expect fit-nothing-to-fit 2 "^lab fit: .*01-ambient-only\.json: nothing to fit: the preset's specular term is switched off" -- \
+    "$lab" fit "$src/presets/01-ambient-only.json" --brdf phong --out "$tmp/y.json"
+expect fit-broken-preset 2 'broken\.json: material\.difuse' -- "$lab" fit "$src/tests/data/broken.json" --brdf phong --out "$tmp/y.json"
+check fit-refusals-wrote-nothing test ! -e "$tmp/y.json"
+cp "$phong" "$tmp/mine.json"
+expect fit-never-overwrites-its-input 2 '^lab fit: --out .*mine\.json: is the preset' -- \
+    "$lab" fit "$tmp/mine.json" --brdf phong --out "$tmp/mine.json"
+check fit-input-intact cmp -s "$phong" "$tmp/mine.json"
 
 # --- render --sweep: one preset as a labelled grid (core/scene/sweep.h) ---------------------------
 shin=$src/presets/06-shininess-10.json

@@ -363,6 +363,7 @@ inline std::string runParsedCommand(CommandLine line) {
         case CommandLine::Command::Check: status = runCheck(line.presets, line.check); break;
         case CommandLine::Command::ExerciseCheck: status = runExerciseCheck(line.exercise, line.attempt, line.diffOut); break;
         case CommandLine::Command::Share: status = runShare(line.shared, line.base, line.qrOut, {}); break;
+        case CommandLine::Command::Fit: status = runFit(line.presets.front(), line.fit, line.out); break;
         case CommandLine::Command::Lab: break;
         }
         text = output.text();

@@ -14,6 +14,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -43,6 +44,15 @@ struct FigureDisc {
     FigureColor fill;
 };
 
+// A raster image (the slice's values through a palette) stretched over the rectangle at `at` of
+// `size`, each of its pixels a sharp-edged cell: SVG's <image> (a PNG inside, image-rendering
+// pixelated), the PNG's nearest pixel.
+struct FigureImage {
+    glm::vec2 at{0.0f}, size{0.0f};
+    std::shared_ptr<const Image> image; // shared: a figure's copies do not copy its pixels
+    std::string id; // the SVG element's id when not empty
+};
+
 enum class TextAnchor { Start, Middle, End };
 
 struct FigureText {
@@ -54,7 +64,7 @@ struct FigureText {
     bool bold = false; // the title; the PNG draws it twice, half a pixel apart
 };
 
-using FigureShape = std::variant<FigureLine, FigurePolygon, FigureDisc, FigureText>;
+using FigureShape = std::variant<FigureLine, FigurePolygon, FigureDisc, FigureText, FigureImage>;
 
 struct Figure {
     float width = 0.0f, height = 0.0f;

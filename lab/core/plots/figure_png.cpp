@@ -183,6 +183,37 @@ std::vector<std::vector<glm::vec2>> dashRuns(const std::vector<glm::vec2>& point
     return runs;
 }
 
+namespace {
+
+// Every pixel whose centre lies in the image's rectangle takes the image pixel under that centre.
+void paintImage(Image& out, const FigureImage& shape, float scale) {
+    if (!shape.image) {
+        return;
+    }
+    const FigureImage& i = shape;
+    const Image& source = *shape.image;
+    if (source.width < 1 || source.height < 1 || !(i.size.x > 0.0f) || !(i.size.y > 0.0f) ||
+        source.rgb.size() != std::size_t(source.width) * std::size_t(source.height) * 3) {
+        return;
+    }
+    const glm::vec2 lo = i.at * scale, hi = (i.at + i.size) * scale;
+    const int x0 = std::max(0, static_cast<int>(std::ceil(lo.x - 0.5f))), x1 = std::min(out.width, static_cast<int>(std::ceil(hi.x - 0.5f)));
+    const int y0 = std::max(0, static_cast<int>(std::ceil(lo.y - 0.5f))), y1 = std::min(out.height, static_cast<int>(std::ceil(hi.y - 0.5f)));
+    for (int y = y0; y < y1; ++y) {
+        const int v = std::clamp(static_cast<int>((y + 0.5f - lo.y) / (hi.y - lo.y) * source.height), 0, source.height - 1);
+        for (int x = x0; x < x1; ++x) {
+            const int u = std::clamp(static_cast<int>((x + 0.5f - lo.x) / (hi.x - lo.x) * source.width), 0, source.width - 1);
+            const std::uint8_t* from = &source.rgb[(std::size_t(v) * std::size_t(source.width) + std::size_t(u)) * 3];
+            std::uint8_t* to = &out.rgb[(std::size_t(y) * std::size_t(out.width) + std::size_t(x)) * 3];
+            to[0] = from[0];
+            to[1] = from[1];
+            to[2] = from[2];
+        }
+    }
+}
+
+} // namespace
+
 Image rasterizeFigure(const Figure& f, float scale, const TextFont& font) {
     scale = std::clamp(std::isfinite(scale) ? scale : 1.0f, kMinFigureScale, kMaxFigureScale);
     Image image;
@@ -225,6 +256,8 @@ Image rasterizeFigure(const Figure& f, float scale, const TextFont& font) {
             if (t->bold) {
                 font.draw(image, t->text, x + 0.6f * scale, y, size, t->color);
             }
+        } else if (const auto* i = std::get_if<FigureImage>(&shape)) {
+            paintImage(image, *i, scale);
         }
     }
     return image;

@@ -4,7 +4,9 @@
 
 #include "core/io/safe_text.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <string_view>
 
 namespace lab {
 
@@ -34,6 +36,24 @@ std::string points(const std::vector<glm::vec2>& ps) {
             out += ' ';
         }
         out += num(p.x) + ',' + num(p.y);
+    }
+    return out;
+}
+
+// RFC 4648 base64 with padding, for the <image>'s data: URI.
+std::string base64(std::string_view bytes) {
+    static constexpr char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+        unsigned v = 0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            v = (v << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
+        }
+        for (std::size_t k = 0; k < 4; ++k) {
+            out += k <= n ? digits[(v >> (18 - 6 * k)) & 63u] : '=';
+        }
     }
     return out;
 }
@@ -73,6 +93,14 @@ std::string figureSvg(const Figure& f) {
             out += "<text x=\"" + num(t->at.x) + "\" y=\"" + num(t->at.y) + "\" font-size=\"" + num(t->size) +
                    "\" fill=\"" + colour(t->color) + "\" text-anchor=\"" + anchor + "\"" +
                    (t->bold ? " font-weight=\"bold\"" : "") + ">" + xml(t->text) + "</text>\n";
+        } else if (const auto* i = std::get_if<FigureImage>(&shape)) {
+            out += "<image";
+            if (!i->id.empty()) {
+                out += " id=\"" + xml(i->id) + "\"";
+            }
+            out += " x=\"" + num(i->at.x) + "\" y=\"" + num(i->at.y) + "\" width=\"" + num(i->size.x) + "\" height=\"" +
+                   num(i->size.y) + "\" preserveAspectRatio=\"none\" style=\"image-rendering:pixelated\" href=\"data:image/png;base64," +
+                   base64(i->image ? encodePng(*i->image) : std::string()) + "\"/>\n";
         }
     }
     out += "</g>\n</svg>\n";

@@ -4,6 +4,8 @@
 // in the figure style of the request's theme (theme.h), text measured with the font the PNG draws with.
 #include "core/plots/figures.h"
 
+#include "core/plots/figure_page.h"
+
 #include "core/io/file_io.h"
 #include "core/io/number_format.h"
 #include "core/lighting/lighting.h"
@@ -24,82 +26,7 @@ namespace lab {
 
 namespace {
 
-//----------------------------------------------------------------------------------------
-// The page: sizes, colours, text
-//----------------------------------------------------------------------------------------
-
-constexpr float kWidth = 720.0f;
-constexpr float kPolarHeight = 500.0f;
-constexpr float kCartesianHeight = 460.0f;
-constexpr float kMargin = 18.0f;
-// The figures' sizes (plot_drawing.h); a Page's style adds its theme's colours.
-constexpr const PlotStyle& kStyle = kFigureSizes;
-constexpr float kTitleSize = kStyle.title();
-constexpr float kTextSize = kStyle.text();
-constexpr float kPad = kStyle.pad();
-constexpr float kStroke = kStyle.stroke();
-constexpr float kBold = kStyle.bold();
-
-float textWidth(const std::string& text, float size) { return kStyle.width(text, size); }
-
-// `text` cut (with "…") to at most `width` pixels at the SVG font size `size`.
-std::string fitted(const std::string& text, float size, float width) {
-    const TextFont& font = sharedTextFont();
-    return font.fitted(text, size * font.lineHeightPerEm(), width);
-}
-
-// A figure page: its Figure, drawn on in the theme's figure style, on the plots' background.
-struct Page {
-    Figure f;
-    PlotStyle style;
-    PlotCanvas canvas{f, style};
-    explicit Page(Theme theme) : style(figureStyle(theme)) { f.background = style.color(Ink::Background); }
-    Page(const Page&) = delete;
-};
-
-struct LegendItem {
-    std::string text;
-    Ink ink;
-    float width = kStroke;
-};
-
-// Title (bold), subtitle (muted) and a legend of coloured swatches that wraps; the y below them.
-float header(Page& page, const std::string& title, const std::string& subtitle, const std::vector<LegendItem>& legend) {
-    const float usable = page.f.width - 2.0f * kMargin;
-    float y = kMargin + kTitleSize * 0.5f;
-    page.canvas.text({kMargin, y}, fitted(title, kTitleSize, usable), kTitleSize, Ink::Text, TextAnchor::Start, true);
-    y += kTitleSize * 0.5f + kPad + kTextSize * 0.5f;
-    page.canvas.text({kMargin, y}, fitted(subtitle, kTextSize, usable), kTextSize, Ink::Muted);
-    y += kTextSize * 0.5f + kPad;
-    if (!legend.empty()) {
-        const float swatch = 26.0f;
-        std::vector<float> widths;
-        for (const LegendItem& item : legend) {
-            widths.push_back(swatch + kPad + textWidth(item.text, kTextSize));
-        }
-        std::vector<FlowPlace> places = flowTokens(widths, 2.0f * kPad + 10.0f, usable);
-        const float row = kTextSize + kPad;
-        int lines = 0;
-        for (std::size_t i = 0; i < legend.size(); ++i) {
-            float x = kMargin + places[i].x, cy = y + row * (static_cast<float>(places[i].line) + 0.5f);
-            page.canvas.line({{x, cy}, {x + swatch, cy}}, std::max(legend[i].width, 2.5f), legend[i].ink);
-            page.canvas.text({x + swatch + kPad, cy}, legend[i].text, kTextSize, Ink::Text);
-            lines = std::max(lines, places[i].line + 1);
-        }
-        y += row * static_cast<float>(lines);
-    }
-    return y + kPad;
-}
-
-std::string brdfText(const Preset& p) {
-    std::string s = label(p.brdf);
-    if (p.brdf == BrdfModel::CookTorrance) {
-        s += " (" + std::string(toString(p.cookTorrance.distribution)) + ", roughness " + tickText(p.cookTorrance.roughness) + ")";
-    } else {
-        s += " (shininess " + tickText(p.material.shininess) + ")";
-    }
-    return s;
-}
+using namespace figure_page;
 
 //----------------------------------------------------------------------------------------
 // Polar figures
@@ -348,6 +275,7 @@ std::string_view toString(FigureKind kind) {
     case FigureKind::Overlay: return "overlay";
     case FigureKind::Attenuation: return "attenuation";
     case FigureKind::Albedo: return "albedo";
+    case FigureKind::Slice: return "slice";
     }
     return "lobe";
 }
@@ -367,6 +295,7 @@ std::optional<FigureResult> makeFigure(const Preset& a, const Preset* b, const F
     case FigureKind::Overlay: return overlayFigure(a, r);
     case FigureKind::Attenuation: return attenuationFigure(a, r, error);
     case FigureKind::Albedo: return albedoFigure(a, b, r);
+    case FigureKind::Slice: return sliceFigure(a, b, r);
     }
     error = "unknown figure";
     return std::nullopt;

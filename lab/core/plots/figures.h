@@ -1,5 +1,6 @@
 // figures.h — the plots as figures for slides and homework: the lobe, the incident angles
-// overlaid, the attenuation of a light and the albedo against the incident angle, each a Figure
+// overlaid, the attenuation of a light, the albedo against the incident angle and the (θh, θd)
+// slice (core/plots/slice.h; A, B and A − B in compare mode), each a Figure
 // (core/plots/figure.h: one description, written as SVG and as PNG) with its axes, rings, tick and
 // angle labels, legend and a title naming the preset, the BRDF and the angle, plus the CSV of the
 // numbers its curves are drawn from.
@@ -24,9 +25,10 @@
 
 namespace lab {
 
-enum class FigureKind { Lobe, Overlay, Attenuation, Albedo };
-inline constexpr std::array kFigureKinds{FigureKind::Lobe, FigureKind::Overlay, FigureKind::Attenuation, FigureKind::Albedo};
-std::string_view toString(FigureKind kind); // "lobe", "overlay", "attenuation", "albedo"
+enum class FigureKind { Lobe, Overlay, Attenuation, Albedo, Slice };
+inline constexpr std::array kFigureKinds{FigureKind::Lobe, FigureKind::Overlay, FigureKind::Attenuation, FigureKind::Albedo,
+                                         FigureKind::Slice};
+std::string_view toString(FigureKind kind); // "lobe", "overlay", "attenuation", "albedo", "slice"
 std::optional<FigureKind> figureKindFrom(std::string_view name);
 
 struct FigureRequest {
@@ -36,6 +38,8 @@ struct FigureRequest {
     glm::vec3 overlayDeg{60.0f, 25.0f, 10.0f};  // the overlay's three incident angles
     int light = 0;                              // the attenuation's light, 0-based
     Theme theme = Theme::Light;                 // the colours: dark on white unless asked
+    PlotComponent component = PlotComponent::Specular; // the slice's image (its CSV has all three)
+    ValuePalette palette = ValuePalette::Viridis;       // the slice's palette (the lab's view palette)
 };
 
 struct FigureResult {

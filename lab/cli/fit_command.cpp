@@ -1,0 +1,56 @@
+// fit_command.cpp — `lab fit`: one reflection model fitted to a preset's specular lobe (core/plots/fit.h).
+#include "cli/commands.h"
+
+#include "cli/command_kit.h"
+#include "cli/output.h"
+#include "core/io/paths.h"
+#include "core/plots/fit.h"
+
+namespace lab {
+
+namespace fs = std::filesystem;
+
+int runFit(const fs::path& presetFile, const FitRequest& request, const fs::path& out) {
+    Diagnostics diagnostics;
+    std::optional<LoadedPreset> preset = loadPreset(presetFile, diagnostics);
+    if (!preset) {
+        printDiagnostics(diagnostics);
+        return kExitBadInput;
+    }
+    RunFiles files;
+    addPresetInputs(files, *preset);
+    files.output(out, "--out");
+    if (!filesUsable(files, "lab fit")) {
+        return kExitBadInput;
+    }
+    std::string error;
+    std::optional<FitResult> fit = fitSpecular(preset->preset, request, error);
+    if (!fit) {
+        print(stderr, "lab fit: " + presetFile.string() + ": " + error + "\n");
+        return kExitBadInput;
+    }
+    // A glTF model is named relative to the preset's folder: relative to the output's now.
+    Preset& fitted = fit->fitted;
+    if (!fitted.model.gltf.empty()) {
+        const fs::path outFolder = fs::absolute(out).parent_path();
+        std::optional<fs::path> relative = relativeInside(outFolder, fs::absolute(preset->folder()) / fitted.model.gltf);
+        if (!relative) {
+            print(stderr, "lab fit: --out: the model " + fitted.model.gltf + " would be outside " + outFolder.string() +
+                              "; write the fitted preset in a folder that holds its model\n");
+            return kExitBadInput;
+        }
+        fitted.model.gltf = relative->generic_string();
+    }
+    if (!savePreset(fitted, out, diagnostics)) {
+        printDiagnostics(diagnostics);
+        return kExitBadInput;
+    }
+    print(stdout, fit->summary() + "\n");
+    for (const std::string& bound : fit->boundsThatBind()) {
+        print(stdout, "  bound: " + bound + "\n");
+    }
+    print(stdout, out.string() + "\n");
+    return kExitOk;
+}
+
+} // namespace lab
