@@ -580,13 +580,14 @@ TEST(Workspace, ScreenshotsAreNumberedFilesOrDownloads) {
     EXPECT_TRUE(parsePreset(downloads[1].bytes, "red.json", std::nullopt, d).has_value()) << toString(d);
 }
 
-// Export figures: the four figures as SVG, PNG (at the chosen scale) and CSV, each export in a
+// Export figures: the five figures as SVG, PNG (at the chosen scale) and CSV, each export in a
 // folder of its own beside the screenshots (never over an earlier one), or as downloads.
 TEST(Workspace, ExportedFiguresGoToANewFolderEachTimeOrAreDownloads) {
     Fixture f;
     ui::PlotSettings settings;
     std::vector<Download> files = exportFigures(f.ws.a(), nullptr, settings, 1.0f, Theme::Light);
-    ASSERT_EQ(files.size(), 12u) << "lobe, overlay, attenuation and albedo, each as SVG, PNG and CSV";
+    ASSERT_EQ(files.size(), 15u) << "lobe, overlay, attenuation, albedo and slice, each as SVG, PNG and CSV";
+    EXPECT_EQ(files[12].name, "slice.svg");
     std::string error;
     fs::create_directories(f.dir.path() / "shots" / "red-figures-001"); // taken: the next number is used
     f.ws.saveFiles(files, "Figures");
@@ -638,6 +639,38 @@ TEST(Workspace, ExportedFiguresAreInTheLabsTheme) {
         EXPECT_EQ(std::vector<std::uint8_t>(png->rgb.begin(), png->rgb.begin() + 3), (std::vector<std::uint8_t>{bg.r, bg.g, bg.b}))
             << toString(theme) << ": the PNG's corner is the plots' background";
     }
+}
+
+// Fit: B becomes the model fitted to A's specular lobe, beside A; its label holds while neither changes.
+TEST(Workspace, FitPutsTheFittedModelIntoBInCompareMode) {
+    Fixture f;
+    f.ws.a().brdf = BrdfModel::Phong;
+    f.ws.a().material.shininess = 20.0f;
+    f.ws.endFrame(false);
+    ASSERT_TRUE(f.ws.run({Command::FitBlinnPhong}));
+    EXPECT_TRUE(f.ws.view.compare);
+    EXPECT_FALSE(f.ws.view.editingB);
+    EXPECT_EQ(f.ws.b().brdf, BrdfModel::BlinnPhong);
+    EXPECT_NEAR(f.ws.b().material.shininess, 68.0f, 1.0f); // 3.4× Phong's 20 (tests/fit_test.cpp)
+    EXPECT_EQ(f.ws.b().material.diffuse, f.ws.a().material.diffuse) << "everything else is A's";
+    EXPECT_NE(f.ws.fitNote().find("Blinn-Phong fitted to A, error "), std::string::npos) << f.ws.fitNote();
+    const std::vector<std::string> notes = f.ws.takeNotes();
+    ASSERT_FALSE(notes.empty());
+    EXPECT_NE(notes.back().find("shininess"), std::string::npos) << notes.back();
+    f.ws.b().material.shininess = 30.0f; // B edited: no longer the fit
+    EXPECT_TRUE(f.ws.fitNote().empty());
+
+    ASSERT_TRUE(f.ws.run({Command::FitCookTorrance, {}, 2}));
+    EXPECT_EQ(f.ws.b().brdf, BrdfModel::CookTorrance);
+    EXPECT_EQ(f.ws.b().cookTorrance.distribution, Distribution::Ggx);
+    f.ws.a().material.shininess = 10.0f; // A edited: the fit is of another lobe
+    EXPECT_TRUE(f.ws.fitNote().empty());
+
+    f.ws.a().terms.specular = false; // nothing to fit: B stays as it was, a note says why
+    const Preset before = f.ws.b();
+    ASSERT_TRUE(f.ws.run({Command::FitPhong}));
+    EXPECT_EQ(f.ws.b(), before);
+    EXPECT_NE(f.ws.takeNotes().back().find("nothing to fit"), std::string::npos);
 }
 
 } // namespace

@@ -170,7 +170,8 @@ ui::ScreenModel App::Impl::screenModel() {
     m.captions = {name, doc.dirty(), m.a, m.b, workspace.view.mode, frameTimeShown() ? speed.shownMs(clock) : std::nullopt,
                  toastLeft > 0.0f ? toast.c_str() : nullptr, caption,
                  probe.shown() ? std::optional<glm::vec3>(probe.result()->positionWorld) : std::nullopt, probe.lobe(),
-                 readout.legend(workspace.view, workspace.a(), renders[0].range()), std::nullopt, false};
+                 readout.legend(workspace.view, workspace.a(), renders[0].range()), std::nullopt, false, false,
+                 workspace.fitNote()};
     m.lightShapes = lightShapes;
     m.motion = anyOrbit(workspace.a()) ? &orbits.motion(0) : nullptr;
     if (const std::optional<ExerciseSession>& ex = workspace.exercise()) {

@@ -265,6 +265,8 @@ void fieldSections(Writer& w, Preset& p, const Exercise* exercise) {
                 buttons(section, {Command::LoadModel});
             } else if (s.group == G::Plot) {
                 buttons(section, {Command::ExportFigures});
+            } else if (s.group == G::Brdf && !exercise) { // the fit goes into B (in an exercise B is the target)
+                buttons(section, {Command::FitPhong, Command::FitBlinnPhong, Command::FitCookTorrance});
             } else {
                 section.key("buttons").open('[').close(']');
             }

@@ -137,7 +137,7 @@ bool Workspace::run(const Request& r) {
     case Command::Revert: doc_.revert(); return true;
     case Command::Undo: doc_.undo(); return true;
     case Command::Redo: doc_.redo(); return true;
-    default: return runExercise(r) || runEdit(r.command);
+    default: return runExercise(r) || runFit(r) || runEdit(r.command);
     }
 }
 

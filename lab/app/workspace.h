@@ -17,6 +17,7 @@
 #include "core/gltf/mesh_cache.h"
 #include "core/io/diagnostics.h"
 #include "core/io/image.h"
+#include "core/lighting/lighting.h"
 #include "core/scene/view_mode.h"
 #include "ui/actions.h"
 
@@ -144,6 +145,11 @@ public:
     // Counts the scenes opened (files, links): what belonged to the last scene can be dropped.
     unsigned scenesOpened() const { return scenesOpened_; }
 
+    //--- fitting (core/plots/fit.h, workspace_fit.cpp) -------------------------------------
+    // What B is while it is the fit of A that a Fit command made and neither has changed since:
+    // "Blinn-Phong fitted to A, error 23.5%: shininess 67.9, specular × 0.988". Empty otherwise.
+    const std::string& fitNote();
+
     //--- a question for the user: discard unsaved changes? -------------------------------
     const std::optional<std::string>& question() const { return question_; } // "open x.json", "quit"
     void answer(UnsavedAnswer answer);
@@ -183,6 +189,7 @@ private:
     void problem(std::string title, std::string message);
     std::filesystem::path bundledFolder() const;
     bool runExercise(const Request& request);
+    bool runFit(const Request& request);
     void keepExercise();
     void saveExercise(const std::string& path);
 
@@ -211,6 +218,11 @@ private:
     std::string exerciseLink_;
     unsigned exerciseLinkFor_ = 0; // ExerciseSession::opened of exerciseLink_
     std::optional<ExerciseDraft> draft_;
+    struct {
+        SurfaceUniforms a; // A's material and BRDF the fit was made from
+        Preset b;          // the fit, as it went into B
+        std::string note;  // empty: no fit
+    } fit_;
     struct {
         std::string text;
         Preset preset;

@@ -70,6 +70,9 @@ constexpr std::array kRows = {
     CommandRow{C::OrbitDown,          0,                   kNoModifier,   "Orbit down",       ""},
     CommandRow{C::ZoomIn,             0,                   kNoModifier,   "Zoom in",          ""},
     CommandRow{C::ZoomOut,            0,                   kNoModifier,   "Zoom out",         ""},
+    CommandRow{C::FitPhong,           0,                   kNoModifier,   "Fit Phong",        ""},
+    CommandRow{C::FitBlinnPhong,      0,                   kNoModifier,   "Fit Blinn-Phong",  ""},
+    CommandRow{C::FitCookTorrance,    0,                   kNoModifier,   "Fit Cook-Torrance", ""},
     CommandRow{C::ToggleLightMotion,  0,                   kNoModifier,   "Pause moving lights", ""},
 };
 // clang-format on

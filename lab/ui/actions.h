@@ -41,6 +41,9 @@ enum class Command {
     ToggleNormalMatrix, NextViewMode, ToggleWireframe, ToggleVertexNormals, ToggleCompare, ResetCamera, FrameModel,
     // The camera in steps (the page's buttons: a keyboard's and a single pointer's way to orbit and zoom)
     OrbitLeft, OrbitRight, OrbitUp, OrbitDown, ZoomIn, ZoomOut,
+    // Fitting (core/plots/fit.h): B becomes that model fitted to A's specular lobe, in compare mode
+    // (FitCookTorrance's Request::index is the distribution; -1: A's own, else Beckmann)
+    FitPhong, FitBlinnPhong, FitCookTorrance,
     // The window and its tools (the app carries these out)
     ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
     ToggleLightShapes, ToggleLightMotion,

@@ -271,18 +271,27 @@ double fitError(const Preset& target, const Preset& candidate) {
     return std::sqrt(v.E / objective.targetSquares());
 }
 
-std::string FitResult::summary() const {
+std::string FitResult::modelText() const {
     std::string s = std::string(label(fitted.brdf));
     if (fitted.brdf == BrdfModel::CookTorrance) {
         s += " (" + std::string(toString(fitted.cookTorrance.distribution)) + ")";
     }
-    s += ":";
-    for (std::size_t i = 0; i < parameters.size(); ++i) {
-        const FitParameter& p = parameters[i];
-        const std::string name = p.name == "specular scale" ? "specular ×" : p.name.substr(p.name.find('.') + 1);
-        s += (i == 0 ? " " : ", ") + name + " " + number(p.value);
+    return s;
+}
+
+std::string FitResult::parametersText() const {
+    std::string s;
+    for (const FitParameter& p : parameters) {
+        const std::string name = p.name == "specular scale" ? "specular \xc3\x97" : p.name.substr(p.name.find('.') + 1);
+        s += (s.empty() ? "" : ", ") + name + " " + number(p.value);
     }
-    return s + "; remaining error " + number(100.0 * error) + "%";
+    return s;
+}
+
+std::string FitResult::errorText() const { return number(100.0 * error) + "%"; }
+
+std::string FitResult::summary() const {
+    return modelText() + ": " + parametersText() + "; remaining error " + errorText();
 }
 
 std::vector<std::string> FitResult::boundsThatBind() const {

@@ -48,6 +48,10 @@ struct FitResult {
 
     // One line: "Blinn-Phong: shininess 68.3, specular × 0.97; remaining error 4.2%".
     std::string summary() const;
+    // Its parts: "Blinn-Phong" ("Cook-Torrance (ggx)"), "shininess 68.3, specular × 0.97" and "4.2%".
+    std::string modelText() const;
+    std::string parametersText() const;
+    std::string errorText() const;
     // Each bound that binds, one sentence each (empty when none does).
     std::vector<std::string> boundsThatBind() const;
 };

@@ -151,6 +151,28 @@ void fieldRowsOf(std::string_view object, Preset& p, LightDesc* light, int light
 
 void nothingAfter(const FieldRow&, const std::string&) {}
 
+// Fit a model to this specular lobe (core/plots/fit.h): the fit goes into B, beside A in compare mode.
+void fitRow(PanelState& state, std::vector<Request>& requests) {
+    disabledWrapped("Fit a model to this specular lobe (least squares over the incident angles; the fit goes into B):");
+    for (Command c : {Command::FitPhong, Command::FitBlinnPhong}) {
+        commandButton(c, requests);
+        mark(c == Command::FitPhong ? "brdf.fit-phong" : "brdf.fit-blinn-phong");
+        ImGui::SameLine();
+    }
+    const char* ct = commandRow(Command::FitCookTorrance).label;
+    sameLineIfFits(ct);
+    if (ImGui::Button(ct)) {
+        requests.push_back({Command::FitCookTorrance, {}, state.fitDistribution});
+    }
+    mark("brdf.fit-cook-torrance");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("beckmann").x + ImGui::GetFrameHeight() * 2.0f);
+    const char* names[] = {kDistributionChoices[0].label, kDistributionChoices[1].label, kDistributionChoices[2].label};
+    ImGui::Combo("##fit-distribution", &state.fitDistribution, names, 3);
+    mark("brdf.fit-distribution");
+    itemTooltip("The distribution D of the fitted Cook-Torrance");
+}
+
 void materialSection(Preset& p, const FieldGate& gate) {
     // Shininess applies to Phong and Blinn-Phong only (the roughness m shapes Cook-Torrance's lobe).
     fieldRowsOf("material", p, nullptr, 0, gate, nothingAfter);
@@ -468,6 +490,9 @@ void controlPanel(Preset& preset, DisplaySettings& view, const PanelInfo& info, 
     if (material && gate.any({"brdf", "cook_torrance"}) &&
         ImGui::CollapsingHeader("Reflection model (BRDF)", ImGuiTreeNodeFlags_DefaultOpen)) {
         brdfSection(preset, gate);
+        if (!info.exercise && !view.editingB) { // A's lobe; in an exercise B is the target
+            fitRow(state, requests);
+        }
     }
     if (material && ImGui::CollapsingHeader("Shading and terms", ImGuiTreeNodeFlags_DefaultOpen)) {
         shadingSection(preset, view, gate);

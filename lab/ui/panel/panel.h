@@ -44,6 +44,7 @@ struct PanelState {
     float figureScale = 2.0f;   // Export figures' PNGs: 1 is 720 pixels wide (kFigureScales)
     std::string exercisePath;   // "Make exercise": where it is saved
     Theme theme = Theme::Dark;  // the UI's, the plots' and the exported figures' colours (core/plots/theme.h)
+    int fitDistribution = 0;    // the fitted Cook-Torrance's distribution, in kDistributions' order
 };
 
 // The PNG scales Export figures offers: 720, 1440 (a projector, the default) and 2880 pixels wide.

@@ -436,7 +436,9 @@ void compareLabels(const CaptionStrips& m, const Layout& layout, ImDrawList* dl)
         float pad = inset();
         // "A: shading Gouraud  |  BRDF Phong", or where that is too wide "A: Gouraud, Phong".
         std::string text = m.exercise ? (i == 0 ? "Your attempt" : "Target") : setSummary(i == 0 ? "A: " : "B: ", *sets[i]);
-        if (!m.exercise && ImGui::CalcTextSize(text.c_str()).x > r.w - 2 * pad) {
+        if (!m.exercise && i == 1 && !m.fitNote.empty()) { // what the fit found, its error first
+            text = "B: " + m.fitNote;
+        } else if (!m.exercise && ImGui::CalcTextSize(text.c_str()).x > r.w - 2 * pad) {
             text = std::string(i == 0 ? "A: " : "B: ") + label(sets[i]->shading) + ", " + label(sets[i]->brdf);
         }
         text = fitText(text, r.w - 2 * pad);

@@ -75,6 +75,7 @@ struct CaptionStrips {
     std::optional<float> wipeAt;               // the wipe's divider, while the wipe is on
     bool exercise = false;                     // compare mode's halves are an exercise's attempt and target: their labels say so, not the target's settings
     bool wipeDragged = false;
+    std::string fitNote;                       // B is a fit of A (app/workspace.h fitNote): B's label says so
 };
 
 // What the caption strips' text needs, measured with the current font: placeText (ui/layout.h) gives
