@@ -594,7 +594,7 @@ TEST(Workspace, ExportedFiguresGoToANewFolderEachTimeOrAreDownloads) {
     f.ws.saveFiles(files, "Figures");
     EXPECT_TRUE(f.ws.takeProblems().empty());
     for (const char* folder : {"red-figures-002", "red-figures-003"}) {
-        for (const char* name : {"lobe.svg", "overlay.png", "attenuation.csv", "albedo.png"}) {
+        for (const char* name : {"lobe.svg", "overlay.png", "attenuation.csv", "albedo.png", "slice.csv"}) {
             EXPECT_TRUE(fs::exists(f.dir.path() / "shots" / folder / name)) << folder << "/" << name;
         }
     }
@@ -604,13 +604,13 @@ TEST(Workspace, ExportedFiguresGoToANewFolderEachTimeOrAreDownloads) {
     EXPECT_EQ(readPng(fs::path(f.dir.path() / "shots" / "red-figures-003" / "lobe.png"), error)->rgb, png->rgb);
     Preset dark = f.ws.a();
     dark.lights.clear();
-    EXPECT_EQ(exportFigures(dark, nullptr, settings, 2.0f, Theme::Light).size(), 9u) << "no light, no attenuation figure";
+    EXPECT_EQ(exportFigures(dark, nullptr, settings, 2.0f, Theme::Light).size(), 12u) << "no light, no attenuation figure";
 
     Workspace browser(WorkspaceOptions{{}, "/nonexistent-screenshots", true, {}});
     browser.start(f.dir.path(), f.red);
     browser.saveFiles(files, "Figures");
     std::vector<Download> downloads = browser.takeDownloads();
-    ASSERT_EQ(downloads.size(), 12u);
+    ASSERT_EQ(downloads.size(), 15u);
     EXPECT_EQ(downloads[0].name, "red-" + files[0].name);
 }
 
