@@ -6,6 +6,7 @@
 #include "ui/plots/slice_parts.h"
 
 #include "core/lighting/lighting.h"
+#include "core/plots/describe.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -240,6 +241,22 @@ TEST(SliceView, TheKeptImagesNeverShowStaleData) {
         cold.slice.compare = warm.slice.compare;
         EXPECT_TRUE(sameDrawing(cached, drawPlots(r, 1280, 800, a, compare, cold))) << "after an edit of the " << what;
     }
+}
+
+// The page's words for the slice (core/plots/describe.h), computed from the image: Blinn-Phong's specular
+// is Ks cos^n θh, the same at every θd, above half its peak while cos^32 θh > 0.5 (θh ≤ 11°); Phong's
+// depends on θd too; a switched-off term says so.
+TEST(SliceView, TheWordsForTheSliceComeFromItsImage) {
+    Preset blinn = blinnPhong();
+    const std::string b = describeSlice(blinn);
+    for (const char* want : {"largest 1.000 at theta h 0", "up to theta h 11 degrees", "vertical stripes"}) {
+        EXPECT_NE(b.find(want), std::string::npos) << want << " in: " << b;
+    }
+    Preset phong = blinn;
+    phong.brdf = BrdfModel::Phong;
+    EXPECT_NE(describeSlice(phong).find("changes with theta d"), std::string::npos) << describeSlice(phong);
+    blinn.terms.specular = false;
+    EXPECT_NE(describeSlice(blinn).find("0 everywhere"), std::string::npos) << describeSlice(blinn);
 }
 
 } // namespace
