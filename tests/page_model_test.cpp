@@ -110,6 +110,7 @@ TEST(PageModel, EveryFieldThatAppliesHasItsControlWithTheTablesRange) {
     expectEveryRowHasItsControl(ws, page);
     EXPECT_NE(page["pictures"]["description"].get<std::string>().find("Cook-Torrance"), std::string::npos)
         << page["pictures"]["description"];
+    EXPECT_EQ(page["pictures"]["slice"].get<std::string>(), describeSlice(ws.a())) << "the Slice tab in words";
 }
 
 TEST(PageModel, EditsAndCommandsFromThePageTakeThePanelsWay) {

@@ -1,11 +1,8 @@
 // plot_panel_test.cpp — the plots panel, drawn on the CPU (an ImGui context without a renderer)
 // into the window the app gives it, at every window size and UI scale a class may use: nothing
 // makes the window scroll, and every canvas lies inside the window.
-#include "cpu_imgui.h"
-#include "ui/layout.h"
-#include "ui/plots/plots.h"
+#include "plot_panel_kit.h"
 #include "core/plots/energy.h"
-#include "ui/widget_map.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -23,101 +20,7 @@
 namespace lab {
 namespace {
 
-struct Outcome {
-    float scrollX = 0, scrollY = 0;
-    std::string widgets;            // the widget map's text
-    std::vector<ImDrawVert> vertices; // everything the last frame drew, in order
-    std::vector<ImDrawIdx> indices;
-};
-
-bool sameDrawing(const Outcome& x, const Outcome& y) {
-    return x.vertices.size() == y.vertices.size() && x.indices == y.indices &&
-           std::memcmp(x.vertices.data(), y.vertices.data(), x.vertices.size() * sizeof(ImDrawVert)) == 0;
-}
-
-// A few frames of the plots window at r, as screen.cpp opens it; what the last one left.
-Outcome drawPlots(ui::Rect r, float displayW, float displayH, Preset& a, const Preset* b, ui::PlotSettings& settings,
-                  int frames = 3) {
-    ImGui::GetIO().DisplaySize = ImVec2(displayW, displayH);
-    Outcome out;
-    for (int frame = 0; frame < frames; ++frame) {
-        ui::widgets().clear();
-        ImGui::NewFrame();
-        ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
-        ImGui::SetNextWindowSize(ImVec2(r.w, r.h));
-        ImGui::Begin("Reflected intensity###plots", nullptr,
-                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                         ImGuiWindowFlags_NoSavedSettings);
-        ui::plotsPanel(a, b, settings, nullptr);
-        out.scrollX = ImGui::GetScrollMaxX();
-        out.scrollY = ImGui::GetScrollMaxY();
-        ImGui::End();
-        ImGui::Render();
-    }
-    out.widgets = ui::widgets().text();
-    const ImDrawData* drawn = ImGui::GetDrawData();
-    for (int i = 0; i < drawn->CmdListsCount; ++i) {
-        const ImDrawList* list = drawn->CmdLists[i];
-        out.vertices.insert(out.vertices.end(), list->VtxBuffer.begin(), list->VtxBuffer.end());
-        out.indices.insert(out.indices.end(), list->IdxBuffer.begin(), list->IdxBuffer.end());
-    }
-    return out;
-}
-
-// "name x y w h" lines of the widget map.
-std::map<std::string, ui::Rect> rects(const std::string& text) {
-    std::map<std::string, ui::Rect> m;
-    std::istringstream in(text);
-    std::string name;
-    ui::Rect r;
-    while (in >> name >> r.x >> r.y >> r.w >> r.h) {
-        m[name] = r;
-    }
-    return m;
-}
-
-// Every window a class may use at each UI scale, and the plots' rectangle in it: the app's, and
-// both shapes it may take whatever the app decides (a right column and a band below the model).
-// check(r, W, H, where) draws and checks; `where` names the case for the messages.
-using PlotsCheck = std::function<void(const ui::Rect& r, float W, float H, const std::string& where)>;
-void forEachPlotsWindow(std::initializer_list<float> scales, std::initializer_list<std::pair<float, float>> windows,
-                        const PlotsCheck& check) {
-    for (float s : scales) {
-        CpuImGui imgui(s);
-        const float uiScale = ImGui::GetIO().Fonts->Fonts[0]->FontSize / 13.0f; // as the app's uiScale()
-        for (auto [W, H] : windows) {
-            ui::LayoutInput in;
-            in.width = W;
-            in.height = H;
-            in.uiScale = uiScale;
-            ui::Layout layout = ui::computeLayout(in);
-            const ui::Rect shapes[] = {layout.plots, {W - 0.3f * W, 0, 0.3f * W, H}, {0.35f * W, 0.58f * H, 0.65f * W, 0.42f * H}};
-            for (const ui::Rect& r : shapes) {
-                if (r.w < 1.0f || r.h < 1.0f) {
-                    continue;
-                }
-                check(r, W, H,
-                      "scale " + std::to_string(s) + ", window " + std::to_string(int(W)) + "x" + std::to_string(int(H)) +
-                          ", plots " + std::to_string(int(r.w)) + "x" + std::to_string(int(r.h)));
-            }
-        }
-    }
-}
-
-// Nothing scrolls, and every plot widget lies inside the plots' rectangle.
-void expectFits(const Outcome& out, const ui::Rect& r, const std::string& where) {
-    EXPECT_EQ(out.scrollY, 0.0f) << where;
-    EXPECT_EQ(out.scrollX, 0.0f) << where;
-    for (const auto& [name, w] : rects(out.widgets)) {
-        if (name.rfind("plot.", 0) != 0) {
-            continue;
-        }
-        EXPECT_GE(w.x, r.x) << name << ", " << where;
-        EXPECT_GE(w.y, r.y) << name << ", " << where;
-        EXPECT_LE(w.x + w.w, r.x + r.w + 0.5f) << name << ", " << where;
-        EXPECT_LE(w.y + w.h, r.y + r.h + 0.5f) << name << ", " << where;
-    }
-}
+using namespace plotpanel;
 
 TEST(PlotPanel, FitsItsWindowAtEverySizeAndScale) {
     forEachPlotsWindow({1.0f, 1.5f, 2.0f, 2.5f}, {{1024, 768}, {1280, 800}, {1600, 900}, {1920, 1080}, {2560, 1440}},
@@ -486,7 +389,7 @@ TEST(PlotPanel, TheAlbedoLagsDuringAChangeAndIsExactTheFrameAfterIt) {
 TEST(PlotPanel, AfterADragTheNextFrameDrawsWhatAColdCacheDraws) {
     CpuImGui imgui(1.0f);
     ui::Rect r{900, 0, 380, 800};
-    for (ui::PlotTab view : {ui::PlotTab::Plane, ui::PlotTab::Lobe3d, ui::PlotTab::Energy}) {
+    for (ui::PlotTab view : {ui::PlotTab::Plane, ui::PlotTab::Lobe3d, ui::PlotTab::Energy, ui::PlotTab::Slice}) {
         Preset a;
         ui::PlotSettings warm;
         warm.view = view;
@@ -500,12 +403,19 @@ TEST(PlotPanel, AfterADragTheNextFrameDrawsWhatAColdCacheDraws) {
                 // The coarse grid: fewer vertices than the full grid's surface alone.
                 EXPECT_LT(during.vertices.size(), std::size_t(kLobeRings * kLobeMeridians)) << "frame " << i << " of the drag";
             }
+            if (view == ui::PlotTab::Slice && i > 1) {
+                // The coarse image (19 × 19): fewer vertices than the full image alone.
+                EXPECT_LT(during.vertices.size(), std::size_t(kSliceSide * kSliceSide)) << "frame " << i << " of the drag";
+            }
         }
         EXPECT_TRUE(owed) << "view " << int(view) << ": a drag's readouts lag, and ask for a frame";
         Outcome next = drawPlots(r, 1280, 800, a, nullptr, warm, 1);
         EXPECT_FALSE(warm.cache.owed()) << "view " << int(view);
         if (view == ui::PlotTab::Lobe3d) {
             EXPECT_GT(next.vertices.size(), std::size_t(2 * kLobeRings * kLobeMeridians)) << "the full surface and map";
+        }
+        if (view == ui::PlotTab::Slice) {
+            EXPECT_GT(next.vertices.size(), std::size_t(kSliceSide * kSliceSide)) << "the full image";
         }
         ui::PlotSettings cold;
         cold.view = view;

@@ -217,6 +217,7 @@
     body.replaceChildren(...p.plot.rows.map((r) => el('tr', {}, el('th', { scope: 'row', text: r[0] + '°' }),
       ...r.slice(1).map((v) => el('td', { text: v.toFixed(3) })))));
     document.getElementById('lab-lobe').textContent = p.lobe;
+    document.getElementById('lab-slice').textContent = p.slice;
     describedAt = performance.now();
   }
 

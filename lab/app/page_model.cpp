@@ -282,7 +282,7 @@ void pictures(Writer& w, const Preset& p) {
     for (const PlotSample& s : plot.rows) {
         w.open('[').num(s.thetaOutDeg).num(s.diffuse).num(s.specular).num(s.total).close(']');
     }
-    w.close(']').close('}').key("lobe").str(describeLobe(p)).close('}');
+    w.close(']').close('}').key("lobe").str(describeLobe(p)).key("slice").str(describeSlice(p)).close('}');
 }
 
 std::string join(const std::vector<std::string>& lines) {

@@ -107,6 +107,7 @@ void panels(const Layout& layout, ScreenModel& m, ScreenEvents& events) {
     }
     if (layout.plots.w > 0.0f) {
         beginFixed("Reflected intensity###plots", layout.plots, extra);
+        m.plots->palette = m.view->palette; // the slice's colours are the value views'
         plotsPanel(*m.a, m.captions.exercise ? nullptr : m.b, *m.plots, m.probe && *m.probeOpen ? m.probe : nullptr, m.probeLobe);
         ImGui::End();
         widgets().set("plots", layout.plots);

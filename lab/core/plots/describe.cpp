@@ -2,6 +2,7 @@
 #include "core/plots/describe.h"
 
 #include "core/plots/energy.h"
+#include "core/plots/slice.h"
 #include "core/scene/field_table.h"
 
 #include <glm/glm.hpp>
@@ -144,6 +145,38 @@ std::string describeLobe(const Preset& preset) {
                 fixed(albedoOf(*a, PlotComponent::Diffuse), 3) + ", specular " +
                 fixed(albedoOf(*a, PlotComponent::Specular), 3) + ", total " + fixed(albedoOf(*a, PlotComponent::Total), 3) + ".";
     }
+    return text;
+}
+
+std::string describeSlice(const Preset& preset) {
+    const SliceImage image = sampleSlice(packSurfaceUniforms(preset));
+    const std::vector<float>& values = image.component(PlotComponent::Specular);
+    const float largest = image.largest(PlotComponent::Specular);
+    if (!(largest > kNothingLit)) {
+        return "The slice over the half angle and the difference angle: the specular term is 0 everywhere.";
+    }
+    const int n = image.side();
+    int at = 0, reach = 0; // the largest value's sample; the largest half angle above half of it
+    float spread = 0.0f;   // the most a column changes along the difference angle, over the largest
+    for (int column = 0; column < n; ++column) {
+        float lo = values[static_cast<std::size_t>(column)], hi = lo;
+        for (int row = 0; row < n; ++row) {
+            const int k = image.index(column, row);
+            const float v = values[static_cast<std::size_t>(k)];
+            at = v > values[static_cast<std::size_t>(at)] ? k : at;
+            reach = v > 0.5f * largest ? std::max(reach, column) : reach;
+            lo = row + 1 < n ? std::min(lo, v) : lo; // the 90 degree row is 0 (no light arrives): left out
+            hi = row + 1 < n ? std::max(hi, v) : hi;
+        }
+        spread = column + 1 < n ? std::max(spread, (hi - lo) / largest) : spread;
+    }
+    const int step = image.stepDeg;
+    std::string text = "The slice over the half angle theta h and the difference angle theta d (phi d 90 degrees), specular "
+                       "term: largest " + fixed(largest, 3) + " at theta h " + std::to_string(at % n * step) +
+                       ", theta d " + std::to_string(at / n * step) + " degrees; above half of it up to theta h " +
+                       std::to_string(reach * step) + " degrees.";
+    text += spread < 0.02f ? " It is the same at every theta d: vertical stripes, a function of N.H alone."
+                           : " It changes with theta d as well as theta h.";
     return text;
 }
 

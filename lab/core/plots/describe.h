@@ -3,7 +3,7 @@
 // What a student who cannot see the canvas reads instead (the page's parallel DOM, web/access.js):
 // the model's view described from the camera (the model, its shading and BRDF, each light and
 // where it is, where the highlight falls), the plane plot as a short summary and a table of its
-// numbers, the lobe's peak and the albedo. Words only from the preset and the lighting model's
+// numbers, the lobe's peak and the albedo, the (θh, θd) slice. Words only from the preset and the lighting model's
 // numbers (plot_data.h, energy.h); no UI.
 #pragma once
 
@@ -35,5 +35,10 @@ PlotWords describePlanePlot(const Preset& preset, int stepDeg = 5);
 // The lobe's and the energy's summary: the peak of the specular lobe and its direction, the albedo
 // of each term at the plot's incident angle.
 std::string describeLobe(const Preset& preset);
+
+// The Slice tab's image in one or two sentences (core/plots/slice.h, the specular term, as the tab
+// opens): its largest value and where, how far in θh it stays above half of that, and whether it is
+// the same at every θd (a model of N·H alone: vertical stripes). From the full image (8281 values).
+std::string describeSlice(const Preset& preset);
 
 } // namespace lab

@@ -1,11 +1,12 @@
 // plot_settings.h — what the plots window keeps between frames: the tab shown, the radial scale,
-// the dragged vectors, the overlaid angles, the plot cache and the 3D lobe's state. Every plot tab
-// (plots_plane, plots_3d, plots_energy) and the plot kit read it; plots.h draws the window.
+// the dragged vectors, the overlaid angles, the plot cache, the 3D lobe's and the slice's state. Every
+// plot tab (plots_plane, plots_3d, plots_energy, plots_slice) and the plot kit read it; plots.h draws the window.
 #pragma once
 
 #include "core/plots/plot_data.h"
 #include "ui/plots/plot_cache.h"
 #include "ui/plots/plots_3d.h"
+#include "ui/plots/plots_slice.h"
 
 #include <array>
 #include <optional>
@@ -13,7 +14,7 @@
 namespace lab::ui {
 
 // The plots window's views, one tab each in this order (plots.cpp's table names and draws them).
-enum class PlotTab { Plane, Lobe3d, Energy };
+enum class PlotTab { Plane, Lobe3d, Energy, Slice };
 
 struct PlotSettings {
     PlotTab view = PlotTab::Plane;
@@ -29,6 +30,10 @@ struct PlotSettings {
     int dragging = 0; // 0 none, 1 L, 2 V
     PlotCache cache;  // samples and curves of earlier frames, found again by their inputs
     Lobe3dState lobe3d; // the 3D lobe's camera, component and kept meshes (ui/plots/plots_3d.h)
+    SliceState slice;   // the slice's component, compare choice and kept images (ui/plots/plots_slice.h)
+    // The value views' palette (DisplaySettings::palette), which the slice is drawn in: the screen
+    // sets it each frame from the view's settings; the plots keep no palette of their own.
+    ValuePalette palette = ValuePalette::Viridis;
 };
 
 } // namespace lab::ui

@@ -1,8 +1,9 @@
 // plots.cpp — the plots window: the views' selector, and the chosen view drawn below it (the
-// Plane view, plots_plane.cpp; the 3D lobe, plots_3d.cpp; Energy, plots_energy.cpp).
+// Plane view, plots_plane.cpp; the 3D lobe, plots_3d.cpp; Energy, plots_energy.cpp; Slice, plots_slice.cpp).
 #include "ui/plots/plots.h"
 #include "ui/plots/plots_energy.h"
 #include "ui/plots/plots_plane.h"
+#include "ui/plots/plots_slice.h"
 
 #include "ui/widgets.h"
 
@@ -27,6 +28,8 @@ const ViewEntry kViews[] = {
      [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*, const ProbeLobe* point) { lobe3dPanel(a, b, s, point); }},
     {PlotTab::Energy, "Energy", "plot.view.energy",
      [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*, const ProbeLobe*) { energyPanel(a, b, s); }},
+    {PlotTab::Slice, "Slice", "plot.view.slice",
+     [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*, const ProbeLobe*) { slicePanel(a, b, s); }},
 };
 
 } // namespace

@@ -30,7 +30,8 @@
 namespace lab::ui {
 
 // Draws the view selector and the chosen view into the current ImGui window's remaining content
-// region: "Plane" (the plots below), "3D lobe" (ui/plots/plots_3d.h) or "Energy" (ui/plots/plots_energy.h).
+// region: "Plane" (the plots below), "3D lobe" (ui/plots/plots_3d.h), "Energy" (ui/plots/plots_energy.h)
+// or "Slice" (ui/plots/plots_slice.h, drawn in settings.palette).
 // Dragging L edits a.plotIncidentDeg (part of the preset, so it is undoable and saved). `b` is the
 // compare set, overlaid when given. The probe's vectors are drawn only when `probe` is given;
 // `point`, the probed point's lobe, turns plots at the probe on.

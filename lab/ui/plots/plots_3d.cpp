@@ -207,29 +207,6 @@ void wireframe(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) 
     }
 }
 
-// Copies a kept mesh into the draw list (ImGui's 16-bit indices: the caller keeps the vertex
-// count under 65536; a mesh that would not fit is left out rather than drawn wrong).
-void drawMesh(ImDrawList* dl, const std::vector<ImVec2>& positions, const std::vector<ImU32>& colors,
-              const std::vector<unsigned>& indices) {
-    const int vtx = static_cast<int>(positions.size()), idx = static_cast<int>(indices.size());
-    if (vtx == 0 || idx == 0) {
-        return;
-    }
-    dl->PrimReserve(idx, vtx);
-    const unsigned base = dl->_VtxCurrentIdx;
-    if (sizeof(ImDrawIdx) == 2 && base + static_cast<unsigned>(vtx) > 0xFFFFu) {
-        dl->PrimUnreserve(idx, vtx);
-        return;
-    }
-    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
-    for (int k = 0; k < vtx; ++k) {
-        dl->PrimWriteVtx(positions[static_cast<std::size_t>(k)], uv, colors[static_cast<std::size_t>(k)]);
-    }
-    for (unsigned i : indices) {
-        dl->PrimWriteIdx(static_cast<ImDrawIdx>(base + i));
-    }
-}
-
 //----------------------------------------------------------------------------------------
 // The canvases
 //----------------------------------------------------------------------------------------
