@@ -16,6 +16,8 @@ std::vector<Download> exportFigures(const Preset& a, const Preset* b, const ui::
         r.overlayDeg = settings.overlayDeg;
         r.light = settings.attenuationLight;
         r.theme = theme;
+        r.component = settings.slice.component; // the Slice tab's image, in the view's palette
+        r.palette = settings.palette;
         std::string error;
         std::optional<FigureResult> f = makeFigure(a, b, r, error);
         if (!f) {
