@@ -115,6 +115,7 @@ TEST(Fit, ChangesOnlyTheModelAndItsParametersAndIsDeterministic) {
     expected.brdf = BrdfModel::BlinnPhong;
     expected.material.shininess = a.fitted.material.shininess;
     expected.material.specular = a.fitted.material.specular;
+    expected.name = target.name + " (Blinn-Phong fit)";
     EXPECT_EQ(a.fitted, expected);
     EXPECT_NEAR(fitError(target, a.fitted), a.error, 1e-6);
     EXPECT_NEAR(fitError(target, target), 0.0, 1e-9);

@@ -94,7 +94,7 @@ const CLI::Validator kThemeName(
     "dark|light");
 
 struct FigureArguments {
-    std::string kind = "lobe", svg, png, csv, theme = "light", component = "specular";
+    std::string kind = "lobe", svg, png, csv, theme = "light", component = "specular", compare;
     float scale = 1.0f;
     int light = 1;
     bool log = false;
@@ -118,6 +118,9 @@ void addFigureOptions(CLI::App* plot, FigureArguments& a) {
                        ->check(CLI::IsMember(kinds))
                        ->capture_default_str();
     plot->add_option("--svg", a.svg, "SVG file to write the figure to")->check(kNotEmpty);
+    plot->add_option("--compare", a.compare, "A second preset, B, drawn beside the first in the lobe, albedo and slice "
+                                            "figures (as the lab's compare mode)")
+        ->check(kNotEmpty);
     plot->add_option("--png", a.png, "PNG file to write the figure to")->check(kNotEmpty);
     plot->add_option("--csv", a.csv, "CSV file to write the figure's curves to")->check(kNotEmpty);
     a.scaleOption = plot->add_option("--scale", a.scale, "The PNG's scale: 1 is 720 pixels wide")
@@ -171,6 +174,19 @@ bool figureOutputs(const FigureArguments& a, FigureOutputs& out) {
     }
     if (!a.csv.empty()) {
         out.files.csv = a.csv;
+    }
+    if (!a.compare.empty()) {
+        out.compare = a.compare;
+        if (out.request.kind != FigureKind::Lobe && out.request.kind != FigureKind::Albedo &&
+            out.request.kind != FigureKind::Slice) {
+            print(stderr, "lab plot: --compare draws B in the lobe, albedo and slice figures, not in --figure " +
+                              std::string(toString(out.request.kind)) + "\n");
+            return false;
+        }
+        if (!out.any()) {
+            print(stderr, "lab plot: --compare is a figure's B: give --svg, --png or --csv FILE too\n");
+            return false;
+        }
     }
     if (a.scaleOption->count() && !out.files.png) {
         print(stderr, "lab plot: --scale is the PNG's: give --png FILE too\n");

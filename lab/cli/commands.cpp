@@ -372,6 +372,14 @@ int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float
     // Every file at most once (two outputs on one path would leave only the last), none the preset.
     RunFiles files;
     addPresetInputs(files, *preset);
+    std::optional<LoadedPreset> compare;
+    if (figure.compare) {
+        if (!(compare = loadPreset(*figure.compare, diagnostics))) {
+            printDiagnostics(diagnostics);
+            return kExitBadInput;
+        }
+        addPresetInputs(files, *compare, "the --compare preset");
+    }
     for (auto [flag, file] : {std::pair{"--out", std::optional<fs::path>(out.empty() ? std::nullopt : std::optional(out))},
                               std::pair{"--albedo", albedoOut}, std::pair{"--svg", figure.files.svg},
                               std::pair{"--png", figure.files.png}, std::pair{"--csv", figure.files.csv}}) {
@@ -405,7 +413,7 @@ int runPlot(const fs::path& presetFile, const fs::path& out, std::optional<float
     if (figure.any()) {
         FigureRequest request = figure.request;
         request.incidentDeg = angle;
-        std::optional<FigureResult> result = makeFigure(preset->preset, nullptr, request, error);
+        std::optional<FigureResult> result = makeFigure(preset->preset, compare ? &compare->preset : nullptr, request, error);
         if (!result) {
             print(stderr, "lab plot: --figure %s: %s\n", std::string(toString(request.kind)).c_str(), error.c_str());
             return kExitBadInput;

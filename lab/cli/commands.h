@@ -55,6 +55,7 @@ int runSweep(const std::vector<std::filesystem::path>& presets, const std::vecto
 struct FigureOutputs {
     FigureRequest request;
     FigureFiles files;
+    std::optional<std::filesystem::path> compare; // --compare B.json: B in the lobe, albedo and slice figures
     bool any() const { return files.svg || files.png || files.csv; }
 };
 

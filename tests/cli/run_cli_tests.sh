@@ -172,6 +172,14 @@ cp "$phong" "$tmp/mine.json"
 expect fit-never-overwrites-its-input 2 '^lab fit: --out .*mine\.json: is the preset' -- \
     "$lab" fit "$tmp/mine.json" --brdf phong --out "$tmp/mine.json"
 check fit-input-intact cmp -s "$phong" "$tmp/mine.json"
+# --compare: the fit beside its target, as the lab's compare mode draws them
+expect figure-compare-slice 0 'cmp\.svg' -- "$lab" plot "$ct" --compare "$tmp/fitted.json" --figure slice --svg "$tmp/cmp.svg"
+check figure-compare-slice-has-b grep -q '<image id="slice-b" ' "$tmp/cmp.svg"
+check fit-is-named-as-a-fit grep -q '"name": ".* (Blinn-Phong fit)"' "$tmp/fitted.json"
+expect figure-compare-not-overlay 2 '^lab plot: --compare draws B in the lobe, albedo and slice figures, not in --figure overlay' -- \
+    "$lab" plot "$ct" --compare "$tmp/fitted.json" --figure overlay --svg "$tmp/x.svg"
+expect figure-compare-broken 2 'broken\.json: material\.difuse' -- "$lab" plot "$ct" --compare "$src/tests/data/broken.json" --svg "$tmp/x.svg"
+check figure-compare-refusals-wrote-nothing test ! -e "$tmp/x.svg"
 
 # --- render --sweep: one preset as a labelled grid (core/scene/sweep.h) ---------------------------
 shin=$src/presets/06-shininess-10.json

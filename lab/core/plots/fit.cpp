@@ -255,6 +255,8 @@ std::optional<FitResult> fitSpecular(const Preset& target, const FitRequest& req
         fitPhongLike(objective, r);
     }
     r.evaluations = objective.evaluations();
+    // Named for what it is, so that a figure's or the lab's "B: …" does not pass it off as the target.
+    r.fitted.name = (target.name.empty() ? std::string("Untitled") : target.name) + " (" + r.modelText() + " fit)";
     return r;
 }
 

@@ -41,7 +41,7 @@ struct FitParameter {
 };
 
 struct FitResult {
-    Preset fitted;      // the target with the fitted model and parameters; everything else unchanged
+    Preset fitted;      // the target with the fitted model and parameters, named "<target's name> (<model> fit)"; else unchanged
     double error = 0.0; // √(E / Σ ∫ t² cos θo dω), 0 … (1 is as far as fitting nothing)
     std::vector<FitParameter> parameters;
     int evaluations = 0; // of the objective (each one 16 incident angles × the rule's directions)
