@@ -84,9 +84,13 @@ void panel(Page& page, const Panel& p, const std::string& title, Image image, Im
     const float barTop = box.lo.y + 2.0f * kTextSize + 3.0f * kPad;
     page.f.shapes.push_back(
         FigureImage{{p.corner.x, barTop}, {p.side, kBarHeight}, std::make_shared<const Image>(std::move(bar)), id + "-bar"});
-    for (const AxisTick& t : barTicks) {
+    for (std::size_t k = 0; k < barTicks.size(); ++k) {
+        const AxisTick& t = barTicks[k];
         const float x = p.corner.x + t.at * p.side;
         page.canvas.line({{x, barTop + kBarHeight}, {x, barTop + kBarHeight + kPad}}, kStyle.thin(), Ink::Axis);
+        if (barTicks.size() > 3 && p.side < 300.0f && k != 0 && k + 1 != barTicks.size()) {
+            continue; // a narrow bar: its ends' values only (the marks show the decades)
+        }
         const TextAnchor anchor = t.at < 0.01f ? TextAnchor::Start : t.at > 0.99f ? TextAnchor::End : TextAnchor::Middle;
         page.canvas.text({x, barTop + kBarHeight + kPad + kTextSize * 0.6f}, t.text.empty() ? tickText(t.value) : t.text,
                          kStyle.small(), Ink::Muted, anchor);
@@ -137,7 +141,8 @@ FigureResult sliceFigure(const Preset& a, const Preset* b, const FigureRequest& 
             largest = std::max(largest, std::fabs(v));
         }
         const float m = outerRing(largest);
-        panel(page, at(2), "A \xe2\x88\x92 B", sliceRaster(d.component(c), d.side(), [&](float v) { return divergingColor(v / m); }),
+        panel(page, at(2), "A \xe2\x88\x92 B",
+              sliceRaster(d.component(c), d.side(), [&](float v) { return divergingColor(differencePosition(v, m, r.scale)); }),
               barRaster([](float t) { return divergingColor(2.0f * t - 1.0f); }),
               {{0.0f, -m, "\xe2\x88\x92" + tickText(m) + " B"}, {0.5f, 0.0f}, {1.0f, m, tickText(m) + " A"}}, "slice-difference");
     }

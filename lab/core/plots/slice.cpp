@@ -123,6 +123,14 @@ glm::vec3 divergingColor(float t) {
     return glm::mix(stops[i], stops[i + 1], u - static_cast<float>(i)) / 255.0f;
 }
 
+float differencePosition(float v, float largestAbs, RadialScale scale) {
+    if (!(largestAbs > kNothingLit) || !std::isfinite(v)) {
+        return 0.0f;
+    }
+    const float t = plotRadius(std::fabs(v), largestAbs, scale);
+    return v < 0.0f ? -t : t;
+}
+
 std::string sliceCsv(const SliceImage& image) {
     std::string out = "theta_h_deg,theta_d_deg,diffuse,specular,total\n";
     const int n = image.side();

@@ -79,6 +79,10 @@ SliceMarker planeToSlice(float incidentDeg, float outgoingDeg);
 // purple where B reflects more (t < 0), near-white at 0, orange where A does (t > 0); linear between
 // its five stops, clamped outside [−1, 1].
 glm::vec3 divergingColor(float t);
+// Where a signed difference v goes on that palette, t in [−1, 1], for the largest |A − B| `largestAbs`:
+// v / largestAbs (linear), or sign(v)·plotRadius(|v|, largestAbs, Log), the plots' 3-decade log scale on
+// |v| (log: a difference a thousand times smaller than the largest still shows). 0 where both are 0.
+float differencePosition(float v, float largestAbs, RadialScale scale);
 
 // "theta_h_deg,theta_d_deg,diffuse,specular,total" and one row per sample, θh varying fastest.
 std::string sliceCsv(const SliceImage& image);

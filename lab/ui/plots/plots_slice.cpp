@@ -52,11 +52,11 @@ std::vector<ImU32> sliceColors(const std::vector<float>& values, float largest, 
     return colors;
 }
 
-std::vector<ImU32> differenceColors(const std::vector<float>& values, float largestAbs) {
+std::vector<ImU32> differenceColors(const std::vector<float>& values, float largestAbs, RadialScale scale) {
     std::vector<ImU32> colors;
     colors.reserve(values.size());
     for (float v : values) {
-        colors.push_back(rgb(divergingColor(largestAbs > kNothingLit ? v / largestAbs : 0.0f)));
+        colors.push_back(rgb(divergingColor(differencePosition(v, largestAbs, scale))));
     }
     return colors;
 }
@@ -153,7 +153,7 @@ SliceMesh meshOf(const Images& im, const SliceKey& key) {
         }
     }
     if (im.difference && key.rects[2].z > 0.0f) {
-        addImage(m, differenceColors(im.difference->component(key.component), im.largestDifference), side, key.rects[2]);
+        addImage(m, differenceColors(im.difference->component(key.component), im.largestDifference, key.scale), side, key.rects[2]);
     }
     return m;
 }

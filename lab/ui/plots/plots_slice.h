@@ -47,7 +47,8 @@ enum class SliceCompare { Both, Difference };
 // the plots' 3-decade log position. What the image draws at its vertices (tested).
 std::vector<ImU32> sliceColors(const std::vector<float>& values, float largest, RadialScale scale, ValuePalette palette);
 // A − B's: divergingColor(value / largest |A − B|); 0 (near-white) everywhere when A and B agree.
-std::vector<ImU32> differenceColors(const std::vector<float>& values, float largestAbs);
+std::vector<ImU32> differenceColors(const std::vector<float>& values, float largestAbs,
+                                    RadialScale scale = RadialScale::Linear);
 // The largest |value| (0 for none).
 float largestMagnitude(const std::vector<float>& values);
 
