@@ -18,7 +18,8 @@
 //   4. Process (lab_ms vs bare_ms): `lab render` as a process against a bare EGL program that
 //      draws the same mesh once, reads back and writes the same PNG, alternately, as medians;
 //   5. Gltf (load_ms vs read_ms): loading a generated 1-million-triangle .glb against reading
-//      the file's bytes.
+//      the file's bytes;
+//   12. Fit: the README's fits of one model to another (core/plots/fit.h), each on its own.
 // Wall-clock times; every GL benchmark ends its iteration with glFinish.
 #include "../../tools/glb_writer.h"
 #include "../test_files.h"
@@ -27,6 +28,7 @@
 #include "core/gltf/reader.h"
 #include "core/io/file_io.h"
 #include "core/lighting/lighting.h"
+#include "core/plots/fit.h"
 #include "core/scene/mesh.h"
 #include "platform/headless_app.h"
 #include "platform/headless_gl.h"
@@ -344,6 +346,20 @@ void GuiFrame(benchmark::State& state) {
 // 3. The plots: one frame of the plots panel on the CPU
 //----------------------------------------------------------------------------------------
 
+// 12. One fit of the README's table (core/plots/fit.h): 0 Blinn-Phong to Phong n = 20, 1 Blinn-Phong to
+// Beckmann m = 0.3, 2 Cook-Torrance (Beckmann) to Phong n = 20.
+void Fit(benchmark::State& state) {
+    Preset target;
+    target.brdf = state.range(0) == 1 ? BrdfModel::CookTorrance : BrdfModel::Phong;
+    target.material.shininess = 20.0f;
+    target.cookTorrance.roughness = 0.3f;
+    const FitRequest request{state.range(0) == 2 ? BrdfModel::CookTorrance : BrdfModel::BlinnPhong, Distribution::Beckmann};
+    for (auto _ : state) {
+        std::string error;
+        benchmark::DoNotOptimize(fitSpecular(target, request, error));
+    }
+}
+
 void Plots(benchmark::State& state) {
     ImGuiContext* previous = ImGui::GetCurrentContext();
     ImGuiContext* cpu = ImGui::CreateContext();
@@ -534,8 +550,8 @@ void registerAll() {
     benchmark::RegisterBenchmark("View/wipe-D", View)
         ->Args({static_cast<int>(ViewMode::D), 1})->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
     benchmark::RegisterBenchmark("GuiFrame", GuiFrame)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
-    const char* views[] = {"", "lobe3d-", "energy-"}; // ui::PlotTab's order: Plane, 3D lobe, Energy
-    for (int v = 0; v < 3; ++v) {
+    const char* views[] = {"", "lobe3d-", "energy-", "slice-"}; // ui::PlotTab's order: Plane, 3D lobe, Energy, Slice
+    for (int v = 0; v < 4; ++v) {
         for (int edit = 0; edit < 3; ++edit) {
             for (int compare = 0; compare < 2; ++compare) {
                 static const char* const suffix[3] = {"", "-editing", "-release"};
@@ -544,6 +560,9 @@ void registerAll() {
             }
         }
     }
+    benchmark::RegisterBenchmark("Fit/blinn-phong-to-phong-20", Fit)->Args({0})->UseRealTime()->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("Fit/blinn-phong-to-beckmann-0.3", Fit)->Args({1})->UseRealTime()->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("Fit/cook-torrance-to-phong-20", Fit)->Args({2})->UseRealTime()->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("Process", Process)->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(kProcessPairs);
 }
 
@@ -621,7 +640,7 @@ void table(const std::map<std::string, double>& ms) {
     }
     // Every view of the plots, unchanged (target 50 us) and while a value changes every frame (100 us);
     // the frame after a change ends computes what lagged (no target: one frame, once).
-    for (const char* view : {"", "lobe3d-", "energy-"}) {
+    for (const char* view : {"", "lobe3d-", "energy-", "slice-"}) {
         for (const char* set : {"single", "compare"}) {
             const std::string name = std::string("Plots/") + view + set + "-release/";
             if (const double plots = get(name); plots > 0) {
@@ -629,7 +648,7 @@ void table(const std::map<std::string, double>& ms) {
             }
         }
     }
-    for (const char* view : {"", "lobe3d-", "energy-"}) {
+    for (const char* view : {"", "lobe3d-", "energy-", "slice-"}) {
         for (const char* edit : {"", "-editing"}) {
             for (const char* set : {"single", "compare"}) {
                 const std::string name = std::string("Plots/") + view + set + edit + "/";
@@ -639,6 +658,14 @@ void table(const std::map<std::string, double>& ms) {
                                 std::to_string(int(target)).insert(0, "<= ").c_str(), plots * 1000 <= target ? "met" : "MISSED");
                 }
             }
+        }
+    }
+    // The README's fits (core/plots/fit.h), each once per iteration: target 0.2 s natively.
+    for (const char* fit : {"blinn-phong-to-phong-20", "blinn-phong-to-beckmann-0.3", "cook-torrance-to-phong-20"}) {
+        const std::string name = std::string("Fit/") + fit;
+        if (const double fitMs = get(name); fitMs > 0) {
+            std::printf("%-44s %10.1f ms %12s %8s %10s %s\n", ("12. " + name).c_str(), fitMs, "", "", "<= 200 ms",
+                        fitMs <= 200.0 ? "met" : "MISSED");
         }
     }
     double labRender = counter("Process", "#lab_ms"), bareRender = counter("Process", "#bare_ms");
