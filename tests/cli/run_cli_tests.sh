@@ -489,6 +489,8 @@ near attenuation-field 'lights\[0\]\.attenuation is 0\.1 away \(at most 0\.05\)'
 near spot-cutoff-32 "$unsolved" 06-spot-light 'p["lights"][0]["cutoff_deg"] = 32'
 near roughness-0.2 "$unsolved" 07-cook-torrance-roughness 'p["cook_torrance"]["roughness"] = 0.2'
 near ior-1.8 "$unsolved" 08-fresnel 'p["cook_torrance"]["ior"] = 1.8'
+near fitted-shininess-27 "$unsolved" 09-blinn-phong-for-beckmann 'p["material"]["shininess"] = 27'
+near slice-roughness-0.3 "$unsolved" 10-roughness-from-the-slice 'p["cook_torrance"]["roughness"] = 0.3'
 # The score is a progress (core/exercise/score.h): part of the way from the start (n = 8) to the
 # target (n = 80) scores between the two, neither 0% nor 100%.
 near shininess-30-part-way 'Score ([1-9]|[1-9][0-9])%: not solved yet' 02-shininess 'p["material"]["shininess"] = 30'
