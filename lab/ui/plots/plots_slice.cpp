@@ -165,7 +165,7 @@ SliceMesh meshOf(const Images& im, const SliceKey& key) {
 constexpr const char* kFull[] = {"diffuse###slice.d", "specular###slice.s", "total###slice.t", "lin###slice.linear",
                                  "log###slice.log", "A | B###slice.both", "A \xe2\x88\x92 B###slice.difference"};
 constexpr const char* kBrief[] = {"diff###slice.d", "spec###slice.s", "total###slice.t", "lin###slice.linear",
-                                  "log###slice.log", "A|B###slice.both", "A\xe2\x88\x92" "B###slice.difference"};
+                                  "log###slice.log", "A|B###slice.both", ("A\xe2\x88\x92" "B###slice.difference")};
 constexpr int kOptionCount = 7;
 
 float radioWidth(const char* label, const Pens& p) {
