@@ -165,8 +165,9 @@ void fitRow(PanelState& state, std::vector<Request>& requests) {
         requests.push_back({Command::FitCookTorrance, {}, state.fitDistribution});
     }
     mark("brdf.fit-cook-torrance");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::CalcTextSize("beckmann").x + ImGui::GetFrameHeight() * 2.0f);
+    const float comboWidth = ImGui::CalcTextSize("Beckmann").x + ImGui::GetFrameHeight() * 2.0f;
+    sameLineIfFits(comboWidth);
+    ImGui::SetNextItemWidth(comboWidth);
     const char* names[] = {kDistributionChoices[0].label, kDistributionChoices[1].label, kDistributionChoices[2].label};
     ImGui::Combo("##fit-distribution", &state.fitDistribution, names, 3);
     mark("brdf.fit-distribution");
