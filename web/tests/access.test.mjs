@@ -1,12 +1,6 @@
 // access.test.mjs — the page for every student (issue 38): the parallel DOM that screen readers
 // read and the keyboard drives (web/access.js, app/page_model.h), checked through the accessibility
 // tree (Playwright's role queries, the DevTools protocol's Accessibility.getFullAXTree) and by
-// The page's tab `name` chosen with the keyboard (the controls of the other tabs are hidden, as on the phone).
-async function openTab(page, name) {
-  await page.getByRole('tab', { name }).focus();
-  await page.keyboard.press('Enter');
-}
-
 // axe-core's WCAG 2.1 A and AA rules.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -17,6 +11,13 @@ import { PNG } from 'pngjs';
 import { withBrowser, newLabPage, settle, widgets, compare, frames, repo } from './page.mjs';
 
 const env = withBrowser();
+
+// The page's tab `name` chosen with the keyboard (the controls of the other tabs are hidden, as on the phone).
+async function openTab(page, name) {
+  await page.getByRole('tab', { name }).focus();
+  await page.keyboard.press('Enter');
+}
+
 const axePath = createRequire(import.meta.url).resolve('axe-core/axe.min.js');
 
 // The model's viewport as the page shows it.
@@ -241,6 +242,31 @@ test('under prefers-reduced-motion a moving light opens paused, and its button s
   await page.waitForFunction(() => document.querySelector('[aria-pressed]').getAttribute('aria-pressed') === 'false');
   await frames(page, 30);
   assert.ok(compare(before, await viewPixels(page), { pixel: 8 }).failingShare > 0.002, 'the light moves');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('the fit from the page: Fit Blinn-Phong puts the fit into B, says what it found and how long it took; the slice in words', async () => {
+  const { page, context, problems } = await newLabPage(env.browser, `${env.base}#preset=06-shininess-20`);
+  const slice = await page.locator('#lab-slice').textContent();
+  assert.match(slice, /slice/i, `the slice described: ${slice}`);
+  await openTab(page, 'Material');
+  const fit = page.getByRole('button', { name: 'Fit Blinn-Phong' });
+  await fit.focus();
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(() => /fitted to A/.test(document.getElementById('lab-log').textContent), null, { timeout: 20000 });
+  const said = await page.locator('#lab-log').textContent();
+  assert.match(said, /B: Blinn-Phong fitted to A, error 23\.\d+%: shininess 67\.\d+/, said);
+  // Benchmark figure, not a test: how long the fit took in WebAssembly (the message's own time).
+  const seconds = Number(/\((\d+\.\d+) s\)/.exec(said)[1]);
+  console.log(`benchmark: Fit Blinn-Phong to Phong n = 20 on the page: ${seconds.toFixed(2)} s`);
+  const ct = page.getByRole('button', { name: 'Fit Cook-Torrance' });
+  await ct.focus();
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(() => /Cook-Torrance \(beckmann\) fitted to A/.test(document.getElementById('lab-log').textContent),
+    null, { timeout: 20000 });
+  const ctSaid = await page.locator('#lab-log').textContent();
+  console.log(`benchmark: Fit Cook-Torrance to Phong n = 20 on the page: ${/Cook-Torrance[^]*?\((\d+\.\d+) s\)/.exec(ctSaid)[1]} s`);
   assert.deepEqual(problems, []);
   await context.close();
 });

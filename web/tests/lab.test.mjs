@@ -243,14 +243,15 @@ test('the canvas fills the window, follows resizes and is sharp on high-DPI scre
 });
 
 // 0.65 MB until issue 38 (the page for every student: the parallel DOM, themes, keyboard navigation,
-// the score as a progress) added 26.9 KB; the performance issue (40) takes it down to 0.60 MB.
-test('the whole page is within the 0.675 MB gzip budget', () => {
+// the score as a progress) added 26.9 KB, 0.675 MB until issue 39 (the slice and the fit) added 20.9 KB;
+// the performance issue (40) takes it down to 0.60 MB.
+test('the whole page is within the 0.695 MB gzip budget', () => {
   let total = 0;
   for (const name of fs.readdirSync(site)) {
     total += zlib.gzipSync(fs.readFileSync(path.join(site, name)), { level: 9 }).length;
   }
   console.log(`gzip size of the page: ${(total / 1e6).toFixed(3)} MB`);
-  assert.ok(total <= 0.675e6, `${total} bytes gzip-compressed, more than 0.675 MB`);
+  assert.ok(total <= 0.695e6, `${total} bytes gzip-compressed, more than 0.695 MB`);
 });
 
 //----------------------------------------------------------------------------------------
