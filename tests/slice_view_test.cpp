@@ -6,6 +6,7 @@
 #include "ui/plots/slice_parts.h"
 
 #include "core/lighting/lighting.h"
+#include "app/figure_export.h"
 #include "core/plots/describe.h"
 
 #include <gtest/gtest.h>
@@ -108,6 +109,24 @@ TEST(SliceView, TheDrawnVerticesAreTheImagesSamplesInTheirColours) {
     EXPECT_EQ(colors[static_cast<std::size_t>(image.index(0, 10))], colors[static_cast<std::size_t>(image.index(0, 70))]);
     EXPECT_GT(green(colors[static_cast<std::size_t>(image.index(0, 45))]), 200);
     EXPECT_LT(green(colors[static_cast<std::size_t>(image.index(60, 45))]), 40);
+}
+
+// The figure's CSV is the GUI's image: what the Slice tab keeps and draws, written by Export figures.
+TEST(SliceView, ExportFiguresWritesTheImageTheTabShows) {
+    CpuImGui imgui(1.0f);
+    Preset a = blinnPhong();
+    ui::PlotSettings settings;
+    settings.view = ui::PlotTab::Slice;
+    drawPlots({880, 0, 400, 800}, 1280, 800, a, nullptr, settings);
+    const std::shared_ptr<const SliceImage> shown = settings.slice.images.find({lobeInputs(a, 0.0f), false});
+    ASSERT_TRUE(shown) << "the tab keeps A's full image";
+    std::string csv;
+    for (const Download& d : exportFigures(a, nullptr, settings, 1.0f, Theme::Light)) {
+        csv = d.name == "slice.csv" ? d.bytes : csv;
+    }
+    ASSERT_FALSE(csv.empty());
+    EXPECT_EQ(csv, sliceCsv(*shown));
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 91 * 91);
 }
 
 // The readout under the pointer: the angles, the exact value there (sliceValue, not the image's
