@@ -291,17 +291,23 @@ inline int reddishPixels(const Image& image) {
 inline std::string preset(const std::string& name) { return std::string(LAB_SOURCE_DIR) + "/presets/" + name + ".json"; }
 
 // Scrolls the control panel (the wheel over it) until `widget` is inside the window: down while it
-// is below the view's bottom, up while it is above its top.
+// is below the view's bottom, up while it is above its top. The wheel goes where the widget's column
+// meets the middle of the view, or, where something there takes the wheel for itself (the preset
+// list at the end of its own scrolling), a quarter or three quarters of the way down.
 inline Rect scrolledTo(Lab& lab, const std::string& widget) {
     Rect area = lab.widget("view.area"), w = lab.widget(widget);
+    const int heights[] = {area.y + area.h / 2, area.y + area.h / 4, area.y + 3 * area.h / 4};
+    int at = 0;
     for (int i = 0; i < 40 && (w.y + w.h > area.y + area.h - 4 || w.y < area.y); ++i) {
         const int button = w.y < area.y ? 4 : 5;
-        lab.moveTo(w.x + 4, area.y + area.h / 2);
+        lab.moveTo(w.x + 4, heights[at]);
         unsigned long long before = lab.frame();
         lab.x().button(button, true);
         lab.x().button(button, false);
         lab.settle(before);
+        const int was = w.y;
         w = lab.widget(widget);
+        at = w.y == was ? (at + 1) % 3 : at; // the panel did not move: the wheel went elsewhere
     }
     return w;
 }
