@@ -26,9 +26,6 @@ const char* componentName(PlotComponent c) {
 
 std::uint8_t byte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
 
-// One value's place on the colour bar: linear v / top, or the plots' 3-decade log scale.
-float position(float v, float top, RadialScale scale) { return plotRadius(v, top, scale); }
-
 // The image, θd = 90° in the top row (θd grows upwards, as on the axes).
 Image sliceRaster(const std::vector<float>& values, int side, const auto& colourOf) {
     Image image;
@@ -102,7 +99,7 @@ std::vector<AxisTick> valueTicks(float top, RadialScale scale) {
         std::vector<AxisTick> ticks;
         for (int decade = static_cast<int>(kLogDecades); decade >= 0; --decade) {
             const float v = top * std::pow(10.0f, -static_cast<float>(decade));
-            ticks.push_back({position(v, top, scale), v});
+            ticks.push_back({plotRadius(v, top, scale), v});
         }
         return ticks;
     }
@@ -126,7 +123,7 @@ FigureResult sliceFigure(const Preset& a, const Preset* b, const FigureRequest& 
     const float y = header(page, page.f.title, subtitle, {}) + (b ? 2.0f : 1.0f) * (kTextSize + kPad);
     const float gap = 14.0f;
     const float side = b ? (kWidth - 2.0f * kMargin - 3.0f * kAxisRoom - 2.0f * gap) / 3.0f : 400.0f;
-    auto palette = [&](float v) { return paletteColor(r.palette, position(v, top, r.scale)); };
+    auto palette = [&](float v) { return paletteColor(r.palette, plotRadius(v, top, r.scale)); };
     auto unitPalette = [&](float t) { return paletteColor(r.palette, t); };
     const float left = b ? kMargin + kAxisRoom : 0.5f * (kWidth - side + kAxisRoom); // one image: in the middle
     auto at = [&](int i) { return Panel{{left + static_cast<float>(i) * (side + kAxisRoom + gap), y}, side}; };

@@ -65,7 +65,8 @@ std::optional<FitResult> fitSpecular(const Preset& target, const FitRequest& req
 std::vector<float> fitIncidentAngles();
 
 // The objective's remaining error of `candidate`'s specular reflection against `target`'s, by the
-// same rule (what fitSpecular minimises, for the tests and the GUI's header).
+// same rule, at the candidate's own specular colour (what fitSpecular minimises over that colour's
+// scale: the tests check that a fit's written preset has the error its result reports).
 double fitError(const Preset& target, const Preset& candidate);
 
 } // namespace lab

@@ -56,19 +56,6 @@ float SliceImage::largest(PlotComponent c) const {
     return values.empty() ? 0.0f : *std::max_element(values.begin(), values.end());
 }
 
-float SliceImage::at(PlotComponent c, float thetaHDeg, float thetaDDeg) const {
-    const std::vector<float>& values = component(c);
-    const int n = side();
-    if (values.size() != static_cast<std::size_t>(n * n)) {
-        return 0.0f;
-    }
-    const float u = std::clamp(thetaHDeg, 0.0f, 90.0f) / stepDeg, w = std::clamp(thetaDDeg, 0.0f, 90.0f) / stepDeg;
-    const int c0 = std::min(static_cast<int>(u), n - 2), r0 = std::min(static_cast<int>(w), n - 2);
-    const float fu = u - c0, fw = w - r0;
-    auto v = [&](int column, int row) { return values[static_cast<std::size_t>(index(column, row))]; };
-    return (1 - fw) * ((1 - fu) * v(c0, r0) + fu * v(c0 + 1, r0)) + fw * ((1 - fu) * v(c0, r0 + 1) + fu * v(c0 + 1, r0 + 1));
-}
-
 SliceImage sampleSlice(const SurfaceUniforms& surface, int stepDeg) {
     SliceImage image;
     image.stepDeg = stepDeg > 0 && 90 % stepDeg == 0 ? stepDeg : 1;

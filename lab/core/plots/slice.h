@@ -57,9 +57,6 @@ struct SliceImage {
         return c == PlotComponent::Diffuse ? diffuse : c == PlotComponent::Specular ? specular : total;
     }
     float largest(PlotComponent c) const;
-    // The value at (θh, θd) in degrees, bilinear between the samples (the cursor's readout is exact:
-    // sliceValue; this is what the image shows there).
-    float at(PlotComponent c, float thetaHDeg, float thetaDDeg) const;
 };
 SliceImage sampleSlice(const SurfaceUniforms& surface, int stepDeg = 1);
 
