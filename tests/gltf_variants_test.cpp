@@ -5,6 +5,7 @@
 // one line (an unknown required extension, glTF 1.0). Each shown variant is rendered with EGL
 // beside its plain twin and must give the same pixels within the screenshot tests' tolerance.
 // Then the decoders' inputs, broken one field at a time, must be refused naming the place.
+#include "core/gltf/draco_mesh.h"
 #include "core/gltf/reader.h"
 #include "core/io/image.h"
 #include "core/scene/preset.h"
@@ -284,6 +285,74 @@ TEST_F(GltfVariants, DracoAndMeshoptAreRequiredAndLoadedWithoutNotes) {
         EXPECT_TRUE(r->notes.empty()) << testing::PrintToString(r->notes);
         EXPECT_EQ(r->mesh.triangleCount(), 24u * 12u * 2u);
     }
+}
+
+
+// The page's Draco module answers through packDracoResult / unpackDracoResult (the decoder is a
+// WebAssembly module of its own there, core/gltf/draco_decoder.h): what crosses is the mesh as
+// decoded, bit for bit, or the failure with its place; an answer that does not add up is refused.
+TEST_F(GltfVariants, TheDracoModulesAnswerCarriesTheMeshOrTheFailureWhole) {
+    using namespace gltf_detail;
+    Glb g = Glb::read(folder_->path() / "models" / "draco.glb");
+    const Json& ext = g.json["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"];
+    const Json& view = g.json["bufferViews"][ext["bufferView"].get<std::size_t>()];
+    const auto* bytes = reinterpret_cast<const unsigned char*>(g.bin.data()) + view.value("byteOffset", std::size_t{0});
+    const std::size_t size = view["byteLength"].get<std::size_t>();
+    DracoQuery query;
+    query.position = {true, ext["attributes"]["POSITION"].get<std::int64_t>(), true};
+    query.normal = {true, ext["attributes"]["NORMAL"].get<std::int64_t>(), true};
+    query.maxPoints = query.maxFaces = 1u << 20;
+    query.maxBytes = 1u << 30;
+    // The query crosses as doubles.
+    const DracoQueryWords words = queryWords(query);
+    const DracoQuery back = queryFromWords(words.words, static_cast<double>(query.maxBytes));
+    EXPECT_EQ(back.position.id, query.position.id);
+    EXPECT_EQ(back.normal.id, query.normal.id);
+    EXPECT_TRUE(back.normal.used && back.position.listed);
+    EXPECT_EQ(back.maxFaces, query.maxFaces);
+    EXPECT_EQ(back.maxBytes, query.maxBytes);
+
+    DracoResult decoded = decodeDracoMesh(bytes, size, back);
+    ASSERT_TRUE(std::holds_alternative<DracoMesh>(decoded)) << std::get<DracoFailure>(decoded).message;
+    const DracoMesh& mesh = std::get<DracoMesh>(decoded);
+    EXPECT_EQ(mesh.faces, 24u * 12u * 2u);
+    EXPECT_EQ(mesh.positions.size(), mesh.points * 3u);
+    EXPECT_EQ(mesh.normals.size(), mesh.points * 3u);
+    std::vector<unsigned char> packed = packDracoResult(decoded);
+    std::optional<DracoResult> unpacked = unpackDracoResult(packed.data(), packed.size());
+    ASSERT_TRUE(unpacked && std::holds_alternative<DracoMesh>(*unpacked));
+    const DracoMesh& crossed = std::get<DracoMesh>(*unpacked);
+    EXPECT_EQ(crossed.points, mesh.points);
+    EXPECT_EQ(crossed.indices, mesh.indices);
+    EXPECT_EQ(0, std::memcmp(crossed.positions.data(), mesh.positions.data(), mesh.positions.size() * 4));
+    EXPECT_EQ(0, std::memcmp(crossed.normals.data(), mesh.normals.data(), mesh.normals.size() * 4));
+
+    // Cut short, one byte too many, or a triangle naming a point past the last: refused.
+    EXPECT_FALSE(unpackDracoResult(packed.data(), packed.size() - 1));
+    packed.push_back(0);
+    EXPECT_FALSE(unpackDracoResult(packed.data(), packed.size()));
+    packed.pop_back();
+    const std::uint32_t past = mesh.points;
+    std::memcpy(packed.data() + packed.size() - 4, &past, 4);
+    EXPECT_FALSE(unpackDracoResult(packed.data(), packed.size()));
+
+    // A failure keeps its place and message; a primitive that does not use NORMAL gets no normals.
+    query.normal.id = 77;
+    DracoResult failed = decodeDracoMesh(bytes, size, query);
+    ASSERT_TRUE(std::holds_alternative<DracoFailure>(failed));
+    packed = packDracoResult(failed);
+    unpacked = unpackDracoResult(packed.data(), packed.size());
+    ASSERT_TRUE(unpacked && std::holds_alternative<DracoFailure>(*unpacked));
+    EXPECT_EQ(std::get<DracoFailure>(*unpacked).where, ".attributes.NORMAL");
+    EXPECT_EQ(std::get<DracoFailure>(*unpacked).message, "names no attribute of the Draco data");
+    query.normal = {false, -1, false};
+    DracoResult bare = decodeDracoMesh(bytes, size, query);
+    ASSERT_TRUE(std::holds_alternative<DracoMesh>(bare));
+    EXPECT_TRUE(std::get<DracoMesh>(bare).normals.empty());
+    query.maxFaces = mesh.faces - 1;
+    DracoResult tooMany = decodeDracoMesh(bytes, size, query);
+    ASSERT_TRUE(std::holds_alternative<DracoFailure>(tooMany));
+    EXPECT_NE(std::get<DracoFailure>(tooMany).message.find("more than the lab reads"), std::string::npos);
 }
 
 } // namespace

@@ -190,6 +190,9 @@ ui::ScreenModel App::Impl::screenModel() {
 
 // What the platform and the UI asked for this frame, in order, then one undo step if a gesture ended.
 void App::Impl::carryOut(const FrameInput& in, const ui::ScreenEvents& events) {
+    for (const std::string& note : in.notes) {
+        workspace.note(note);
+    }
     if (!in.droppedFiles.empty()) {
         workspace.drop(in.droppedFiles);
     }

@@ -40,6 +40,7 @@ struct FrameInput {
     float deltaTime = 1.0f / 60.0f;     // since the last frame (long after an idle wait)
     float lastFrameSeconds = 0.0f;      // what the last frame cost, from its start to its swap
     std::vector<std::string> droppedFiles;
+    std::vector<std::string> notes;     // the platform's own messages for the toast (the page: "Loading the Draco decoder…")
     std::vector<InputEvent> events;     // this frame's share of the queued input (app/input.h)
     int framesDue = 0;                  // frames the platform will draw after this one anyway (FramePacer::dueAfterThis)
     bool repaint = false;               // the window's picture was lost (uncovered, resized): draw it even if unchanged

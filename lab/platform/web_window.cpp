@@ -31,6 +31,7 @@
 
 #include "app/frame_pacer.h"
 #include "app/touch.h"
+#include "core/gltf/draco_decoder.h"
 #include "core/plots/theme.h"
 #include "core/share/share_link.h" // kMaxLinkChars
 #include "platform/imgui_glfw.h"
@@ -169,6 +170,8 @@ struct WebState : PlatformInput {
     std::vector<PageEdit> pageEdits;       // from the page's own controls, for the next frame
     std::optional<std::string> pageFocus;  // the page's focused control, when it changed
     std::optional<std::string> pendingLink;
+    std::vector<std::string> heldForDraco; // opened files that wait for the Draco decoder (lab_open_file)
+    std::vector<std::string> notes;        // for the next frame's toast (FrameInput::notes)
     bool pendingLinkSaved = false; // pendingLink is the saved state, not an address
     int frames = 0;
     double describedAt = -1e9; // when the lab last described itself for the page (FrameInput::describePage)
@@ -232,6 +235,7 @@ FrameInput nextInput(WebState& s, double dpr) {
     in.touch = s.touchScreen;
     in.pageEdits = std::exchange(s.pageEdits, {});
     in.pageFocus = std::exchange(s.pageFocus, std::nullopt);
+    in.notes = std::exchange(s.notes, {});
     return in;
 }
 
@@ -315,11 +319,32 @@ void frame(void* arg) {
 
 // Called by the page: a file it wrote into the in-memory file system, or a new URL fragment.
 extern "C" {
+// A model that names KHR_draco_mesh_compression waits while the page fetches the Draco decoder
+// (core/gltf/draco_decoder.h), with a message; it opens when the decoder is here, or is refused
+// with the reason when it could not be loaded.
 EMSCRIPTEN_KEEPALIVE void lab_open_file(const char* path) {
-    if (gState) {
-        gState->queue.drop(path);
-        gState->changed = true;
+    if (!gState) {
+        return;
     }
+    if (dracoDecoderState() != DracoDecoderState::Ready && mentionsDraco(path)) {
+        gState->heldForDraco.push_back(path);
+        loadDracoDecoder();
+        gState->notes.push_back("Loading the Draco decoder to open " + fs::path(path).filename().string() + "…");
+    } else {
+        gState->queue.drop(path);
+    }
+    gState->changed = true;
+}
+// The Draco decoder's module is loaded (ok 1) or could not be (ok 0, why): the files held for it open.
+EMSCRIPTEN_KEEPALIVE void lab_draco_loaded(int ok, const char* why) {
+    dracoDecoderLoaded(ok != 0, why ? why : "");
+    if (!gState) {
+        return;
+    }
+    for (std::string& path : std::exchange(gState->heldForDraco, {})) {
+        gState->queue.drop(std::move(path));
+    }
+    gState->changed = true;
 }
 // A finger (CSS pixels from the canvas's corner): phase 0 down, 1 moved, 2 up, 3 cancelled.
 EMSCRIPTEN_KEEPALIVE void lab_touch(int phase, int id, float x, float y) {

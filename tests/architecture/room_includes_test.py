@@ -33,6 +33,7 @@ FOLDER_TARGET = {
     'lab/ui': 'lab_ui_kit',        # widget_map.h: the kit, which every ui room links
     'lab/platform': 'lab_platform',  # window.h: the seam lab_platform implements
     'lab/cli': 'lab_cli',          # command_kit.h: what the commands share
+    'lab/core/gltf': 'lab_gltf',   # draco_decoder.h: the seam draco_linked.cpp and draco_fetched.cpp implement
 }
 SOURCES = ('.h', '.cpp')
 

@@ -7,10 +7,7 @@
 #ifdef LAB_HAVE_MESHOPT
 #include <meshoptimizer.h>
 #endif
-#ifdef LAB_HAVE_DRACO
-#include <draco/compression/decode.h>
-#include <draco/mesh/mesh.h>
-#endif
+#include "core/gltf/draco_decoder.h"
 
 #include <cmath>
 #include <cstring>
@@ -26,13 +23,7 @@ bool meshoptSupported() {
 #endif
 }
 
-bool dracoSupported() {
-#ifdef LAB_HAVE_DRACO
-    return true;
-#else
-    return false;
-#endif
-}
+bool dracoSupported() { return true; } // linked, or fetched by the page when a model needs it (draco_decoder.h)
 
 // A placeholder for tinygltf: the bytes are the loader's (see gltf_glb.h for the same trick).
 std::size_t ModelBuffers::add(nlohmann::json& doc, std::vector<unsigned char> data) {
@@ -231,7 +222,6 @@ bool decodeMeshopt(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimit
     return true;
 }
 
-#ifdef LAB_HAVE_DRACO
 namespace {
 
 // Where a Draco primitive's diagnostics point, and the file they name.
@@ -244,103 +234,27 @@ struct DracoSite {
     }
 };
 
-// The compressed bytes, decoded; within the limits (points, faces, and the bytes decoded so far
-// in the file). Nullptr after a diagnostic. The library reports malformed data as a status; the
-// catch is for allocation failures a hostile header might provoke.
-std::unique_ptr<draco::Mesh> decodeDracoMesh(const BufferBytes& source, const ModelBuffers& buffers,
-                                             const DecodeLimits& limits, const DracoSite& site) {
-    std::unique_ptr<draco::Mesh> decoded;
-    std::string error;
-    try {
-        draco::DecoderBuffer input;
-        input.Init(reinterpret_cast<const char*>(source.data), source.size);
-        draco::Decoder decoder;
-        auto result = decoder.DecodeMeshFromBuffer(&input);
-        if (result.ok()) {
-            decoded = std::move(result).value();
-        } else {
-            error = result.status().error_msg_string();
+// What the decoder is asked: which of POSITION and NORMAL the extension lists (with their ids)
+// and the primitive uses, and the limits left for this file.
+DracoQuery dracoQuery(const nlohmann::json& attributeIds, const nlohmann::json& prim, const ModelBuffers& buffers,
+                      const DecodeLimits& limits) {
+    auto attribute = [&](const char* name) {
+        DracoAttributeQuery q;
+        auto id = attributeIds.find(name);
+        q.listed = id != attributeIds.end();
+        if (q.listed && id->is_number_unsigned() && id->get<std::uint64_t>() <= 0xFFFFFFFFu) {
+            q.id = static_cast<std::int64_t>(id->get<std::uint64_t>());
         }
-    } catch (const std::exception& e) {
-        error = e.what();
-    }
-    if (!decoded) {
-        site.fail("the Draco data does not decode: " + shortened(error.empty() ? "not a Draco mesh" : error));
-        return nullptr;
-    }
-    const std::size_t points = decoded->num_points(), faces = decoded->num_faces();
-    if (faces == 0 || points == 0) {
-        site.fail("the Draco data decodes to no triangles");
-        return nullptr;
-    }
-    if (points > limits.maxVertices || faces > limits.maxTriangles ||
-        24 * points + 12 * faces > limits.maxDecodedBytes - std::min(limits.maxDecodedBytes, buffers.decoded)) {
-        site.fail("the Draco data decodes to " + std::to_string(points) + " points and " + std::to_string(faces) +
-                  " triangles, more than the lab reads");
-        return nullptr;
-    }
-    return decoded;
-}
-
-// Attribute `name` (POSITION or NORMAL) of the decoded mesh, as `points` floats × 3 appended to
-// `data`, when the primitive uses it: its byte offset in newAttributes[name]. False after a
-// diagnostic.
-bool appendDracoAttribute(const draco::Mesh& decoded, const nlohmann::json& attributeIds, const nlohmann::json& prim,
-                          const char* name, std::vector<unsigned char>& data, nlohmann::json& newAttributes,
-                          const DracoSite& site) {
-    auto id = attributeIds.find(name);
-    if (id == attributeIds.end()) {
-        return true;
-    }
-    const std::size_t points = decoded.num_points();
-    const std::string attrWhere = ".attributes." + std::string(name);
-    const draco::PointAttribute* attribute =
-        id->is_number_unsigned() && id->get<std::uint64_t>() <= 0xFFFFFFFFu
-            ? decoded.GetAttributeByUniqueId(id->get<std::uint32_t>()) : nullptr;
-    if (!attribute) {
-        return site.fail("names no attribute of the Draco data", attrWhere);
-    }
-    if (attribute->num_components() != 3) {
-        return site.fail("the Draco attribute has " + std::to_string(attribute->num_components()) + " components, not 3",
-                         attrWhere);
-    }
-    if (!attribute->is_mapping_identity() && attribute->indices_map_size() < points) {
-        return site.fail("the Draco attribute maps fewer values than the mesh has points", attrWhere);
-    }
-    if (!prim.contains("attributes") || !prim["attributes"].is_object() || !prim["attributes"].contains(name)) {
-        return true; // the primitive does not use it
-    }
-    const std::size_t at = data.size();
-    data.resize(at + points * 12);
-    for (std::size_t p = 0; p < points; ++p) {
-        draco::AttributeValueIndex value = attribute->mapped_index(draco::PointIndex(static_cast<std::uint32_t>(p)));
-        float xyz[3];
-        if (value.value() >= attribute->size() || !attribute->ConvertValue<float>(value, 3, xyz)) {
-            return site.fail("point " + std::to_string(p) + " has no value in the Draco data", attrWhere);
-        }
-        std::memcpy(data.data() + at + p * 12, xyz, 12);
-    }
-    newAttributes[name] = at; // byte offset, turned into an accessor by decodeDracoPrimitive
-    return true;
-}
-
-// The decoded triangles as unsigned 32-bit indices appended to `data`. False after a diagnostic.
-bool appendDracoFaces(const draco::Mesh& decoded, std::vector<unsigned char>& data, const DracoSite& site) {
-    const std::size_t points = decoded.num_points(), faces = decoded.num_faces();
-    const std::size_t indicesAt = data.size();
-    data.resize(indicesAt + faces * 12);
-    for (std::size_t f = 0; f < faces; ++f) {
-        const draco::Mesh::Face& face = decoded.face(draco::FaceIndex(static_cast<std::uint32_t>(f)));
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t v = face[k].value();
-            if (v >= points) {
-                return site.fail("triangle " + std::to_string(f) + " names point " + std::to_string(v) + " of " +
-                                 std::to_string(points));
-            }
-            std::memcpy(data.data() + indicesAt + (f * 3 + k) * 4, &v, 4);
-        }
-    }
-    return true;
+        q.used = prim.contains("attributes") && prim["attributes"].is_object() && prim["attributes"].contains(name);
+        return q;
+    };
+    DracoQuery query;
+    query.position = attribute("POSITION");
+    query.normal = attribute("NORMAL");
+    query.maxPoints = limits.maxVertices;
+    query.maxFaces = limits.maxTriangles;
+    query.maxBytes = limits.maxDecodedBytes - std::min(limits.maxDecodedBytes, buffers.decoded);
+    return query;
 }
 
 // One primitive's KHR_draco_mesh_compression decoded into a new buffer, a view and an accessor
@@ -365,25 +279,30 @@ bool decodeDracoPrimitive(nlohmann::json& doc, nlohmann::json& prim, const nlohm
     if (attributeIds == ext.end() || !attributeIds->is_object()) {
         return site.fail("missing or not an object", ".attributes");
     }
-    std::unique_ptr<draco::Mesh> decoded = decodeDracoMesh(*source, buffers, limits, site);
-    if (!decoded) {
-        return false;
+    DracoResult result = runDracoDecoder(source->data, source->size, dracoQuery(*attributeIds, prim, buffers, limits));
+    if (const auto* failure = std::get_if<DracoFailure>(&result)) {
+        return site.fail(shortened(failure->message, 1100), failure->where);
     }
+    const DracoMesh& decoded = std::get<DracoMesh>(result);
     // The accessors' own counts are not checked against what was decoded: the new accessors
     // below take the decoded counts (Draco may split or merge points; readers such as
     // three.js go by the decoded data too).
-    const std::size_t points = decoded->num_points(), faces = decoded->num_faces();
+    const std::size_t points = decoded.points, faces = decoded.faces;
     std::vector<unsigned char> data;
     nlohmann::json newAttributes = nlohmann::json::object();
-    for (const char* name : {"POSITION", "NORMAL"}) {
-        if (!appendDracoAttribute(*decoded, *attributeIds, prim, name, data, newAttributes, site)) {
-            return false;
-        }
+    auto append = [&data](const void* values, std::size_t bytes) {
+        const std::size_t at = data.size();
+        data.resize(at + bytes);
+        std::memcpy(data.data() + at, values, bytes);
+        return at;
+    };
+    if (!decoded.positions.empty()) {
+        newAttributes["POSITION"] = append(decoded.positions.data(), points * 12);
     }
-    const std::size_t indicesAt = data.size();
-    if (!appendDracoFaces(*decoded, data, site)) {
-        return false;
+    if (!decoded.normals.empty()) {
+        newAttributes["NORMAL"] = append(decoded.normals.data(), points * 12);
     }
+    const std::size_t indicesAt = append(decoded.indices.data(), faces * 12);
     // The decoded arrays as one new buffer, a view and an accessor each.
     buffers.decoded += data.size();
     const std::size_t bufferIndex = buffers.add(doc, std::move(data));
@@ -408,11 +327,9 @@ bool decodeDracoPrimitive(nlohmann::json& doc, nlohmann::json& prim, const nlohm
 }
 
 } // namespace
-#endif
 
 bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits& limits, const std::string& displayName,
                  Diagnostics& diagnostics) {
-#ifdef LAB_HAVE_DRACO
     auto meshes = doc.find("meshes");
     if (meshes == doc.end() || !meshes->is_array()) {
         return true;
@@ -437,9 +354,6 @@ bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits&
             }
         }
     }
-#else
-    (void)doc, (void)buffers, (void)limits, (void)displayName, (void)diagnostics;
-#endif
     return true;
 }
 

@@ -14,8 +14,9 @@
 // and each decoder's output is checked before use: counts against the accessors and the
 // loader's limits, every face index inside its points.
 //
-// The decoders are Debian's libmeshoptimizer and libdraco; a build without one of them
-// (LAB_HAVE_MESHOPT, LAB_HAVE_DRACO) refuses a file that needs it, naming the extension.
+// The decoders are Debian's libmeshoptimizer and libdraco; a build without meshoptimizer
+// (LAB_HAVE_MESHOPT) refuses a file that needs it, naming the extension. Draco is reached through
+// draco_decoder.h: linked, or on the page a module fetched the first time a model needs it.
 #pragma once
 
 #include "core/gltf/accessors.h"
@@ -58,7 +59,7 @@ struct DecodeLimits {
 bool decodeMeshopt(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits& limits,
                    const std::string& displayName, Diagnostics& diagnostics);
 
-// Decodes every primitive with KHR_draco_mesh_compression (when this build has the decoder),
+// Decodes every primitive with KHR_draco_mesh_compression (draco_decoder.h),
 // pointing its POSITION, NORMAL and indices at new accessors of the decoded data. False after a
 // diagnostic naming the primitive or accessor.
 bool decodeDraco(nlohmann::json& doc, ModelBuffers& buffers, const DecodeLimits& limits,
