@@ -17,7 +17,6 @@
   let model = null;    // the last description
   let describedAt = 0; // when the pictures' words were last put into the page
   let pendingWords = null;
-  let lastToast = '';
   let lastScore = '';
   let chosenTab = 'material';
   const units = { deg: 'degrees', 'deg/s': 'degrees per second' };
@@ -226,8 +225,7 @@
       log.append(el('p', { text: new Date().toLocaleTimeString() + ': ' + text }));
       while (log.children.length > 30) log.firstElementChild.remove();
     };
-    if (m.messages.toast && m.messages.toast !== lastToast) say(m.messages.toast);
-    lastToast = m.messages.toast;
+    for (const text of m.messages.said) say(text); // every message since the last description, even a brief one
     const score = m.exercise ? m.exercise.score : '';
     if (score && score !== lastScore && m.exercise.solved) say('Solved: ' + m.exercise.title);
     lastScore = score;

@@ -65,6 +65,15 @@ struct App::Impl {
     std::optional<Problem> problem;
     std::string toast;
     float toastLeft = 0.0f;
+    std::vector<std::string> said; // every toast since the page's last description (PageFacts::said), the last 30
+    void show(std::string text) {
+        toast = std::move(text);
+        toastLeft = kToastSeconds;
+        said.push_back(toast);
+        if (said.size() > 30) {
+            said.erase(said.begin());
+        }
+    }
     FrameSpeed speed;       // the frame time shown while the model changes
     double clock = 0.0;     // seconds since the first frame (the sum of the frames' deltaTime)
     bool interacting = false;   // the last frame belonged to an interaction (a gesture, a moving light)
@@ -283,8 +292,7 @@ void App::Impl::probeAt(const ui::ViewportEvents& viewport) {
     std::string missed = probe.probe(viewed(scene, workspace.view.mode), *mesh, ndc, r.w / r.h,
                                      viewport.probeDragged, workspace.scenesOpened());
     if (!missed.empty()) {
-        toast = missed;
-        toastLeft = kToastSeconds;
+        show(missed);
     }
 }
 
@@ -292,9 +300,8 @@ void App::Impl::probeAt(const ui::ViewportEvents& viewport) {
 void App::Impl::collectMessages(float deltaTime) {
     toastLeft -= deltaTime;
     std::vector<std::string> notes = workspace.takeNotes();
-    if (!notes.empty()) {
-        toast = printable(notes.back(), true);
-        toastLeft = kToastSeconds;
+    for (const std::string& note : notes) {
+        show(printable(note, true));
     }
     std::vector<Problem> problems = workspace.takeProblems();
     if (!problems.empty()) {
@@ -568,7 +575,8 @@ FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool des
         out.page = page.json(workspace, {workspace.exercise() ? &exerciseView : nullptr, toastLeft > 0.0f ? toast : "",
                                          out.problem, probeWords(probe.shown() ? probe.result() : nullptr),
                                          legendWords(drawn.captions.legend), out.movingLights, toString(theme),
-                                         drawn.shareCode ? drawn.shareCode->link : "", tools.shader, tools.sweep});
+                                         drawn.shareCode ? drawn.shareCode->link : "", tools.shader, tools.sweep,
+                                         std::exchange(said, {})});
     }
     return out;
 }

@@ -39,6 +39,9 @@ struct PageFacts {
     // The tool windows while they are open: the page offers their fields too (and sets them).
     ui::ShaderEditorState* shader = nullptr;
     ui::SweepViewState* sweep = nullptr;
+    // Every message shown since the last description, oldest first (the page's message log keeps each,
+    // however short its time on screen: a toast replaced within one description interval is not lost).
+    std::vector<std::string> said;
 };
 
 // The page's description of the lab (a JSON object; web/access.js reads it). The pictures' words

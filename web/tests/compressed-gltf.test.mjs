@@ -137,6 +137,71 @@ test('Draco and meshopt models open through the file picker and show the same to
   await context.close();
 });
 
+// The Draco decoder is a module of its own (draco.js, draco.wasm), fetched the first time a model
+// needs it (core/gltf/draco_decoder.h), never with the page: most students never open one.
+function decoderRequests(page) {
+  const seen = [];
+  page.on('request', (r) => { if (/\/draco\.(js|wasm)$/.test(new URL(r.url()).pathname)) seen.push(new URL(r.url()).pathname); });
+  return seen;
+}
+
+// Until the scene's model is `name` (the decoder arrives in its own time), at most 20 s.
+async function waitForModel(page, name) {
+  const named = (model) => model.replace(/-\d+(\.gl(b|tf))$/, '$1').endsWith(name); // the page numbers a name it has seen
+  for (const end = Date.now() + 20000; !named(await sceneModel(page));) {
+    assert.ok(Date.now() < end, `the scene's model is still ${await sceneModel(page)}, not ${name}`);
+    await frames(page, 1);
+  }
+  await settle(page);
+}
+
+test('the Draco decoder is not part of the first load: it is fetched once, when a Draco model is opened', async () => {
+  const context = await env.browser.newContext({ viewport: { width: 1024, height: 640 } });
+  const page = await context.newPage();
+  page.on('filechooser', () => {}); // as page.mjs's newLabPage, for the picker below
+  const seen = decoderRequests(page);
+  await page.goto(env.base);
+  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
+  await settle(page);
+  await openThroughPicker(page, 'variant-meshopt.glb'); // meshopt is in the page itself
+  assert.deepEqual(seen, [], 'the page, and a meshopt model, fetched no Draco decoder');
+  assert.ok((await sceneModel(page)).endsWith('variant-meshopt.glb'));
+
+  await openThroughPicker(page, 'variant-draco.glb');
+  await waitForModel(page, 'variant-draco.glb');
+  assert.equal((await widgets(page)).error, undefined, 'an error window opened');
+  assert.ok((await sceneModel(page)).endsWith('variant-draco.glb'), `the scene's model is ${await sceneModel(page)}`);
+  assert.deepEqual(seen.sort(), ['/draco.js', '/draco.wasm'], 'the decoder was fetched, once');
+  const log = await page.locator('#lab-log').textContent();
+  assert.match(log, /Loading the Draco decoder to open \S*variant-draco\.glb/, `the message log says why the model waits: ${log}`);
+
+  await openThroughPicker(page, 'variant-meshopt.glb');
+  await openThroughPicker(page, 'variant-draco.glb');
+  await waitForModel(page, 'variant-draco.glb');
+  assert.equal(seen.length, 2, 'a second Draco model fetched nothing more');
+  await context.close();
+});
+
+test('a Draco decoder that cannot be fetched is named in the error, and the scene stays', async () => {
+  const { page, context } = await openLab();
+  await page.route('**/draco.wasm', (route) => route.fulfill({ status: 404, body: 'not here' }));
+  const title = await page.title();
+  await openThroughPicker(page, 'variant-draco.glb');
+  await page.waitForFunction(() => /Draco decoder could not be loaded/.test(document.getElementById('lab-problem').textContent),
+    null, { timeout: 20000 });
+  const said = await page.locator('#lab-problem').textContent();
+  assert.match(said, /variant-draco\.glb/, `the error names the model: ${said}`);
+  assert.match(said, /draco\.wasm could not be loaded/, `the error says what was missing: ${said}`);
+  assert.ok((await widgets(page)).error, 'the error window is open');
+  assert.equal(await page.title(), title, 'the scene did not change');
+  // Once the decoder can be fetched, the next try opens the model.
+  await page.unroute('**/draco.wasm');
+  await press(page, 'Escape');
+  await openThroughPicker(page, 'variant-draco.glb');
+  await waitForModel(page, 'variant-draco.glb');
+  await context.close();
+});
+
 // The glyphs ImGui drew in `rgba` during one frame, line by line: each a list of glyph keys (the
 // glyph's corner in the font atlas) from left to right. Draw-list vertices are ImDrawVert: x, y,
 // u, v (float) and the colour (RGBA bytes), a glyph being 4 vertices (ImDrawList::PrimRectUV).

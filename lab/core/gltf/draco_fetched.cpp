@@ -24,15 +24,15 @@ std::string gProblem;
 // Loads draco.js (it defines LabDraco, the module's factory) and instantiates draco.wasm; tells
 // the lab with lab_draco_loaded(ok, why).
 EM_JS(void, labJsLoadDraco, (), {
-    const done = (ok, why) => Module.ccall('lab_draco_loaded', null, ['number', 'string'], [ok, why]);
-    const script = document.createElement('script');
-    script.src = 'draco.js';
+    const done = (ok, why) => Module.ccall("lab_draco_loaded", null, ["number", "string"], [ok, why]);
+    const script = document.createElement("script");
+    script.src = "draco.js";
     script.onload = () => {
-        if (typeof LabDraco !== 'function') { done(0, 'draco.js defines no decoder'); return; }
-        LabDraco().then((m) => { Module.labDraco = m; done(1, ''); },
-                        (e) => done(0, 'draco.wasm could not be loaded: ' + String((e && e.message) || e)));
+        if (typeof LabDraco !== "function") { done(0, "draco.js defines no decoder"); return; }
+        LabDraco().then((m) => { Module.labDraco = m; done(1, ""); },
+                        (e) => done(0, "draco.wasm could not be loaded: " + String((e && e.message) || e)));
     };
-    script.onerror = () => done(0, 'draco.js could not be fetched');
+    script.onerror = () => done(0, "draco.js could not be fetched");
     document.head.appendChild(script);
 });
 
