@@ -73,8 +73,9 @@ target_compile_options(lab_imgui PUBLIC -fwasm-exceptions) # GLFW's header is in
 
 # The glTF loader's decoders (lab/core/gltf*), as the native build has them from libmeshoptimizer-dev
 # and libdraco-dev: compiled from the same Debian source packages, decoders only. Each is a static
-# library with its headers and a PUBLIC definition (LAB_HAVE_MESHOPT, LAB_HAVE_DRACO) that lab_gltf
-# gets through draco::draco and meshoptimizer::meshoptimizer (below). Compiled with -fwasm-exceptions like the rest, so a std::bad_alloc
+# library with its headers: meshoptimizer with a PUBLIC definition (LAB_HAVE_MESHOPT) that lab_gltf
+# gets through meshoptimizer::meshoptimizer (below); Draco goes only into the page's Draco module,
+# fetched when a model needs it (lab/core/gltf/draco_decoder.h), through draco::draco. Compiled with -fwasm-exceptions like the rest, so a std::bad_alloc
 # from a decoder's allocation (sizes come from the file) unwinds to the loader.
 # meshoptimizer 0.18 (EXT_meshopt_compression): the vertex and index codecs and the filters
 # (+6 KB of gzip in lab.wasm).
@@ -89,7 +90,8 @@ target_compile_options(lab_meshopt PRIVATE -fwasm-exceptions)
 # bitstream glTF names (2.2, as Draco's own DRACO_GLTF_BITSTREAM option: meshes, sequential and
 # edgebreaker connectivity, standard and valence, normal encoding), in its own draco_features.h;
 # Debian's also has point clouds, pre-2.2 bitstreams, and the transcoder, which needs Eigen. Only
-# the sources that decoding a mesh links: about 80 s of CPU to compile, +40 KB of gzip in lab.wasm.
+# the sources that decoding a mesh links: about 80 s of CPU to compile; 45.7 KB of gzip as draco.wasm
+# (it was 36 KB of the page's first load inside lab.wasm).
 lab_fetch_source(LAB_DRACO_SOURCE_DIR draco libdraco-dev src/draco/compression/decode.cc)
 set(draco "${LAB_DRACO_SOURCE_DIR}/src/draco")
 set(LAB_DRACO_CONFIG "${CMAKE_BINARY_DIR}/draco-config")
@@ -136,7 +138,6 @@ add_library(lab_draco STATIC
   "${draco}/metadata/metadata_decoder.cc"
   "${draco}/point_cloud/point_cloud.cc")
 target_include_directories(lab_draco SYSTEM PUBLIC "${LAB_DRACO_CONFIG}" "${LAB_DRACO_SOURCE_DIR}/src")
-target_compile_definitions(lab_draco PUBLIC LAB_HAVE_DRACO=1)
 target_compile_options(lab_draco PRIVATE -fwasm-exceptions)
 
 # libqrencode 4.1.1 (QR codes of the share links, lab/core/share): Debian's libqrencode-dev is built
@@ -192,7 +193,7 @@ add_custom_target(lab_web_font DEPENDS "${LAB_WEB_FONT}")
 # functions the page copies through; no file system, no main.
 function(lab_configure_draco_module target)
   set_target_properties(${target} PROPERTIES OUTPUT_NAME draco SUFFIX ".js" RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/site")
-  target_link_options(${target} PRIVATE
+  target_link_options(${target} PRIVATE -Oz
     -sMODULARIZE=1 -sEXPORT_NAME=LabDraco -sENVIRONMENT=web -sALLOW_MEMORY_GROWTH=1 -sMALLOC=emmalloc
     -sFILESYSTEM=0 --no-entry "-sEXPORTED_FUNCTIONS=[_lab_draco_decode,_malloc,_free]")
 endfunction()
@@ -204,6 +205,9 @@ function(lab_configure_web_target target)
   set(font "${LAB_WEB_FONT}")
   add_dependencies(${target} lab_web_font)
   target_link_options(${target} PRIVATE
+    # The whole page's code generated for size at the link (LTO: the compile's -Os only makes bitcode):
+    # 19 KB less gzip than -Os (issue 40; a drag frame's script time measured alike, see the README).
+    -Oz
     -sUSE_GLFW=3 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2
     -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=web
     # Smaller for the same frame: emmalloc instead of dlmalloc (3 KB of gzip), no WebGL extension
