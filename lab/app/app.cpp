@@ -546,7 +546,9 @@ FrameOutput App::frame(const FrameInput& in) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }
 
-    FrameOutput out = m.output(in.touch, model, in.describePage);
+    // The page's description waits while a value is dragged (it follows the state, not each frame of a
+    // gesture: a drag's frames cost the same with the parallel DOM as without it); the frame after is described.
+    FrameOutput out = m.output(in.touch, model, in.describePage && !events.gesture && !events.dragging);
     out.typing = events.typing;
     out.viewportScale = scale;
     out.redrawIn = redrawIn;
@@ -570,6 +572,7 @@ FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool des
     out.pickFile = std::exchange(pickFile, false);
     out.copyLink = std::exchange(copyLink, false);
     out.viewportDrawn = viewportDrawn;
+    out.pageDescribed = describe;
     if (describe) {
         PageFacts tools = pageTools();
         out.page = page.json(workspace, {workspace.exercise() ? &exerciseView : nullptr, toastLeft > 0.0f ? toast : "",

@@ -82,6 +82,7 @@ struct FrameOutput {
     bool viewportDrawn = false;  // the model's viewport was drawn this frame (otherwise its cached copy was shown)
     bool presented = true;   // the window was drawn (false: it would have looked exactly as the last; no swap needed)
     std::string page;            // FrameInput::describePage: the page's description of the lab (app/page_model.h)
+    bool pageDescribed = false;  // `page` was made: asked for, and no value is being dragged (the description waits)
     KeyOwner keys = KeyOwner::Canvas; // who this frame's keys went to (the page: Tab is the browser's only on the model)
     float viewportScale = 1.0f;  // the fraction of the view's width and height drawn (< 1 while dragging on a slow machine)
 };

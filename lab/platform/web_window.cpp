@@ -120,6 +120,10 @@ EM_JS(void, labJsProblem, (const char* text), {
 });
 
 // The lab described for the page's parallel DOM (web/access.js), when the description changed.
+// Whether the page takes the lab's descriptions (access.js registered Module.labPage; a page opened
+// with window.labParallelDom = false, the benchmark's baseline, has none and is never described).
+EM_JS(int, labJsTakesDescriptions, (), { return Module.labPage ? 1 : 0; });
+
 EM_JS(void, labJsPage, (const char* json), {
     if (Module.labPage) Module.labPage(UTF8ToString(json));
 });
@@ -288,7 +292,8 @@ void frame(void* arg) {
     double start = glfwGetTime();
     FrameInput in = nextInput(s, dpr);
     in.framesDue = s.pacer.dueAfterThis(!s.queue.empty());
-    in.describePage = start - s.describedAt >= kDescribeInterval;
+    const bool described = labJsTakesDescriptions() != 0;
+    in.describePage = described && start - s.describedAt >= kDescribeInterval;
     FrameOutput out = s.host.frame(in, [&] {
         ImGui_ImplGlfw_NewFrame();
         ImGuiIO& io = ImGui::GetIO();
@@ -297,12 +302,14 @@ void frame(void* arg) {
         io.DeltaTime = in.deltaTime;
     });
     deliver(s, out);
-    s.describeOwed = !in.describePage;
-    if (in.describePage) {
+    s.describeOwed = described && !out.pageDescribed;
+    if (out.pageDescribed) {
         s.describedAt = start;
-    } else { // a frame drawn when the interval is up describes what this one changed
-        const auto left = static_cast<float>(s.describedAt + kDescribeInterval - start);
-        out.redrawIn = out.redrawIn < 0.0f ? left : std::min(out.redrawIn, left);
+    } else if (described) { // a frame drawn when the interval is up describes what this one changed
+        // (one that waited for a drag tries again an interval later, if no input comes first)
+        double left = s.describedAt + kDescribeInterval - start;
+        left = left > 0.0 ? left : kDescribeInterval;
+        out.redrawIn = out.redrawIn < 0.0f ? static_cast<float>(left) : std::min(out.redrawIn, static_cast<float>(left));
     }
     s.lastCost = static_cast<float>(glfwGetTime() - start);
     s.pacer.drawn(glfwGetTime(), out.redrawIn, !s.queue.empty());
