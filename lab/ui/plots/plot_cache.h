@@ -16,6 +16,7 @@
 #include "core/plots/plot_data.h"
 
 #include <glm/vec2.hpp>
+#include <imgui.h>
 
 #include <array>
 #include <cstdint>
@@ -37,6 +38,15 @@ struct CurvePlacement {
     glm::vec2 at(glm::vec2 unit) const { return offset + scale * unit; }
 };
 bool operator==(const CurvePlacement& x, const CurvePlacement& y);
+
+// A mesh kept between frames in the form ImGui's draw list holds it: each vertex with the font
+// atlas's white pixel as its texture coordinate, the triangles by index from 0. A frame copies it
+// (plot_kit.h's drawMesh) rather than writing it vertex by vertex: the 3D lobe's surface and map and
+// the slice's images are 8,281 vertices and 48,600 indices each.
+struct KeptMesh {
+    std::vector<ImDrawVert> vertices;
+    std::vector<ImDrawIdx> indices;
+};
 
 // A few values by key, the least recently used one replaced when full. Key needs ==.
 template <class Key, class Value> class RecentlyUsed {

@@ -66,11 +66,10 @@ struct Pens {
 Pens pens();
 
 ImVec2 textSize(const std::string& t);
-// Copies a kept mesh (positions, colours, triangles by index) into the draw list, with the font
-// atlas's white pixel as its texture coordinate. ImGui's 16-bit indices: a mesh that would take the
-// list past 65536 vertices is left out rather than drawn wrong (the 3D lobe's and the slices stay under).
-void drawMesh(ImDrawList* dl, const std::vector<ImVec2>& positions, const std::vector<ImU32>& colors,
-              const std::vector<unsigned>& indices);
+
+// Copies the kept mesh into the draw list. A mesh that would take the list past 65536 vertices is
+// left out rather than drawn wrong (the 3D lobe's and the slices stay under).
+void drawMesh(ImDrawList* dl, const KeptMesh& mesh);
 inline ImVec2 toImVec2(glm::vec2 v) { return ImVec2(v.x, v.y); }
 inline glm::vec2 toVec2(ImVec2 v) { return glm::vec2(v.x, v.y); }
 

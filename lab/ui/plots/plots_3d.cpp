@@ -95,8 +95,8 @@ void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m
     const std::vector<float>& values = grid.component(key.component);
     const std::vector<glm::vec3> points = lobeSurface(grid, key.component, key.outer, key.scale);
     const std::size_t n = points.size();
-    m.positions.resize(n);
-    m.colors.resize(n);
+    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
+    m.surface.vertices.resize(n);
     // Shading from a light above and behind the viewer's right shoulder; normals by central
     // differences over the grid (sign-free: the lobe's inside shows where a surface folds).
     const glm::vec3 light = glm::normalize(cam.toEye + 0.6f * cam.up + 0.3f * cam.right);
@@ -117,8 +117,7 @@ void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m
                 shade = 0.35f + 0.65f * std::fabs(glm::dot(normal / len, light));
             }
             const float t = plotRadius(values[k], key.outer, key.scale);
-            m.positions[k] = cam.at(points[k]);
-            m.colors[k] = rgb(ramp(t) * shade, 0.92f);
+            m.surface.vertices[k] = ImDrawVert{cam.at(points[k]), uv, rgb(ramp(t) * shade, 0.92f)};
             depth[k] = cam.depth(points[k]);
         }
     }
@@ -138,12 +137,12 @@ void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m
         }
     }
     std::sort(cells.begin(), cells.end(), [](const Cell& x, const Cell& y) { return x.depth < y.depth; });
-    m.indices.clear();
-    m.indices.reserve(cells.size() * 6);
+    m.surface.indices.clear();
+    m.surface.indices.reserve(cells.size() * 6);
     for (const Cell& c : cells) {
         const unsigned k = static_cast<unsigned>(c.k), w = static_cast<unsigned>(meridians);
         for (unsigned v : {k, k + 1, k + w + 1, k, k + w + 1, k + w}) {
-            m.indices.push_back(v);
+            m.surface.indices.push_back(static_cast<ImDrawIdx>(v)); // 8,281 vertices
         }
     }
 }
@@ -156,8 +155,8 @@ void mapMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
     const float radius = std::min(r.z, r.w) * 0.5f;
     const std::vector<float>& values = grid.component(key.component);
     const int rings = grid.rings(), meridians = grid.meridians();
-    m.mapPositions.resize(values.size());
-    m.mapColors.resize(values.size());
+    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
+    m.map.vertices.resize(values.size());
     for (int i = 0; i < rings; ++i) {
         const float thetaDeg = static_cast<float>(i * grid.steps.thetaDeg);
         const float sinTheta = outgoingDirections()[static_cast<std::size_t>(90 + i * grid.steps.thetaDeg)].x;
@@ -165,17 +164,17 @@ void mapMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
         for (int j = 0; j < meridians; ++j) {
             const std::size_t k = static_cast<std::size_t>(grid.index(i, j));
             const glm::vec3& V = grid.directions[k];
-            m.mapPositions[k] = ImVec2(centre.x + along * V.x, centre.y + along * V.z);
-            m.mapColors[k] = rgb(ramp(plotRadius(values[k], key.outer, key.scale)));
+            m.map.vertices[k] = ImDrawVert{ImVec2(centre.x + along * V.x, centre.y + along * V.z), uv,
+                                           rgb(ramp(plotRadius(values[k], key.outer, key.scale)))};
         }
     }
-    m.mapIndices.clear();
-    m.mapIndices.reserve(static_cast<std::size_t>((rings - 1) * (meridians - 1) * 6));
+    m.map.indices.clear();
+    m.map.indices.reserve(static_cast<std::size_t>((rings - 1) * (meridians - 1) * 6));
     for (int i = 0; i + 1 < rings; ++i) {
         for (int j = 0; j + 1 < meridians; ++j) {
             const unsigned k = static_cast<unsigned>(grid.index(i, j)), w = static_cast<unsigned>(meridians);
             for (unsigned v : {k, k + 1, k + w + 1, k, k + w + 1, k + w}) {
-                m.mapIndices.push_back(v);
+                m.map.indices.push_back(static_cast<ImDrawIdx>(v));
             }
         }
     }
@@ -257,7 +256,7 @@ void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& 
         dl->AddLine(cam.at(glm::vec3(0.0f)), cam.at(glm::vec3(std::cos(t), 0.0f, std::sin(t))),
                     deg % 180 == 0 ? ink(Ink::Axis) : ink(Ink::Grid), p.thin);
     }
-    drawMesh(dl, mesh.positions, mesh.colors, mesh.indices);
+    drawMesh(dl, mesh.surface);
     for (const std::vector<ImVec2>& line : mesh.wireframe) {
         dl->AddPolyline(line.data(), static_cast<int>(line.size()), ink(Ink::Compare), 0, p.thin);
     }
@@ -291,7 +290,7 @@ void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& k
     const ImVec4& r = key.mapRect;
     const ImVec2 centre(r.x + r.z * 0.5f, r.y + r.w * 0.5f);
     const float radius = std::min(r.z, r.w) * 0.5f;
-    drawMesh(dl, mesh.mapPositions, mesh.mapColors, mesh.mapIndices);
+    drawMesh(dl, mesh.map);
     for (int deg = 30; deg <= 90; deg += 30) {
         dl->AddCircle(centre, radius * static_cast<float>(deg) / 90.0f, deg == 90 ? ink(Ink::Axis) : ink(Ink::Grid), 64, p.thin);
     }
@@ -429,10 +428,11 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
         pointTokens(v.readout, *point);
     }
     v.vectors = lobeVectors(v.inA.incidentDeg);
-    v.largest = v.gridA->largest(st.component);
-    if (v.gridB) {
-        v.largest = std::max(v.largest, v.gridB->largest(st.component));
+    if (st.largest.a != v.gridA || st.largest.b != v.gridB || st.largest.component != st.component) {
+        const float largestA = v.gridA->largest(st.component);
+        st.largest = {v.gridA, v.gridB, st.component, v.gridB ? std::max(largestA, v.gridB->largest(st.component)) : largestA};
     }
+    v.largest = st.largest.value;
     v.outer = outerRing(v.largest);
     v.peak = *st.peaks.get({{v.inA, v.coarseA}, st.component}, [&] { return lobeMaximum(v.inA, *v.gridA, st.component); });
     // The coarse lobe's peak is found from the coarse grid: muted, like a lagging number, until the full grid's.

@@ -18,7 +18,8 @@ namespace lab::ui::slice {
 
 // One frame's images: A's, and in compare mode B's and A − B, all full or all coarse.
 struct Images {
-    LobeInputs inA, inB;
+    LobeInputs inA, inB;         // this frame's surfaces (the readout's exact values)
+    LobeInputs imageA, imageB;   // the images': the same, or during a change a lagging draft's (plots_slice.cpp)
     std::shared_ptr<const SliceImage> a, b, difference;
     bool coarse = false;
     float largest = 0.0f;           // the component's, of A and B: the value images' common scale
