@@ -48,6 +48,37 @@ struct KeptMesh {
     std::vector<ImDrawIdx> indices;
 };
 
+// Lines as ImGui painted them (anti-aliased polylines, a dash's dots), kept with everything the
+// painting depends on: the points, the dash, the width, the colour, the draw list's flags and the
+// font atlas's texture coordinates for fills and lines. A line unchanged since an earlier frame is
+// copied (plot_kit.h's drawMesh) rather than painted again: a dotted lobe is a hundred small discs.
+class PaintedLines {
+public:
+    struct Key {
+        float width = 0.0f;
+        ImU32 color = 0;
+        int flags = 0;
+        ImVec2 fillUv;
+        ImVec4 lineUv;
+    };
+    // The kept painting of `points` dashed by `dash` under `key`, or null.
+    const KeptMesh* find(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key);
+    // Keeps a painting, in place of the least recently used one when full.
+    void keep(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key, KeptMesh mesh);
+
+private:
+    struct Entry {
+        std::vector<glm::vec2> points;
+        std::vector<float> dash;
+        Key key;
+        KeptMesh mesh;
+        std::uint64_t used = 0;
+    };
+    static constexpr std::size_t kCapacity = 64; // a frame paints about 30 lines long or dashed enough to keep
+    std::vector<Entry> entries_;
+    std::uint64_t clock_ = 0;
+};
+
 // A few values by key, the least recently used one replaced when full. Key needs ==.
 template <class Key, class Value> class RecentlyUsed {
 public:
@@ -186,6 +217,9 @@ public:
     Lagged<std::optional<Albedo>> laggingAlbedo(Slot slot, const LobeInputs& inputs, double now);
     Lagged<std::vector<AlbedoSample>> laggingAlbedoCurve(Slot slot, LobeInputs inputs, double now);
 
+    // The lines painted in earlier frames (plot_kit.h's paint).
+    PaintedLines& painted() { return painted_; }
+
     // How many sample sets and curves were computed rather than found (for the tests).
     std::size_t computed() const { return samples_.made() + coarse_.made() + coarseLobes_.made() + albedo_.made() + albedoCurves_.made() + lobes_.made() + attenuation_.made(); }
 
@@ -226,6 +260,7 @@ private:
     RecentlyUsed<AttenuationKey, std::vector<glm::vec2>> attenuation_{4};
     std::array<LagSlot<std::optional<Albedo>>, 4> albedoSlots_;
     std::array<LagSlot<std::vector<AlbedoSample>>, 4> curveSlots_;
+    PaintedLines painted_;
     bool owed_ = false, held_ = false;
     std::uint64_t frame_ = 0;
 };

@@ -99,12 +99,55 @@ void paintText(ImDrawList* dl, const FigureText& t) {
     }
 }
 
+
+// A line as the draw list's last vertices and indices (from `vertices`, `indices` and vertex index
+// `base` on), or nothing where painting it began a command (a renderer with vertex offsets: the
+// indices start again from 0).
+std::optional<KeptMesh> painting(const ImDrawList* dl, int vertices, int indices, unsigned base, int commands) {
+    const int count = dl->VtxBuffer.Size - vertices;
+    if (dl->CmdBuffer.Size != commands || dl->_VtxCurrentIdx != base + static_cast<unsigned>(count)) {
+        return std::nullopt;
+    }
+    KeptMesh m;
+    m.vertices.assign(dl->VtxBuffer.Data + vertices, dl->VtxBuffer.Data + dl->VtxBuffer.Size);
+    m.indices.reserve(static_cast<std::size_t>(dl->IdxBuffer.Size - indices));
+    for (int i = indices; i < dl->IdxBuffer.Size; ++i) {
+        m.indices.push_back(static_cast<ImDrawIdx>(dl->IdxBuffer.Data[i] - base));
+    }
+    return m;
+}
+
+// A line, copied from `kept` where it holds the same line's painting (lines long or dashed: a short
+// solid one costs less to paint than to look up), else painted and kept.
+void line(ImDrawList* dl, const FigureLine& l, PaintedLines* kept) {
+    const ImU32 color = imColor(l.color);
+    if (!kept || (l.points.size() < 8 && l.dash.empty())) {
+        polyline(dl, l.points, color, l.width, l.dash);
+        return;
+    }
+    // What ImGui's polyline and disc write depends on besides the line (imgui_draw.cpp): the white
+    // pixel (fills) and, for a textured anti-aliased line of a whole width, its row of the atlas.
+    const int thickness = static_cast<int>(std::max(l.width, 1.0f));
+    const ImVec4 lineUv = thickness < IM_DRAWLIST_TEX_LINES_WIDTH_MAX ? ImGui::GetIO().Fonts->TexUvLines[thickness] : ImVec4();
+    const PaintedLines::Key key{l.width, color, dl->Flags, ImGui::GetFontTexUvWhitePixel(), lineUv};
+    if (const KeptMesh* m = kept->find(l.points, l.dash, key)) {
+        drawMesh(dl, *m, false);
+        return;
+    }
+    const int vertices = dl->VtxBuffer.Size, indices = dl->IdxBuffer.Size, commands = dl->CmdBuffer.Size;
+    const unsigned base = dl->_VtxCurrentIdx;
+    polyline(dl, l.points, color, l.width, l.dash);
+    if (std::optional<KeptMesh> m = painting(dl, vertices, indices, base, commands)) {
+        kept->keep(l.points, l.dash, key, std::move(*m));
+    }
+}
+
 } // namespace
 
-void paint(ImDrawList* dl, const Figure& figure) {
+void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept) {
     for (const FigureShape& shape : figure.shapes) {
         if (const auto* l = std::get_if<FigureLine>(&shape)) {
-            polyline(dl, l->points, imColor(l->color), l->width, l->dash);
+            line(dl, *l, kept);
         } else if (const auto* g = std::get_if<FigurePolygon>(&shape)) {
             const std::vector<ImVec2>& pts = imPoints(g->points);
             dl->AddConvexPolyFilled(pts.data(), static_cast<int>(pts.size()), imColor(g->fill));
@@ -133,7 +176,7 @@ Pens pens() {
     return p;
 }
 
-void drawMesh(ImDrawList* dl, const KeptMesh& mesh) {
+void drawMesh(ImDrawList* dl, const KeptMesh& mesh, bool whitePixel) {
     const int vtx = static_cast<int>(mesh.vertices.size()), idx = static_cast<int>(mesh.indices.size());
     if (vtx == 0 || idx == 0) {
         return;
@@ -147,7 +190,7 @@ void drawMesh(ImDrawList* dl, const KeptMesh& mesh) {
     ImDrawVert* v = dl->_VtxWritePtr;
     std::memcpy(v, mesh.vertices.data(), mesh.vertices.size() * sizeof(ImDrawVert));
     const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
-    if (mesh.vertices.front().uv.x != uv.x || mesh.vertices.front().uv.y != uv.y) { // the atlas was built again
+    if (whitePixel && (mesh.vertices.front().uv.x != uv.x || mesh.vertices.front().uv.y != uv.y)) { // the atlas was built again
         for (int k = 0; k < vtx; ++k) {
             v[k].uv = uv;
         }

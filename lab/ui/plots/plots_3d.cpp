@@ -7,6 +7,7 @@
 // copied into the draw list each frame; the grid lines, arrows and labels are drawn on top.
 #include "ui/plots/plots_3d.h"
 #include "ui/plots/plot_kit.h"
+#include "ui/theme_style.h"
 #include "ui/widgets.h"
 
 #include "core/lighting/lighting.h"
@@ -242,24 +243,39 @@ void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& 
     const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
     const float pi = glm::pi<float>();
     // The surface plane: rings at the radial scale's values, spokes every 30°, behind the lobe
-    // (the camera stays above the plane).
+    // (the camera stays above the plane). The rings and B's wireframe are solid lines painted as the
+    // figures' are, so that an unchanged frame copies them (PlotCache::painted()).
+    Figure rings;
+    const FigureColor grid = colorOf(currentColors().plot, Ink::Grid);
     for (const RadialRing& ring : radialRings(v.outer, key.scale)) {
-        std::vector<ImVec2> circle;
+        FigureLine circle;
+        circle.width = p.thin;
+        circle.color = grid;
         for (int k = 0; k <= 72; ++k) {
             const float t = 2.0f * pi * static_cast<float>(k) / 72.0f;
-            circle.push_back(cam.at(ring.radius * glm::vec3(std::cos(t), 0.0f, std::sin(t))));
+            circle.points.push_back(toVec2(cam.at(ring.radius * glm::vec3(std::cos(t), 0.0f, std::sin(t)))));
         }
-        dl->AddPolyline(circle.data(), static_cast<int>(circle.size()), ink(Ink::Grid), 0, p.thin);
+        rings.shapes.push_back(std::move(circle));
     }
+    paint(dl, rings, &s.cache.painted());
     for (int deg = 0; deg < 360; deg += 30) {
         const float t = glm::radians(static_cast<float>(deg));
         dl->AddLine(cam.at(glm::vec3(0.0f)), cam.at(glm::vec3(std::cos(t), 0.0f, std::sin(t))),
                     deg % 180 == 0 ? ink(Ink::Axis) : ink(Ink::Grid), p.thin);
     }
     drawMesh(dl, mesh.surface);
+    Figure wires;
+    const FigureColor compare = colorOf(currentColors().plot, Ink::Compare);
     for (const std::vector<ImVec2>& line : mesh.wireframe) {
-        dl->AddPolyline(line.data(), static_cast<int>(line.size()), ink(Ink::Compare), 0, p.thin);
+        FigureLine wire;
+        wire.width = p.thin;
+        wire.color = compare;
+        for (const ImVec2& q : line) {
+            wire.points.push_back(toVec2(q));
+        }
+        wires.shapes.push_back(std::move(wire));
     }
+    paint(dl, wires, &s.cache.painted());
     // The vectors: N, L, R, and V (the plane plot's reading direction) with its H.
     const glm::vec3& V = v.viewer;
     ScreenPlot vectors;
@@ -405,10 +421,20 @@ void pointTokens(Readout& r, const ProbeLobe& at) {
 }
 
 // The grid for `inputs`: the full one, or the coarse one during a change when the full one is not kept
-// (a frame whose inputs changed owes the frame after, which draws the full one).
-std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, const LobeInputs& inputs, bool& coarse) {
+// (a frame whose inputs changed owes the frame after, which draws the full one). The coarse one lags
+// like the albedo: it is the grid of the draft's inputs, taken again at most every 0.5 s, and `inputs`
+// become those.
+std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, Lobe3dState::Draft& draft, LobeInputs& inputs,
+                                           bool& coarse) {
     Lobe3dState& st = s.lobe3d;
     coarse = s.cache.coarse(s.cache.observe(watch, inputs), st.grids.find({inputs, false}) != nullptr);
+    if (coarse) {
+        const double now = ImGui::GetTime();
+        if (!draft.made || now - draft.at >= PlotCache::kAlbedoLagSeconds) {
+            draft = {true, inputs, now};
+        }
+        inputs = draft.inputs;
+    }
     return st.grids.get({inputs, coarse}, [&] { return sampleHemisphere(inputs, coarse ? kLobeCoarseGrid : kLobeGrid); });
 }
 
@@ -417,10 +443,10 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
     v.a = &a;
     Lobe3dState& st = s.lobe3d;
     v.inA = point ? probeLobeInputs(a, *point) : lobeInputs(a, a.plotIncidentDeg);
-    v.gridA = grid(s, st.watchA, v.inA, v.coarseA);
+    v.gridA = grid(s, st.watchA, st.draftA, v.inA, v.coarseA);
     if (b) {
         v.inB = point ? probeLobeInputs(*b, *point) : lobeInputs(*b, a.plotIncidentDeg);
-        v.gridB = grid(s, st.watchB, v.inB, v.coarseB);
+        v.gridB = grid(s, st.watchB, st.draftB, v.inB, v.coarseB);
     }
     v.viewer = point ? point->viewer : outgoingDirection(std::fabs(s.viewerDeg), s.viewerDeg >= 0.0f ? 0.0f : 180.0f);
     v.atPoint = point != nullptr;

@@ -16,8 +16,8 @@
 // kept in Lobe3dState's cache with the peak: a frame in which nothing changed copies the kept
 // mesh (the surface and the map are 8,281 vertices each: ImGui's 16-bit indices have room). While
 // the inputs change (a drag: ui/plots/plot_cache.h's ChangeWatch), the view draws the coarse grid
-// (kLobeCoarseGrid, 589 samples) and its peak, the numbers muted, and owes the app a frame: the first
-// frame after the change draws the full grid. What it does not do: call GL
+// (kLobeCoarseGrid, 589 samples) and its peak, the numbers muted, lagging like the albedo (the inputs
+// of at most 0.5 s ago), and owes the app a frame: the first frame after the change draws the full grid. What it does not do: call GL
 // (ImGui draw lists only), or scroll (it fits the region it is given).
 #pragma once
 
@@ -67,6 +67,14 @@ struct Lobe3dState {
     RecentlyUsed<Lobe3dKey, Lobe3dMesh> meshes{2};
     RecentlyUsed<std::pair<GridKey, PlotComponent>, LobeMaximum> peaks{2}; // A's, for the readout
     ChangeWatch watchA, watchB; // whether A's and B's inputs are in a change (a coarse plot then)
+    // During a change, the inputs A's and B's coarse grids show and when they were taken (ImGui's
+    // time): they lag like the albedo, taken again at most every PlotCache::kAlbedoLagSeconds.
+    struct Draft {
+        bool made = false;
+        LobeInputs inputs;
+        double at = 0.0;
+    };
+    Draft draftA, draftB;
     // The largest value of the grids last drawn (a scan of 8,281 values each), found again while the
     // grids and the component stay the same.
     struct Largest {

@@ -144,11 +144,24 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p,
 Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
     Overlay o;
     // During a change (a drag), a coarse copy of the three (every 3rd degree: all three, so that they share
-    // one scale), its readout muted; the first frame after the change (owed) draws them in full.
+    // one scale), its readout muted, lagging like the albedo (PlotSettings::overlayDraft); the first frame
+    // after the change (owed) draws them in full.
     for (std::size_t i = 0; i < 3; ++i) {
         o.inputs[i] = lobeInputs(a, s.overlayDeg[static_cast<int>(i)]);
     }
     o.coarse = s.cache.coarseSet(s.overlayChanges, o.inputs);
+    if (o.coarse) {
+        const double now = ImGui::GetTime();
+        bool sameAngles = s.overlayDraftAt >= 0.0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            sameAngles = sameAngles && s.overlayDraft[i].incidentDeg == o.inputs[i].incidentDeg;
+        }
+        if (!sameAngles || now - s.overlayDraftAt >= PlotCache::kAlbedoLagSeconds) {
+            s.overlayDraft = o.inputs;
+            s.overlayDraftAt = now;
+        }
+        o.inputs = s.overlayDraft;
+    }
     for (std::size_t i = 0; i < 3; ++i) {
         o.sets[i] = s.cache.samples(o.inputs[i], o.coarse);
     }
@@ -245,7 +258,7 @@ void cartesianLobes(const Canvas& c, const Lobes& lobes, PlotSettings& s) {
     plot.canvas.line({at(lobes.incident, 0), at(lobes.incident, 1)}, style.thin(), Ink::Mirror); // the mirror angle
     plot.canvas.line({at(lobes.viewer, 0), at(lobes.viewer, 1)}, style.thin(), Ink::Viewer);
     lobeCurves(plot, lobes, s, placementOf(b));
-    plot.paint(c.dl);
+    plot.paint(c.dl, &s.cache.painted());
 }
 
 // The probe's vectors in its own plane of incidence: N up, L to the left.
@@ -304,7 +317,7 @@ void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s,
     if (probe && !probe->lights.empty() && !lobes.point) { // at the point, L and V are the probe's
         probeArrows(plot, f, *probe, a.brdf);
     }
-    plot.paint(c.dl);
+    plot.paint(c.dl, &s.cache.painted());
     if (!lobes.point) {
         dragArrows(f, L, V, a, s);
     }
@@ -393,7 +406,7 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
             // The fields name them.
             plot.canvas.arrow(f.at({0, 0}), f.at(dirFromDeg(deg, -1.0f) * 0.9f), overlayInk(i), plot.style.stroke(), "");
         }
-        plot.paint(canvas.dl);
+        plot.paint(canvas.dl, &s.cache.painted());
     }
     // The three angles, each field in its curve's colour.
     if (!block.controlsFit) {
@@ -465,7 +478,7 @@ void attenuationCanvas(const Canvas& c, const Attenuation& t, PlotCache& cache) 
         plot.canvas.line({at(t.distance, 0), m}, style.thin(), Ink::Specular);
         plot.canvas.disc(m, 5.0f * style.scale, Ink::Specular);
     }
-    plot.paint(c.dl);
+    plot.paint(c.dl, &cache.painted());
 }
 
 void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Attenuation& t,

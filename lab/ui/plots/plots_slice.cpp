@@ -354,6 +354,7 @@ void drawView(PlotSettings& s, const Pens& p, Frame& f, ImVec2 origin, ImVec2 ro
 void slicePanel(const Preset& a, const Preset* b, PlotSettings& s) {
     const Pens p = pens();
     Frame f;
+    f.state = &s.slice;
     f.images = images(a, b, s);
     f.component = s.slice.component;
     scaled(f.images, f.component, s.slice);

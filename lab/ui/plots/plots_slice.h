@@ -85,6 +85,18 @@ struct SliceState {
         double at = 0.0;
     };
     Draft draft;
+    // The readout strip's height (slice_parts.h readoutHeight: two readouts written and measured) for
+    // the latest inputs it was asked for, at up to two widths a frame (whether three images fit, the view).
+    struct ReadoutHeight {
+        bool made = false, hasB = false;
+        LobeInputs a, b;
+        PlotComponent component = PlotComponent::Specular;
+        float markerH = 0.0f, markerD = 0.0f;
+        bool onSlice = false;
+        float incidentDeg = 0.0f, viewerDeg = 0.0f, font = 0.0f, width = 0.0f;
+        float height = 0.0f;
+    };
+    std::array<ReadoutHeight, 2> readoutHeights;
     // The scales of the images last drawn (each a scan of 8,281 values), found again while the images
     // and the component stay the same.
     struct Scales {

@@ -52,6 +52,7 @@ struct Frame {
     float incidentDeg = 0.0f, viewerDeg = 0.0f; // the plane plot's θi and V
     Shown shown = Shown::A;
     Layout layout;
+    SliceState* state = nullptr; // where readoutHeight keeps what it measured (none: measured each time)
 };
 
 // What the pointer is over: an image (-1 none) and the angles there (to 0.1°).
