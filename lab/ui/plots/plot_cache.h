@@ -46,6 +46,19 @@ bool operator==(const CurvePlacement& x, const CurvePlacement& y);
 struct KeptMesh {
     std::vector<ImDrawVert> vertices;
     std::vector<ImDrawIdx> indices;
+    // Where drawMesh copied it last. ImGui keeps a window's draw list buffers from frame to frame and
+    // only appends to them, so a mesh copied in the frame before to the same place (the same context,
+    // list, buffers, offsets and first index) is still there, byte for byte: that frame copies nothing.
+    struct Placed {
+        const void* context = nullptr;
+        const ImDrawList* list = nullptr;
+        const ImDrawVert* vertexData = nullptr;
+        const ImDrawIdx* indexData = nullptr;
+        int vertexAt = -1, indexAt = -1, frame = -1;
+        unsigned base = 0;
+        ImVec2 uv;
+    };
+    mutable Placed placed; // where it is, not what it is: a value kept in a cache is still the same mesh
 };
 
 // Lines as ImGui painted them (anti-aliased polylines, a dash's dots), kept with everything the

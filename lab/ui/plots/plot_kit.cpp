@@ -187,9 +187,23 @@ void drawMesh(ImDrawList* dl, const KeptMesh& mesh, bool whitePixel) {
         dl->PrimUnreserve(idx, vtx);
         return;
     }
+    const ImVec2 uv = whitePixel ? ImGui::GetFontTexUvWhitePixel() : ImVec2(0.0f, 0.0f);
+    const KeptMesh::Placed here{ImGui::GetCurrentContext(), dl, dl->VtxBuffer.Data, dl->IdxBuffer.Data,
+                                static_cast<int>(dl->_VtxWritePtr - dl->VtxBuffer.Data),
+                                static_cast<int>(dl->_IdxWritePtr - dl->IdxBuffer.Data), ImGui::GetFrameCount(), base, uv};
+    const KeptMesh::Placed& was = mesh.placed;
+    const bool stillThere = was.context == here.context && was.list == here.list && was.vertexData == here.vertexData &&
+                            was.indexData == here.indexData && was.vertexAt == here.vertexAt && was.indexAt == here.indexAt &&
+                            was.frame + 1 == here.frame && was.base == here.base && was.uv.x == uv.x && was.uv.y == uv.y;
+    mesh.placed = here;
+    if (stillThere) {
+        dl->_VtxWritePtr += vtx;
+        dl->_IdxWritePtr += idx;
+        dl->_VtxCurrentIdx += static_cast<unsigned>(vtx);
+        return;
+    }
     ImDrawVert* v = dl->_VtxWritePtr;
     std::memcpy(v, mesh.vertices.data(), mesh.vertices.size() * sizeof(ImDrawVert));
-    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
     if (whitePixel && (mesh.vertices.front().uv.x != uv.x || mesh.vertices.front().uv.y != uv.y)) { // the atlas was built again
         for (int k = 0; k < vtx; ++k) {
             v[k].uv = uv;
