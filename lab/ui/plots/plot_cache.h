@@ -278,4 +278,26 @@ private:
     std::uint64_t frame_ = 0;
 };
 
+// What a coarse plot shows during a change, lagging like the albedo: the inputs taken when it was
+// drafted, drafted again from the frame's inputs at most every PlotCache::kAlbedoLagSeconds (ImGui's
+// time), or at once where `retake` (what must show at once: the overlay's own angles).
+template <class Inputs> class LaggingDraft {
+public:
+    const Inputs& take(const Inputs& now, double time, bool retake = false) {
+        if (!made_ || retake || time - at_ >= PlotCache::kAlbedoLagSeconds) {
+            inputs_ = now;
+            at_ = time;
+            made_ = true;
+        }
+        return inputs_;
+    }
+    bool made() const { return made_; }
+    const Inputs& inputs() const { return inputs_; }
+
+private:
+    bool made_ = false;
+    Inputs inputs_{};
+    double at_ = 0.0;
+};
+
 } // namespace lab::ui

@@ -424,16 +424,12 @@ void pointTokens(Readout& r, const ProbeLobe& at) {
 // (a frame whose inputs changed owes the frame after, which draws the full one). The coarse one lags
 // like the albedo: it is the grid of the draft's inputs, taken again at most every 0.5 s, and `inputs`
 // become those.
-std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, Lobe3dState::Draft& draft, LobeInputs& inputs,
-                                           bool& coarse) {
+std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, LaggingDraft<LobeInputs>& draft,
+                                           LobeInputs& inputs, bool& coarse) {
     Lobe3dState& st = s.lobe3d;
     coarse = s.cache.coarse(s.cache.observe(watch, inputs), st.grids.find({inputs, false}) != nullptr);
     if (coarse) {
-        const double now = ImGui::GetTime();
-        if (!draft.made || now - draft.at >= PlotCache::kAlbedoLagSeconds) {
-            draft = {true, inputs, now};
-        }
-        inputs = draft.inputs;
+        inputs = draft.take(inputs, ImGui::GetTime());
     }
     return st.grids.get({inputs, coarse}, [&] { return sampleHemisphere(inputs, coarse ? kLobeCoarseGrid : kLobeGrid); });
 }

@@ -67,14 +67,7 @@ struct Lobe3dState {
     RecentlyUsed<Lobe3dKey, Lobe3dMesh> meshes{2};
     RecentlyUsed<std::pair<GridKey, PlotComponent>, LobeMaximum> peaks{2}; // A's, for the readout
     ChangeWatch watchA, watchB; // whether A's and B's inputs are in a change (a coarse plot then)
-    // During a change, the inputs A's and B's coarse grids show and when they were taken (ImGui's
-    // time): they lag like the albedo, taken again at most every PlotCache::kAlbedoLagSeconds.
-    struct Draft {
-        bool made = false;
-        LobeInputs inputs;
-        double at = 0.0;
-    };
-    Draft draftA, draftB;
+    LaggingDraft<LobeInputs> draftA, draftB; // the inputs A's and B's coarse grids show during a change
     // The largest value of the grids last drawn (a scan of 8,281 values each), found again while the
     // grids and the component stay the same.
     struct Largest {

@@ -22,9 +22,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
-#include <cstdarg>
-#include <cstdio>
 #include <functional>
 #include <optional>
 #include <string>
@@ -143,24 +140,17 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p,
 
 Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
     Overlay o;
-    // During a change (a drag), a coarse copy of the three (every 3rd degree: all three, so that they share
-    // one scale), its readout muted, lagging like the albedo (PlotSettings::overlayDraft); the first frame
-    // after the change (owed) draws them in full.
+    // During a change (a drag), a coarse copy of the three (every 3rd degree: all three, so that they share one
+    // scale), its readout muted, lagging like the albedo; the first frame after the change (owed) draws them in full.
     for (std::size_t i = 0; i < 3; ++i) {
         o.inputs[i] = lobeInputs(a, s.overlayDeg[static_cast<int>(i)]);
     }
     o.coarse = s.cache.coarseSet(s.overlayChanges, o.inputs);
     if (o.coarse) {
-        const double now = ImGui::GetTime();
-        bool sameAngles = s.overlayDraftAt >= 0.0;
-        for (std::size_t i = 0; i < 3; ++i) {
-            sameAngles = sameAngles && s.overlayDraft[i].incidentDeg == o.inputs[i].incidentDeg;
-        }
-        if (!sameAngles || now - s.overlayDraftAt >= PlotCache::kAlbedoLagSeconds) {
-            s.overlayDraft = o.inputs;
-            s.overlayDraftAt = now;
-        }
-        o.inputs = s.overlayDraft;
+        const std::array<LobeInputs, 3>& drafted = s.overlayDraft.inputs();
+        const bool moved = drafted[0].incidentDeg != o.inputs[0].incidentDeg || drafted[1].incidentDeg != o.inputs[1].incidentDeg ||
+                           drafted[2].incidentDeg != o.inputs[2].incidentDeg;
+        o.inputs = s.overlayDraft.take(o.inputs, ImGui::GetTime(), moved);
     }
     for (std::size_t i = 0; i < 3; ++i) {
         o.sets[i] = s.cache.samples(o.inputs[i], o.coarse);

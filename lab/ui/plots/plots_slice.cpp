@@ -105,13 +105,10 @@ Images images(const Preset& a, const Preset* b, PlotSettings& s) {
     im.imageA = im.inA;
     im.imageB = im.inB;
     if (im.coarse) {
-        SliceState::Draft& d = st.draft;
-        const double now = ImGui::GetTime();
-        if (!d.made || d.hasB != (b != nullptr) || now - d.at >= PlotCache::kAlbedoLagSeconds) {
-            d = {true, b != nullptr, im.inA, im.inB, now};
-        }
-        im.imageA = d.a;
-        im.imageB = d.b;
+        const std::array<LobeInputs, 2>& drafted = st.draft.take({im.inA, im.inB}, ImGui::GetTime(), st.draftHasB != (b != nullptr));
+        st.draftHasB = b != nullptr;
+        im.imageA = drafted[0];
+        im.imageB = drafted[1];
     }
     auto sample = [&](const LobeInputs& in) {
         return st.images.get({in, im.coarse}, [&] { return sampleSlice(in, im.coarse ? kSliceCoarseStepDeg : 1); });

@@ -77,14 +77,9 @@ struct SliceState {
     RecentlyUsed<std::pair<ImageKey, ImageKey>, SliceImage> differences{2};
     RecentlyUsed<SliceKey, SliceMesh> meshes{2};
     ChangeWatch watchA, watchB; // whether A's and B's inputs are in a change (the coarse image then)
-    // During a change, the inputs the coarse images show and when they were taken (ImGui's time): they
-    // lag like the albedo, taken again at most every PlotCache::kAlbedoLagSeconds.
-    struct Draft {
-        bool made = false, hasB = false;
-        LobeInputs a, b;
-        double at = 0.0;
-    };
-    Draft draft;
+    // During a change, the inputs A's and B's coarse images show (B's: with a compare set, draftHasB).
+    LaggingDraft<std::array<LobeInputs, 2>> draft;
+    bool draftHasB = false;
     // The readout strip's height (slice_parts.h readoutHeight: two readouts written and measured) for
     // the latest inputs it was asked for, at up to two widths a frame (whether three images fit, the view).
     struct ReadoutHeight {
