@@ -53,8 +53,9 @@ bool operator==(const CurvePlacement& x, const CurvePlacement& y) {
 }
 
 bool operator==(const PlotCache::LobeKey& x, const PlotCache::LobeKey& y) {
-    return x.inputs == y.inputs && x.component == y.component && x.outer == y.outer && x.scale == y.scale &&
-           x.at == y.at;
+    // The inputs last: comparing them is the costly part, and most keys differ in something else.
+    return x.component == y.component && x.outer == y.outer && x.scale == y.scale && x.at == y.at &&
+           x.inputs == y.inputs;
 }
 
 bool operator==(const PlotCache::AttenuationKey& x, const PlotCache::AttenuationKey& y) {
@@ -135,6 +136,16 @@ PlotCache::Points PlotCache::lobe(const LobeInputs& inputs, PlotComponent compon
             }
         }
         return placeAndThin(unit, at);
+    });
+}
+
+std::shared_ptr<const Figure> PlotCache::polarGrid(const Polar& frame, float outer, RadialScale scale, const PlotStyle& style) {
+    const GridKey key{frame.origin, frame.radius, outer, scale, style.scale, style.arcStep, style.palette, style.measure};
+    return grids_.get(key, [&] {
+        Figure figure;
+        PlotCanvas canvas(figure, style);
+        lab::polarGrid(canvas, frame, outer, scale, false);
+        return figure;
     });
 }
 

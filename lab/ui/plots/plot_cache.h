@@ -14,6 +14,7 @@
 
 #include "core/plots/energy.h"
 #include "core/plots/plot_data.h"
+#include "core/plots/plot_drawing.h"
 
 #include <glm/vec2.hpp>
 #include <imgui.h>
@@ -230,6 +231,9 @@ public:
     Lagged<std::optional<Albedo>> laggingAlbedo(Slot slot, const LobeInputs& inputs, double now);
     Lagged<std::vector<AlbedoSample>> laggingAlbedoCurve(Slot slot, LobeInputs inputs, double now);
 
+    // The polar grid (core/plots/plot_drawing.h polarGrid, without a caption) of the half-disc `frame` in
+    // `style`, kept by everything it is drawn from: its rings, spokes, values and labels as a Figure.
+    std::shared_ptr<const Figure> polarGrid(const Polar& frame, float outer, RadialScale scale, const PlotStyle& style);
     // The lines painted in earlier frames (plot_kit.h's paint).
     PaintedLines& painted() { return painted_; }
 
@@ -248,6 +252,18 @@ private:
         glm::vec3 coefficients;
         float maxDistance;
         CurvePlacement at;
+    };
+    struct GridKey {
+        glm::vec2 origin;
+        float radius, outer;
+        RadialScale scale;
+        float styleScale, arcStep;
+        const Palette* palette;
+        TextMeasure measure;
+        bool operator==(const GridKey& o) const {
+            return origin == o.origin && radius == o.radius && outer == o.outer && scale == o.scale &&
+                   styleScale == o.styleScale && arcStep == o.arcStep && palette == o.palette && measure == o.measure;
+        }
     };
     // What one readout showed last: its inputs in the latest frame and the value shown.
     template <class Value> struct LagSlot {
@@ -271,6 +287,7 @@ private:
     RecentlyUsed<LobeInputs, std::vector<AlbedoSample>> albedoCurves_{4}; // A and B, against θi
     RecentlyUsed<LobeKey, std::vector<glm::vec2>> lobes_{32};
     RecentlyUsed<AttenuationKey, std::vector<glm::vec2>> attenuation_{4};
+    RecentlyUsed<GridKey, Figure> grids_{4}; // the lobe's and the overlay's (not in computed(): a frame's scale)
     std::array<LagSlot<std::optional<Albedo>>, 4> albedoSlots_;
     std::array<LagSlot<std::vector<AlbedoSample>>, 4> curveSlots_;
     PaintedLines painted_;

@@ -99,7 +99,6 @@ void paintText(ImDrawList* dl, const FigureText& t) {
     }
 }
 
-
 // A line as the draw list's last vertices and indices (from `vertices`, `indices` and vertex index
 // `base` on), or nothing where painting it began a command (a renderer with vertex offsets: the
 // indices start again from 0).

@@ -289,7 +289,7 @@ void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s,
     ScreenPlot plot;
     const PlotStyle& style = plot.style;
     const Polar f = polarFrame(c.origin(), c.width, c.height, style, false);
-    polarGrid(plot.canvas, f, lobes.outer, s.scale, false);
+    paint(c.dl, *s.cache.polarGrid(f, lobes.outer, s.scale, style), &s.cache.painted()); // under the plot's shapes
     lobeCurves(plot, lobes, s, placementOf(f));
     glm::vec2 L = dirFromDeg(lobes.incident, -1.0f), R = dirFromDeg(lobes.incident, 1.0f), V = dirFromDeg(lobes.viewer, 1.0f);
     auto arrow = [&](glm::vec2 dir, float length, Ink ink, const char* label, float width) {
@@ -386,7 +386,7 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
     if (canvas.shown()) {
         ScreenPlot plot;
         const Polar f = polarFrame(canvas.origin(), canvas.width, canvas.height, plot.style, false);
-        polarGrid(plot.canvas, f, o.outer, s.scale, false);
+        paint(canvas.dl, *s.cache.polarGrid(f, o.outer, s.scale, plot.style), &s.cache.painted());
         for (std::size_t i = 0; i < 3; ++i) {
             const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, placementOf(f), o.coarse);
             plot.canvas.line(*curve, plot.style.stroke(), overlayInk(i));
