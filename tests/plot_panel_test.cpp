@@ -170,6 +170,7 @@ TEST(PlotPanel, TheLobe3dViewNeverShowsStaleData) {
         Outcome cached = drawPlots(r, 1280, 800, a, compare, warm);
         EXPECT_GT(warm.lobe3d.computed(), before) << "the " << what << " changed nothing the cache keys on";
         ui::PlotSettings cold = warm;
+        cold.cache = ui::PlotCache{}; // the lines painted afresh too (PaintedLines)
         cold.lobe3d = ui::Lobe3dState{};
         cold.lobe3d.component = warm.lobe3d.component;
         cold.lobe3d.yawDeg = warm.lobe3d.yawDeg;
@@ -420,6 +421,44 @@ TEST(PlotPanel, AfterADragTheNextFrameDrawsWhatAColdCacheDraws) {
         ui::PlotSettings cold;
         cold.view = view;
         EXPECT_TRUE(sameDrawing(next, drawPlots(r, 1280, 800, a, nullptr, cold))) << "view " << int(view);
+    }
+}
+
+// Issue 40: during a change the 3D lobe's and the slice's coarse plots lag like the albedo: drafted
+// again at most every kAlbedoLagSeconds (a frame here is 1/60 s), the frames between drawing the same
+// draft without computing anything; the frame after the change draws what a cold cache draws.
+TEST(PlotPanel, TheCoarsePlotsLagDuringAChangeLikeTheAlbedo) {
+    CpuImGui imgui(1.0f);
+    ui::Rect r{900, 0, 380, 800};
+    for (ui::PlotTab view : {ui::PlotTab::Lobe3d, ui::PlotTab::Slice}) {
+        Preset a, b;
+        b.brdf = BrdfModel::BlinnPhong;
+        ui::PlotSettings s;
+        s.view = view;
+        drawPlots(r, 1280, 800, a, &b, s);
+        auto computed = [&] { return view == ui::PlotTab::Lobe3d ? s.lobe3d.computed() : s.slice.computed(); };
+        const int perLag = static_cast<int>(ui::PlotCache::kAlbedoLagSeconds * 60.0);
+        std::size_t drafted = computed();
+        Outcome first;
+        for (int i = 1; i <= 2 * perLag + 1; ++i) { // a drag: a new shininess every frame
+            a.material.shininess = 40.0f + float(i); // never the preset's 32, which the cache holds in full
+            const Outcome during = drawPlots(r, 1280, 800, a, &b, s, 1);
+            if (i == 1) {
+                EXPECT_GT(computed(), drafted) << "view " << int(view) << ": the change's first frame drafts";
+                drafted = computed();
+                first = during;
+            } else if (i < perLag) {
+                EXPECT_EQ(computed(), drafted) << "view " << int(view) << ", frame " << i << ": the draft is kept";
+                EXPECT_TRUE(sameDrawing(during, first)) << "view " << int(view) << ", frame " << i;
+            }
+        }
+        EXPECT_GT(computed(), drafted) << "view " << int(view) << ": drafted again after " << ui::PlotCache::kAlbedoLagSeconds << " s";
+        EXPECT_TRUE(s.cache.owed()) << "view " << int(view);
+        const Outcome next = drawPlots(r, 1280, 800, a, &b, s, 1);
+        EXPECT_FALSE(s.cache.owed()) << "view " << int(view);
+        ui::PlotSettings cold;
+        cold.view = view;
+        EXPECT_TRUE(sameDrawing(next, drawPlots(r, 1280, 800, a, &b, cold))) << "view " << int(view);
     }
 }
 

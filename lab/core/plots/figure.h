@@ -14,6 +14,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <variant>
@@ -82,6 +83,10 @@ std::string figureSvg(const Figure& figure);
 // own, as SVG's stroke-dasharray cuts it; a dot is a piece of two equal points. The whole line when
 // `dash` is empty or its lengths add up to less than half a pixel.
 std::vector<std::vector<glm::vec2>> dashRuns(const std::vector<glm::vec2>& points, const std::vector<float>& dash);
+// The same pieces handed to `draw` one by one, in order, each in `run` (a buffer the caller keeps:
+// nothing is allocated a piece). dashRuns() collects them.
+void forEachDashRun(const std::vector<glm::vec2>& points, const std::vector<float>& dash, std::vector<glm::vec2>& run,
+                    const std::function<void(const std::vector<glm::vec2>&)>& draw);
 
 // Smallest and largest PNG scales (the PNG is width·scale × height·scale pixels, rounded).
 inline constexpr float kMinFigureScale = 0.25f;

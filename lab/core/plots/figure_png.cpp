@@ -145,15 +145,17 @@ void disc(Coverage& cov, glm::vec2 c, float r) {
 
 } // namespace
 
-std::vector<std::vector<glm::vec2>> dashRuns(const std::vector<glm::vec2>& points, const std::vector<float>& dash) {
+void forEachDashRun(const std::vector<glm::vec2>& points, const std::vector<float>& dash, std::vector<glm::vec2>& run,
+                    const std::function<void(const std::vector<glm::vec2>&)>& draw) {
     float period = 0.0f;
     for (float d : dash) {
         period += std::max(d, 0.0f);
     }
     if (points.size() < 2 || dash.size() < 2 || dash.size() % 2 != 0 || !(period >= 0.5f)) {
-        return {points};
+        draw(points);
+        return;
     }
-    std::vector<std::vector<glm::vec2>> runs{{points[0]}};
+    run.assign(1, points[0]);
     std::size_t k = 0; // the pattern's element the walk is in: even ones draw
     float left = std::max(dash[0], 0.0f);
     for (std::size_t i = 0; i + 1 < points.size(); ++i) {
@@ -164,22 +166,29 @@ std::vector<std::vector<glm::vec2>> dashRuns(const std::vector<glm::vec2>& point
             at += left;
             const glm::vec2 p = a + (b - a) * (at / length);
             if (k % 2 == 0) {
-                runs.back().push_back(p);
+                run.push_back(p);
             }
             k = (k + 1) % dash.size();
             left = std::max(dash[k], 0.0f);
-            if (k % 2 == 0) {
-                runs.push_back({p});
+            if (k % 2 == 0) { // a dash begins: the one before is whole (it ended with a point)
+                draw(run);
+                run.assign(1, p);
             }
         }
         left -= length - at;
         if (k % 2 == 0) {
-            runs.back().push_back(b);
+            run.push_back(b);
         }
     }
-    if (runs.back().size() < 2) { // a dash that begins exactly at the line's end draws nothing
-        runs.pop_back();
+    if (run.size() >= 2) { // a dash that begins exactly at the line's end draws nothing
+        draw(run);
     }
+}
+
+std::vector<std::vector<glm::vec2>> dashRuns(const std::vector<glm::vec2>& points, const std::vector<float>& dash) {
+    std::vector<std::vector<glm::vec2>> runs;
+    std::vector<glm::vec2> run;
+    forEachDashRun(points, dash, run, [&](const std::vector<glm::vec2>& piece) { runs.push_back(piece); });
     return runs;
 }
 

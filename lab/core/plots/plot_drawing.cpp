@@ -9,9 +9,12 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdarg>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 
 namespace lab {
 
@@ -49,9 +52,43 @@ std::string format(const char* f, ...) {
     return text;
 }
 
-std::string tickText(float v) { return format("%.3g", double(v)); }
+// The plots write the same few ring values and angles on every frame (a screen plot is drawn 60
+// times a second): the latest ones are kept, each thread its own, so that printf runs only for new
+// numbers. Keyed on the float's bits, so that equal keys print equally (−0 apart from 0).
+namespace {
 
-std::string degrees(float deg) { return format("%.0f", double(deg)) + kDeg; }
+template <std::size_t N> class RecentTexts {
+public:
+    template <class Print> const std::string& get(float v, Print&& print) {
+        std::uint32_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        Entry& e = entries_[(bits ^ (bits >> 13) ^ (bits >> 23)) % N];
+        if (!e.used || e.bits != bits) {
+            e = {bits, true, print(v)};
+        }
+        return e.text;
+    }
+
+private:
+    struct Entry {
+        std::uint32_t bits = 0;
+        bool used = false;
+        std::string text;
+    };
+    std::array<Entry, N> entries_;
+};
+
+} // namespace
+
+std::string tickText(float v) {
+    thread_local RecentTexts<64> kept;
+    return kept.get(v, [](float x) { return format("%.3g", double(x)); });
+}
+
+std::string degrees(float deg) {
+    thread_local RecentTexts<64> kept;
+    return kept.get(deg, [](float x) { return format("%.0f", double(x)) + kDeg; });
+}
 
 namespace {
 

@@ -22,13 +22,40 @@ std::vector<glm::vec2> placeAndThin(const std::vector<glm::vec2>& unit, const Cu
 
 } // namespace
 
+const KeptMesh* PaintedLines::find(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key) {
+    for (Entry& e : entries_) {
+        const Key& k = e.key;
+        if (k.width == key.width && k.color == key.color && k.flags == key.flags && k.fillUv.x == key.fillUv.x &&
+            k.fillUv.y == key.fillUv.y && k.lineUv.x == key.lineUv.x && k.lineUv.y == key.lineUv.y &&
+            k.lineUv.z == key.lineUv.z && k.lineUv.w == key.lineUv.w && e.dash == dash && e.points == points) {
+            e.used = ++clock_;
+            return &e.mesh;
+        }
+    }
+    return nullptr;
+}
+
+void PaintedLines::keep(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key, KeptMesh mesh) {
+    Entry fresh{points, dash, key, std::move(mesh), ++clock_};
+    if (entries_.size() < kCapacity) {
+        entries_.push_back(std::move(fresh));
+        return;
+    }
+    Entry* oldest = &entries_.front();
+    for (Entry& e : entries_) {
+        oldest = e.used < oldest->used ? &e : oldest;
+    }
+    *oldest = std::move(fresh);
+}
+
 bool operator==(const CurvePlacement& x, const CurvePlacement& y) {
     return x.polar == y.polar && x.offset == y.offset && x.scale == y.scale;
 }
 
 bool operator==(const PlotCache::LobeKey& x, const PlotCache::LobeKey& y) {
-    return x.inputs == y.inputs && x.component == y.component && x.outer == y.outer && x.scale == y.scale &&
-           x.at == y.at;
+    // The inputs last: comparing them is the costly part, and most keys differ in something else.
+    return x.component == y.component && x.outer == y.outer && x.scale == y.scale && x.at == y.at &&
+           x.inputs == y.inputs;
 }
 
 bool operator==(const PlotCache::AttenuationKey& x, const PlotCache::AttenuationKey& y) {
@@ -109,6 +136,16 @@ PlotCache::Points PlotCache::lobe(const LobeInputs& inputs, PlotComponent compon
             }
         }
         return placeAndThin(unit, at);
+    });
+}
+
+std::shared_ptr<const Figure> PlotCache::polarGrid(const Polar& frame, float outer, RadialScale scale, const PlotStyle& style) {
+    const GridKey key{frame.origin, frame.radius, outer, scale, style.scale, style.arcStep, style.palette, style.measure};
+    return grids_.get(key, [&] {
+        Figure figure;
+        PlotCanvas canvas(figure, style);
+        lab::polarGrid(canvas, frame, outer, scale, false);
+        return figure;
     });
 }
 

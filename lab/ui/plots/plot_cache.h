@@ -14,8 +14,10 @@
 
 #include "core/plots/energy.h"
 #include "core/plots/plot_data.h"
+#include "core/plots/plot_drawing.h"
 
 #include <glm/vec2.hpp>
+#include <imgui.h>
 
 #include <array>
 #include <cstdint>
@@ -37,6 +39,59 @@ struct CurvePlacement {
     glm::vec2 at(glm::vec2 unit) const { return offset + scale * unit; }
 };
 bool operator==(const CurvePlacement& x, const CurvePlacement& y);
+
+// A mesh kept between frames in the form ImGui's draw list holds it: each vertex with the font
+// atlas's white pixel as its texture coordinate, the triangles by index from 0. A frame copies it
+// (plot_kit.h's drawMesh) rather than writing it vertex by vertex: the 3D lobe's surface and map and
+// the slice's images are 8,281 vertices and 48,600 indices each.
+struct KeptMesh {
+    std::vector<ImDrawVert> vertices;
+    std::vector<ImDrawIdx> indices;
+    // Where drawMesh copied it last. ImGui keeps a window's draw list buffers from frame to frame and
+    // only appends to them, so a mesh copied in the frame before to the same place (the same context,
+    // list, buffers, offsets and first index) is still there, byte for byte: that frame copies nothing.
+    struct Placed {
+        const void* context = nullptr;
+        const ImDrawList* list = nullptr;
+        const ImDrawVert* vertexData = nullptr;
+        const ImDrawIdx* indexData = nullptr;
+        int vertexAt = -1, indexAt = -1, frame = -1;
+        unsigned base = 0;
+        ImVec2 uv;
+    };
+    mutable Placed placed; // where it is, not what it is: a value kept in a cache is still the same mesh
+};
+
+// Lines as ImGui painted them (anti-aliased polylines, a dash's dots), kept with everything the
+// painting depends on: the points, the dash, the width, the colour, the draw list's flags and the
+// font atlas's texture coordinates for fills and lines. A line unchanged since an earlier frame is
+// copied (plot_kit.h's drawMesh) rather than painted again: a dotted lobe is a hundred small discs.
+class PaintedLines {
+public:
+    struct Key {
+        float width = 0.0f;
+        ImU32 color = 0;
+        int flags = 0;
+        ImVec2 fillUv;
+        ImVec4 lineUv;
+    };
+    // The kept painting of `points` dashed by `dash` under `key`, or null.
+    const KeptMesh* find(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key);
+    // Keeps a painting, in place of the least recently used one when full.
+    void keep(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key, KeptMesh mesh);
+
+private:
+    struct Entry {
+        std::vector<glm::vec2> points;
+        std::vector<float> dash;
+        Key key;
+        KeptMesh mesh;
+        std::uint64_t used = 0;
+    };
+    static constexpr std::size_t kCapacity = 64; // a frame paints about 30 lines long or dashed enough to keep
+    std::vector<Entry> entries_;
+    std::uint64_t clock_ = 0;
+};
 
 // A few values by key, the least recently used one replaced when full. Key needs ==.
 template <class Key, class Value> class RecentlyUsed {
@@ -176,6 +231,12 @@ public:
     Lagged<std::optional<Albedo>> laggingAlbedo(Slot slot, const LobeInputs& inputs, double now);
     Lagged<std::vector<AlbedoSample>> laggingAlbedoCurve(Slot slot, LobeInputs inputs, double now);
 
+    // The polar grid (core/plots/plot_drawing.h polarGrid, without a caption) of the half-disc `frame` in
+    // `style`, kept by everything it is drawn from: its rings, spokes, values and labels as a Figure.
+    std::shared_ptr<const Figure> polarGrid(const Polar& frame, float outer, RadialScale scale, const PlotStyle& style);
+    // The lines painted in earlier frames (plot_kit.h's paint).
+    PaintedLines& painted() { return painted_; }
+
     // How many sample sets and curves were computed rather than found (for the tests).
     std::size_t computed() const { return samples_.made() + coarse_.made() + coarseLobes_.made() + albedo_.made() + albedoCurves_.made() + lobes_.made() + attenuation_.made(); }
 
@@ -191,6 +252,18 @@ private:
         glm::vec3 coefficients;
         float maxDistance;
         CurvePlacement at;
+    };
+    struct GridKey {
+        glm::vec2 origin;
+        float radius, outer;
+        RadialScale scale;
+        float styleScale, arcStep;
+        const Palette* palette;
+        TextMeasure measure;
+        bool operator==(const GridKey& o) const {
+            return origin == o.origin && radius == o.radius && outer == o.outer && scale == o.scale &&
+                   styleScale == o.styleScale && arcStep == o.arcStep && palette == o.palette && measure == o.measure;
+        }
     };
     // What one readout showed last: its inputs in the latest frame and the value shown.
     template <class Value> struct LagSlot {
@@ -214,10 +287,34 @@ private:
     RecentlyUsed<LobeInputs, std::vector<AlbedoSample>> albedoCurves_{4}; // A and B, against θi
     RecentlyUsed<LobeKey, std::vector<glm::vec2>> lobes_{32};
     RecentlyUsed<AttenuationKey, std::vector<glm::vec2>> attenuation_{4};
+    RecentlyUsed<GridKey, Figure> grids_{4}; // the lobe's and the overlay's (not in computed(): a frame's scale)
     std::array<LagSlot<std::optional<Albedo>>, 4> albedoSlots_;
     std::array<LagSlot<std::vector<AlbedoSample>>, 4> curveSlots_;
+    PaintedLines painted_;
     bool owed_ = false, held_ = false;
     std::uint64_t frame_ = 0;
+};
+
+// What a coarse plot shows during a change, lagging like the albedo: the inputs taken when it was
+// drafted, drafted again from the frame's inputs at most every PlotCache::kAlbedoLagSeconds (ImGui's
+// time), or at once where `retake` (what must show at once: the overlay's own angles).
+template <class Inputs> class LaggingDraft {
+public:
+    const Inputs& take(const Inputs& now, double time, bool retake = false) {
+        if (!made_ || retake || time - at_ >= PlotCache::kAlbedoLagSeconds) {
+            inputs_ = now;
+            at_ = time;
+            made_ = true;
+        }
+        return inputs_;
+    }
+    bool made() const { return made_; }
+    const Inputs& inputs() const { return inputs_; }
+
+private:
+    bool made_ = false;
+    Inputs inputs_{};
+    double at_ = 0.0;
 };
 
 } // namespace lab::ui

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 
 namespace lab::ui::plotkit {
 
@@ -47,17 +48,39 @@ const std::vector<ImVec2>& imPoints(const std::vector<glm::vec2>& points) {
     return buffer;
 }
 
-// A polyline, dashed as the figures' PNG dashes it (figure.h dashRuns). ImGui's lines end square
+// A dot: ImGui's AddCircleFilled with 8 segments, its unit octagon taken once from ImGui's own arc
+// (the same points, without a sine and cosine for each of them each frame).
+void dot(ImDrawList* dl, glm::vec2 centre, float radius, ImU32 color) {
+    constexpr int kSegments = 8;
+    static const std::vector<ImVec2> unit = [dl] {
+        dl->_Path.clear();
+        const float pi = 3.14159265358979323846f; // imgui_internal.h IM_PI
+        dl->PathArcTo(ImVec2(0.0f, 0.0f), 1.0f, 0.0f, (pi * 2.0f) * (kSegments - 1.0f) / kSegments, kSegments - 1);
+        std::vector<ImVec2> points(dl->_Path.begin(), dl->_Path.end());
+        dl->_Path.clear();
+        return points;
+    }();
+    if ((color & IM_COL32_A_MASK) == 0 || radius <= 0.0f) {
+        return;
+    }
+    for (const ImVec2& u : unit) {
+        dl->_Path.push_back(ImVec2(centre.x + u.x * radius, centre.y + u.y * radius));
+    }
+    dl->PathFillConvex(color);
+}
+
+// A polyline, dashed as the figures' PNG dashes it (figure.h forEachDashRun). ImGui's lines end square
 // at their points, so a dash's round dot is a disc.
 void polyline(ImDrawList* dl, const std::vector<glm::vec2>& points, ImU32 color, float width, const std::vector<float>& dash) {
-    for (const std::vector<glm::vec2>& run : dashRuns(points, dash)) {
-        if (run.size() == 2 && glm::distance(run[0], run[1]) < 0.5f * width) {
-            dl->AddCircleFilled(toImVec2(0.5f * (run[0] + run[1])), 0.5f * width, color, 8);
-        } else if (run.size() >= 2) {
-            const std::vector<ImVec2>& pts = imPoints(run);
+    static std::vector<glm::vec2> run; // kept for the next call: no allocation a dash
+    forEachDashRun(points, dash, run, [&](const std::vector<glm::vec2>& piece) {
+        if (piece.size() == 2 && glm::distance(piece[0], piece[1]) < 0.5f * width) {
+            dot(dl, 0.5f * (piece[0] + piece[1]), 0.5f * width, color);
+        } else if (piece.size() >= 2) {
+            const std::vector<ImVec2>& pts = imPoints(piece);
             dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), color, 0, width);
         }
-    }
+    });
 }
 
 void paintText(ImDrawList* dl, const FigureText& t) {
@@ -76,12 +99,54 @@ void paintText(ImDrawList* dl, const FigureText& t) {
     }
 }
 
+// A line as the draw list's last vertices and indices (from `vertices`, `indices` and vertex index
+// `base` on), or nothing where painting it began a command (a renderer with vertex offsets: the
+// indices start again from 0).
+std::optional<KeptMesh> painting(const ImDrawList* dl, int vertices, int indices, unsigned base, int commands) {
+    const int count = dl->VtxBuffer.Size - vertices;
+    if (dl->CmdBuffer.Size != commands || dl->_VtxCurrentIdx != base + static_cast<unsigned>(count)) {
+        return std::nullopt;
+    }
+    KeptMesh m;
+    m.vertices.assign(dl->VtxBuffer.Data + vertices, dl->VtxBuffer.Data + dl->VtxBuffer.Size);
+    m.indices.reserve(static_cast<std::size_t>(dl->IdxBuffer.Size - indices));
+    for (int i = indices; i < dl->IdxBuffer.Size; ++i) {
+        m.indices.push_back(static_cast<ImDrawIdx>(dl->IdxBuffer.Data[i] - base));
+    }
+    return m;
+}
+
+// A line, copied from `kept` where it holds the same line's painting (lines long or dashed: a short
+// solid one costs less to paint than to look up), else painted and kept.
+void line(ImDrawList* dl, const FigureLine& l, PaintedLines* kept) {
+    const ImU32 color = imColor(l.color);
+    if (!kept || (l.points.size() < 8 && l.dash.empty())) {
+        polyline(dl, l.points, color, l.width, l.dash);
+        return;
+    }
+    // What ImGui's polyline and disc write depends on besides the line (imgui_draw.cpp): the white
+    // pixel (fills) and, for a textured anti-aliased line of a whole width, its row of the atlas.
+    const int thickness = static_cast<int>(std::max(l.width, 1.0f));
+    const ImVec4 lineUv = thickness < IM_DRAWLIST_TEX_LINES_WIDTH_MAX ? ImGui::GetIO().Fonts->TexUvLines[thickness] : ImVec4();
+    const PaintedLines::Key key{l.width, color, dl->Flags, ImGui::GetFontTexUvWhitePixel(), lineUv};
+    if (const KeptMesh* m = kept->find(l.points, l.dash, key)) {
+        drawMesh(dl, *m, false);
+        return;
+    }
+    const int vertices = dl->VtxBuffer.Size, indices = dl->IdxBuffer.Size, commands = dl->CmdBuffer.Size;
+    const unsigned base = dl->_VtxCurrentIdx;
+    polyline(dl, l.points, color, l.width, l.dash);
+    if (std::optional<KeptMesh> m = painting(dl, vertices, indices, base, commands)) {
+        kept->keep(l.points, l.dash, key, std::move(*m));
+    }
+}
+
 } // namespace
 
-void paint(ImDrawList* dl, const Figure& figure) {
+void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept) {
     for (const FigureShape& shape : figure.shapes) {
         if (const auto* l = std::get_if<FigureLine>(&shape)) {
-            polyline(dl, l->points, imColor(l->color), l->width, l->dash);
+            line(dl, *l, kept);
         } else if (const auto* g = std::get_if<FigurePolygon>(&shape)) {
             const std::vector<ImVec2>& pts = imPoints(g->points);
             dl->AddConvexPolyFilled(pts.data(), static_cast<int>(pts.size()), imColor(g->fill));
@@ -110,25 +175,60 @@ Pens pens() {
     return p;
 }
 
-void drawMesh(ImDrawList* dl, const std::vector<ImVec2>& positions, const std::vector<ImU32>& colors,
-              const std::vector<unsigned>& indices) {
-    const int vtx = static_cast<int>(positions.size()), idx = static_cast<int>(indices.size());
+void drawMesh(ImDrawList* dl, const KeptMesh& mesh, bool whitePixel) {
+    const int vtx = static_cast<int>(mesh.vertices.size()), idx = static_cast<int>(mesh.indices.size());
     if (vtx == 0 || idx == 0) {
         return;
     }
-    dl->PrimReserve(idx, vtx);
+    dl->PrimReserve(idx, vtx); // may start a command with its own vertex offset (a renderer that has them)
     const unsigned base = dl->_VtxCurrentIdx;
     if (sizeof(ImDrawIdx) == 2 && base + static_cast<unsigned>(vtx) > 0xFFFFu) {
         dl->PrimUnreserve(idx, vtx);
         return;
     }
-    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
-    for (int k = 0; k < vtx; ++k) {
-        dl->PrimWriteVtx(positions[static_cast<std::size_t>(k)], uv, colors[static_cast<std::size_t>(k)]);
+    const ImVec2 uv = whitePixel ? ImGui::GetFontTexUvWhitePixel() : ImVec2(0.0f, 0.0f);
+    const KeptMesh::Placed here{ImGui::GetCurrentContext(), dl, dl->VtxBuffer.Data, dl->IdxBuffer.Data,
+                                static_cast<int>(dl->_VtxWritePtr - dl->VtxBuffer.Data),
+                                static_cast<int>(dl->_IdxWritePtr - dl->IdxBuffer.Data), ImGui::GetFrameCount(), base, uv};
+    const KeptMesh::Placed& was = mesh.placed;
+    const bool stillThere = was.context == here.context && was.list == here.list && was.vertexData == here.vertexData &&
+                            was.indexData == here.indexData && was.vertexAt == here.vertexAt && was.indexAt == here.indexAt &&
+                            was.frame + 1 == here.frame && was.base == here.base && was.uv.x == uv.x && was.uv.y == uv.y;
+    mesh.placed = here;
+    if (stillThere) {
+        dl->_VtxWritePtr += vtx;
+        dl->_IdxWritePtr += idx;
+        dl->_VtxCurrentIdx += static_cast<unsigned>(vtx);
+        return;
     }
-    for (unsigned i : indices) {
-        dl->PrimWriteIdx(static_cast<ImDrawIdx>(base + i));
+    ImDrawVert* v = dl->_VtxWritePtr;
+    std::memcpy(v, mesh.vertices.data(), mesh.vertices.size() * sizeof(ImDrawVert));
+    if (whitePixel && (mesh.vertices.front().uv.x != uv.x || mesh.vertices.front().uv.y != uv.y)) { // the atlas was built again
+        for (int k = 0; k < vtx; ++k) {
+            v[k].uv = uv;
+        }
     }
+    // The indices moved to where the vertices went: eight or four at a time (GCC's and Clang's
+    // vector extension: GCC 12 at -O2 leaves the plain loop scalar), the rest one by one.
+    using Lanes = ImDrawIdx __attribute__((vector_size(16)));
+    constexpr std::size_t lanes = sizeof(Lanes) / sizeof(ImDrawIdx);
+    const ImDrawIdx* in = mesh.indices.data();
+    ImDrawIdx* out = dl->_IdxWritePtr;
+    const std::size_t n = mesh.indices.size();
+    const ImDrawIdx shift = static_cast<ImDrawIdx>(base);
+    std::size_t i = 0;
+    for (; i + lanes <= n; i += lanes) {
+        Lanes chunk;
+        std::memcpy(&chunk, in + i, sizeof chunk);
+        chunk += shift;
+        std::memcpy(out + i, &chunk, sizeof chunk);
+    }
+    for (; i < n; ++i) {
+        out[i] = static_cast<ImDrawIdx>(in[i] + shift);
+    }
+    dl->_VtxWritePtr += vtx;
+    dl->_IdxWritePtr += idx;
+    dl->_VtxCurrentIdx += static_cast<unsigned>(vtx);
 }
 
 ImVec2 textSize(const std::string& t) { return ImGui::CalcTextSize(t.c_str(), t.c_str() + t.size()); }

@@ -34,8 +34,9 @@ PlotStyle screenStyle();
 ImU32 ink(Ink ink);
 // The figure's shapes onto `dl`, in order, lines dashed as the figures dash them; its coordinates
 // are screen pixels. Text is drawn with ImGui's font at each text's size (the UI font is DejaVu
-// Sans, as the figures').
-void paint(ImDrawList* dl, const Figure& figure);
+// Sans, as the figures'). With `kept`, lines long or dashed are copied from an earlier frame's
+// painting where it has the same line (plot_cache.h's PaintedLines), and kept when new.
+void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept = nullptr);
 
 // A plot on screen: a Figure drawn in the screen style, painted by paint(). Not copyable (the
 // canvas refers to the figure and the style).
@@ -46,7 +47,7 @@ struct ScreenPlot {
     ScreenPlot() = default;
     ScreenPlot(const ScreenPlot&) = delete;
     ScreenPlot& operator=(const ScreenPlot&) = delete;
-    void paint(ImDrawList* dl) const { plotkit::paint(dl, figure); }
+    void paint(ImDrawList* dl, PaintedLines* kept = nullptr) const { plotkit::paint(dl, figure, kept); }
 };
 
 // Sizes of this frame's widgets, all from the font size so that they grow with presenter mode.
@@ -66,11 +67,11 @@ struct Pens {
 Pens pens();
 
 ImVec2 textSize(const std::string& t);
-// Copies a kept mesh (positions, colours, triangles by index) into the draw list, with the font
-// atlas's white pixel as its texture coordinate. ImGui's 16-bit indices: a mesh that would take the
-// list past 65536 vertices is left out rather than drawn wrong (the 3D lobe's and the slices stay under).
-void drawMesh(ImDrawList* dl, const std::vector<ImVec2>& positions, const std::vector<ImU32>& colors,
-              const std::vector<unsigned>& indices);
+
+// Copies the kept mesh into the draw list. A mesh that would take the list past 65536 vertices is
+// left out rather than drawn wrong (the 3D lobe's and the slices stay under). `whitePixel`: every
+// vertex has the white pixel's texture coordinate, written again where the atlas has moved it.
+void drawMesh(ImDrawList* dl, const KeptMesh& mesh, bool whitePixel = true);
 inline ImVec2 toImVec2(glm::vec2 v) { return ImVec2(v.x, v.y); }
 inline glm::vec2 toVec2(ImVec2 v) { return glm::vec2(v.x, v.y); }
 

@@ -26,6 +26,9 @@ struct PlotSettings {
     float viewerDeg = 20.0f;                   // V in the lobe plot
     glm::vec3 overlayDeg{60.0f, 25.0f, 10.0f}; // the overlaid incident angles
     std::array<ChangeWatch, 3> overlayChanges; // the overlay draws coarse plots while its lobes change
+    // Those coarse plots lag like the albedo while the material changes; a change of the overlay's own
+    // angles is drawn at once.
+    LaggingDraft<std::array<LobeInputs, 3>> overlayDraft;
     int attenuationLight = 0;
     int dragging = 0; // 0 none, 1 L, 2 V
     PlotCache cache;  // samples and curves of earlier frames, found again by their inputs

@@ -7,6 +7,7 @@
 // copied into the draw list each frame; the grid lines, arrows and labels are drawn on top.
 #include "ui/plots/plots_3d.h"
 #include "ui/plots/plot_kit.h"
+#include "ui/theme_style.h"
 #include "ui/widgets.h"
 
 #include "core/lighting/lighting.h"
@@ -95,8 +96,8 @@ void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m
     const std::vector<float>& values = grid.component(key.component);
     const std::vector<glm::vec3> points = lobeSurface(grid, key.component, key.outer, key.scale);
     const std::size_t n = points.size();
-    m.positions.resize(n);
-    m.colors.resize(n);
+    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
+    m.surface.vertices.resize(n);
     // Shading from a light above and behind the viewer's right shoulder; normals by central
     // differences over the grid (sign-free: the lobe's inside shows where a surface folds).
     const glm::vec3 light = glm::normalize(cam.toEye + 0.6f * cam.up + 0.3f * cam.right);
@@ -117,8 +118,7 @@ void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m
                 shade = 0.35f + 0.65f * std::fabs(glm::dot(normal / len, light));
             }
             const float t = plotRadius(values[k], key.outer, key.scale);
-            m.positions[k] = cam.at(points[k]);
-            m.colors[k] = rgb(ramp(t) * shade, 0.92f);
+            m.surface.vertices[k] = ImDrawVert{cam.at(points[k]), uv, rgb(ramp(t) * shade, 0.92f)};
             depth[k] = cam.depth(points[k]);
         }
     }
@@ -138,12 +138,12 @@ void surfaceMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m
         }
     }
     std::sort(cells.begin(), cells.end(), [](const Cell& x, const Cell& y) { return x.depth < y.depth; });
-    m.indices.clear();
-    m.indices.reserve(cells.size() * 6);
+    m.surface.indices.clear();
+    m.surface.indices.reserve(cells.size() * 6);
     for (const Cell& c : cells) {
         const unsigned k = static_cast<unsigned>(c.k), w = static_cast<unsigned>(meridians);
         for (unsigned v : {k, k + 1, k + w + 1, k, k + w + 1, k + w}) {
-            m.indices.push_back(v);
+            m.surface.indices.push_back(static_cast<ImDrawIdx>(v)); // 8,281 vertices
         }
     }
 }
@@ -156,8 +156,8 @@ void mapMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
     const float radius = std::min(r.z, r.w) * 0.5f;
     const std::vector<float>& values = grid.component(key.component);
     const int rings = grid.rings(), meridians = grid.meridians();
-    m.mapPositions.resize(values.size());
-    m.mapColors.resize(values.size());
+    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
+    m.map.vertices.resize(values.size());
     for (int i = 0; i < rings; ++i) {
         const float thetaDeg = static_cast<float>(i * grid.steps.thetaDeg);
         const float sinTheta = outgoingDirections()[static_cast<std::size_t>(90 + i * grid.steps.thetaDeg)].x;
@@ -165,17 +165,17 @@ void mapMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
         for (int j = 0; j < meridians; ++j) {
             const std::size_t k = static_cast<std::size_t>(grid.index(i, j));
             const glm::vec3& V = grid.directions[k];
-            m.mapPositions[k] = ImVec2(centre.x + along * V.x, centre.y + along * V.z);
-            m.mapColors[k] = rgb(ramp(plotRadius(values[k], key.outer, key.scale)));
+            m.map.vertices[k] = ImDrawVert{ImVec2(centre.x + along * V.x, centre.y + along * V.z), uv,
+                                           rgb(ramp(plotRadius(values[k], key.outer, key.scale)))};
         }
     }
-    m.mapIndices.clear();
-    m.mapIndices.reserve(static_cast<std::size_t>((rings - 1) * (meridians - 1) * 6));
+    m.map.indices.clear();
+    m.map.indices.reserve(static_cast<std::size_t>((rings - 1) * (meridians - 1) * 6));
     for (int i = 0; i + 1 < rings; ++i) {
         for (int j = 0; j + 1 < meridians; ++j) {
             const unsigned k = static_cast<unsigned>(grid.index(i, j)), w = static_cast<unsigned>(meridians);
             for (unsigned v : {k, k + 1, k + w + 1, k, k + w + 1, k + w}) {
-                m.mapIndices.push_back(v);
+                m.map.indices.push_back(static_cast<ImDrawIdx>(v));
             }
         }
     }
@@ -243,24 +243,39 @@ void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& 
     const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
     const float pi = glm::pi<float>();
     // The surface plane: rings at the radial scale's values, spokes every 30°, behind the lobe
-    // (the camera stays above the plane).
+    // (the camera stays above the plane). The rings and B's wireframe are solid lines painted as the
+    // figures' are, so that an unchanged frame copies them (PlotCache::painted()).
+    Figure rings;
+    const FigureColor grid = colorOf(currentColors().plot, Ink::Grid);
     for (const RadialRing& ring : radialRings(v.outer, key.scale)) {
-        std::vector<ImVec2> circle;
+        FigureLine circle;
+        circle.width = p.thin;
+        circle.color = grid;
         for (int k = 0; k <= 72; ++k) {
             const float t = 2.0f * pi * static_cast<float>(k) / 72.0f;
-            circle.push_back(cam.at(ring.radius * glm::vec3(std::cos(t), 0.0f, std::sin(t))));
+            circle.points.push_back(toVec2(cam.at(ring.radius * glm::vec3(std::cos(t), 0.0f, std::sin(t)))));
         }
-        dl->AddPolyline(circle.data(), static_cast<int>(circle.size()), ink(Ink::Grid), 0, p.thin);
+        rings.shapes.push_back(std::move(circle));
     }
+    paint(dl, rings, &s.cache.painted());
     for (int deg = 0; deg < 360; deg += 30) {
         const float t = glm::radians(static_cast<float>(deg));
         dl->AddLine(cam.at(glm::vec3(0.0f)), cam.at(glm::vec3(std::cos(t), 0.0f, std::sin(t))),
                     deg % 180 == 0 ? ink(Ink::Axis) : ink(Ink::Grid), p.thin);
     }
-    drawMesh(dl, mesh.positions, mesh.colors, mesh.indices);
+    drawMesh(dl, mesh.surface);
+    Figure wires;
+    const FigureColor compare = colorOf(currentColors().plot, Ink::Compare);
     for (const std::vector<ImVec2>& line : mesh.wireframe) {
-        dl->AddPolyline(line.data(), static_cast<int>(line.size()), ink(Ink::Compare), 0, p.thin);
+        FigureLine wire;
+        wire.width = p.thin;
+        wire.color = compare;
+        for (const ImVec2& q : line) {
+            wire.points.push_back(toVec2(q));
+        }
+        wires.shapes.push_back(std::move(wire));
     }
+    paint(dl, wires, &s.cache.painted());
     // The vectors: N, L, R, and V (the plane plot's reading direction) with its H.
     const glm::vec3& V = v.viewer;
     ScreenPlot vectors;
@@ -291,7 +306,7 @@ void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& k
     const ImVec4& r = key.mapRect;
     const ImVec2 centre(r.x + r.z * 0.5f, r.y + r.w * 0.5f);
     const float radius = std::min(r.z, r.w) * 0.5f;
-    drawMesh(dl, mesh.mapPositions, mesh.mapColors, mesh.mapIndices);
+    drawMesh(dl, mesh.map);
     for (int deg = 30; deg <= 90; deg += 30) {
         dl->AddCircle(centre, radius * static_cast<float>(deg) / 90.0f, deg == 90 ? ink(Ink::Axis) : ink(Ink::Grid), 64, p.thin);
     }
@@ -406,10 +421,16 @@ void pointTokens(Readout& r, const ProbeLobe& at) {
 }
 
 // The grid for `inputs`: the full one, or the coarse one during a change when the full one is not kept
-// (a frame whose inputs changed owes the frame after, which draws the full one).
-std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, const LobeInputs& inputs, bool& coarse) {
+// (a frame whose inputs changed owes the frame after, which draws the full one). The coarse one lags
+// like the albedo: it is the grid of the draft's inputs, taken again at most every 0.5 s, and `inputs`
+// become those.
+std::shared_ptr<const HemisphereGrid> grid(PlotSettings& s, ChangeWatch& watch, LaggingDraft<LobeInputs>& draft,
+                                           LobeInputs& inputs, bool& coarse) {
     Lobe3dState& st = s.lobe3d;
     coarse = s.cache.coarse(s.cache.observe(watch, inputs), st.grids.find({inputs, false}) != nullptr);
+    if (coarse) {
+        inputs = draft.take(inputs, ImGui::GetTime());
+    }
     return st.grids.get({inputs, coarse}, [&] { return sampleHemisphere(inputs, coarse ? kLobeCoarseGrid : kLobeGrid); });
 }
 
@@ -418,10 +439,10 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
     v.a = &a;
     Lobe3dState& st = s.lobe3d;
     v.inA = point ? probeLobeInputs(a, *point) : lobeInputs(a, a.plotIncidentDeg);
-    v.gridA = grid(s, st.watchA, v.inA, v.coarseA);
+    v.gridA = grid(s, st.watchA, st.draftA, v.inA, v.coarseA);
     if (b) {
         v.inB = point ? probeLobeInputs(*b, *point) : lobeInputs(*b, a.plotIncidentDeg);
-        v.gridB = grid(s, st.watchB, v.inB, v.coarseB);
+        v.gridB = grid(s, st.watchB, st.draftB, v.inB, v.coarseB);
     }
     v.viewer = point ? point->viewer : outgoingDirection(std::fabs(s.viewerDeg), s.viewerDeg >= 0.0f ? 0.0f : 180.0f);
     v.atPoint = point != nullptr;
@@ -429,10 +450,11 @@ View viewData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p, 
         pointTokens(v.readout, *point);
     }
     v.vectors = lobeVectors(v.inA.incidentDeg);
-    v.largest = v.gridA->largest(st.component);
-    if (v.gridB) {
-        v.largest = std::max(v.largest, v.gridB->largest(st.component));
+    if (st.largest.a != v.gridA || st.largest.b != v.gridB || st.largest.component != st.component) {
+        const float largestA = v.gridA->largest(st.component);
+        st.largest = {v.gridA, v.gridB, st.component, v.gridB ? std::max(largestA, v.gridB->largest(st.component)) : largestA};
     }
+    v.largest = st.largest.value;
     v.outer = outerRing(v.largest);
     v.peak = *st.peaks.get({{v.inA, v.coarseA}, st.component}, [&] { return lobeMaximum(v.inA, *v.gridA, st.component); });
     // The coarse lobe's peak is found from the coarse grid: muted, like a lagging number, until the full grid's.

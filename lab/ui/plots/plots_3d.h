@@ -16,8 +16,8 @@
 // kept in Lobe3dState's cache with the peak: a frame in which nothing changed copies the kept
 // mesh (the surface and the map are 8,281 vertices each: ImGui's 16-bit indices have room). While
 // the inputs change (a drag: ui/plots/plot_cache.h's ChangeWatch), the view draws the coarse grid
-// (kLobeCoarseGrid, 589 samples) and its peak, the numbers muted, and owes the app a frame: the first
-// frame after the change draws the full grid. What it does not do: call GL
+// (kLobeCoarseGrid, 589 samples) and its peak, the numbers muted, lagging like the albedo (the inputs
+// of at most 0.5 s ago), and owes the app a frame: the first frame after the change draws the full grid. What it does not do: call GL
 // (ImGui draw lists only), or scroll (it fits the region it is given).
 #pragma once
 
@@ -29,6 +29,7 @@
 
 #include <imgui.h>
 
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -36,15 +37,11 @@ namespace lab::ui {
 
 struct PlotSettings;
 
-// A projected, sorted mesh: positions and colours (the texture coordinate is the font atlas's
-// white pixel, set when drawn), triangles by index, far to near; and B's wireframe polylines.
+// A projected, sorted mesh as the draw list takes it (plot_cache.h's KeptMesh), triangles far to near;
+// the map's; and B's wireframe polylines.
 struct Lobe3dMesh {
-    std::vector<ImVec2> positions;
-    std::vector<ImU32> colors;
-    std::vector<unsigned> indices;  // the surface's triangles, far to near
-    std::vector<ImVec2> mapPositions;
-    std::vector<ImU32> mapColors;
-    std::vector<unsigned> mapIndices;
+    KeptMesh surface; // its triangles far to near
+    KeptMesh map;
     std::vector<std::vector<ImVec2>> wireframe; // B
 };
 
@@ -70,6 +67,15 @@ struct Lobe3dState {
     RecentlyUsed<Lobe3dKey, Lobe3dMesh> meshes{2};
     RecentlyUsed<std::pair<GridKey, PlotComponent>, LobeMaximum> peaks{2}; // A's, for the readout
     ChangeWatch watchA, watchB; // whether A's and B's inputs are in a change (a coarse plot then)
+    LaggingDraft<LobeInputs> draftA, draftB; // the inputs A's and B's coarse grids show during a change
+    // The largest value of the grids last drawn (a scan of 8,281 values each), found again while the
+    // grids and the component stay the same.
+    struct Largest {
+        std::shared_ptr<const HemisphereGrid> a, b;
+        PlotComponent component = PlotComponent::Total;
+        float value = 0.0f;
+    };
+    Largest largest;
     // How many grids, meshes and peaks were computed rather than found (for the tests).
     std::size_t computed() const { return grids.made() + meshes.made() + peaks.made(); }
 };

@@ -71,7 +71,7 @@ Readout readout(const std::optional<Albedo>& a, const std::optional<Albedo>* b, 
 // there, computed at that angle, not read off the curve's whole degrees; none while the curves lag
 // behind a change, so that no dot sits off its curve).
 void energyCanvas(const Canvas& c, const std::vector<AlbedoSample>& a, const std::vector<AlbedoSample>* b,
-                  const std::optional<Albedo>& atA, const std::optional<Albedo>* atB, Preset& preset) {
+                  const std::optional<Albedo>& atA, const std::optional<Albedo>* atB, Preset& preset, PaintedLines* kept) {
     float largest = 1.0f;
     for (const std::vector<AlbedoSample>* set : {&a, b}) {
         for (std::size_t i = 0; set && i < set->size(); ++i) {
@@ -126,7 +126,7 @@ void energyCanvas(const Canvas& c, const std::vector<AlbedoSample>& a, const std
     if (b && atB) {
         curve(*b, *atB, PlotComponent::Total, Ink::Compare, style.stroke());
     }
-    plot.paint(c.dl);
+    plot.paint(c.dl, kept);
 
     // Clicking or dragging sets the incident angle (keeping its side), as dragging L does.
     if (ImGui::IsItemActive()) {
@@ -175,7 +175,7 @@ void energyPanel(Preset& a, const Preset* b, PlotSettings& s) {
     if (canvas.shown()) {
         const std::optional<Albedo> none;
         energyCanvas(canvas, *curveA.value, curveB.value.get(), atA.stale || curveA.stale ? none : *atA.value,
-                     atB.stale || curveB.stale ? nullptr : atB.value.get(), a);
+                     atB.stale || curveB.stale ? nullptr : atB.value.get(), a, &s.cache.painted());
     }
 }
 

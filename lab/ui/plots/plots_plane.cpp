@@ -22,9 +22,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
-#include <cstdarg>
-#include <cstdio>
 #include <functional>
 #include <optional>
 #include <string>
@@ -143,12 +140,18 @@ Lobes lobeData(const Preset& a, const Preset* b, PlotSettings& s, const Pens& p,
 
 Overlay overlayData(const Preset& a, PlotSettings& s, const Pens& p) {
     Overlay o;
-    // During a change (a drag), a coarse copy of the three (every 3rd degree: all three, so that they share
-    // one scale), its readout muted; the first frame after the change (owed) draws them in full.
+    // During a change (a drag), a coarse copy of the three (every 3rd degree: all three, so that they share one
+    // scale), its readout muted, lagging like the albedo; the first frame after the change (owed) draws them in full.
     for (std::size_t i = 0; i < 3; ++i) {
         o.inputs[i] = lobeInputs(a, s.overlayDeg[static_cast<int>(i)]);
     }
     o.coarse = s.cache.coarseSet(s.overlayChanges, o.inputs);
+    if (o.coarse) {
+        const std::array<LobeInputs, 3>& drafted = s.overlayDraft.inputs();
+        const bool moved = drafted[0].incidentDeg != o.inputs[0].incidentDeg || drafted[1].incidentDeg != o.inputs[1].incidentDeg ||
+                           drafted[2].incidentDeg != o.inputs[2].incidentDeg;
+        o.inputs = s.overlayDraft.take(o.inputs, ImGui::GetTime(), moved);
+    }
     for (std::size_t i = 0; i < 3; ++i) {
         o.sets[i] = s.cache.samples(o.inputs[i], o.coarse);
     }
@@ -245,7 +248,7 @@ void cartesianLobes(const Canvas& c, const Lobes& lobes, PlotSettings& s) {
     plot.canvas.line({at(lobes.incident, 0), at(lobes.incident, 1)}, style.thin(), Ink::Mirror); // the mirror angle
     plot.canvas.line({at(lobes.viewer, 0), at(lobes.viewer, 1)}, style.thin(), Ink::Viewer);
     lobeCurves(plot, lobes, s, placementOf(b));
-    plot.paint(c.dl);
+    plot.paint(c.dl, &s.cache.painted());
 }
 
 // The probe's vectors in its own plane of incidence: N up, L to the left.
@@ -286,7 +289,7 @@ void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s,
     ScreenPlot plot;
     const PlotStyle& style = plot.style;
     const Polar f = polarFrame(c.origin(), c.width, c.height, style, false);
-    polarGrid(plot.canvas, f, lobes.outer, s.scale, false);
+    paint(c.dl, *s.cache.polarGrid(f, lobes.outer, s.scale, style), &s.cache.painted()); // under the plot's shapes
     lobeCurves(plot, lobes, s, placementOf(f));
     glm::vec2 L = dirFromDeg(lobes.incident, -1.0f), R = dirFromDeg(lobes.incident, 1.0f), V = dirFromDeg(lobes.viewer, 1.0f);
     auto arrow = [&](glm::vec2 dir, float length, Ink ink, const char* label, float width) {
@@ -304,7 +307,7 @@ void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s,
     if (probe && !probe->lights.empty() && !lobes.point) { // at the point, L and V are the probe's
         probeArrows(plot, f, *probe, a.brdf);
     }
-    plot.paint(c.dl);
+    plot.paint(c.dl, &s.cache.painted());
     if (!lobes.point) {
         dragArrows(f, L, V, a, s);
     }
@@ -383,7 +386,7 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
     if (canvas.shown()) {
         ScreenPlot plot;
         const Polar f = polarFrame(canvas.origin(), canvas.width, canvas.height, plot.style, false);
-        polarGrid(plot.canvas, f, o.outer, s.scale, false);
+        paint(canvas.dl, *s.cache.polarGrid(f, o.outer, s.scale, plot.style), &s.cache.painted());
         for (std::size_t i = 0; i < 3; ++i) {
             const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, placementOf(f), o.coarse);
             plot.canvas.line(*curve, plot.style.stroke(), overlayInk(i));
@@ -393,7 +396,7 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
             // The fields name them.
             plot.canvas.arrow(f.at({0, 0}), f.at(dirFromDeg(deg, -1.0f) * 0.9f), overlayInk(i), plot.style.stroke(), "");
         }
-        plot.paint(canvas.dl);
+        plot.paint(canvas.dl, &s.cache.painted());
     }
     // The three angles, each field in its curve's colour.
     if (!block.controlsFit) {
@@ -465,7 +468,7 @@ void attenuationCanvas(const Canvas& c, const Attenuation& t, PlotCache& cache) 
         plot.canvas.line({at(t.distance, 0), m}, style.thin(), Ink::Specular);
         plot.canvas.disc(m, 5.0f * style.scale, Ink::Specular);
     }
-    plot.paint(c.dl);
+    plot.paint(c.dl, &cache.painted());
 }
 
 void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Attenuation& t,

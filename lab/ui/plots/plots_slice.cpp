@@ -86,7 +86,10 @@ Change stronger(Change x, Change y) {
 }
 
 // A's image (and B's and A − B), full, or coarse while A or B changes and the full ones are not kept
-// (both coarse then, so that A − B has the same samples). Every component: the scales are scaled().
+// (both coarse then, so that A − B has the same samples). The coarse images lag as the albedo does
+// (PlotCache::kAlbedoLagSeconds): during a change they are those of the inputs of the latest draft,
+// drawn again at most every 0.5 s; the frame after the change draws the full images of the inputs
+// then. Every component: the scales are scaled().
 Images images(const Preset& a, const Preset* b, PlotSettings& s) {
     SliceState& st = s.slice;
     Images im;
@@ -99,43 +102,56 @@ Images images(const Preset& a, const Preset* b, PlotSettings& s) {
         kept = kept && st.images.find({im.inB, false}) != nullptr;
     }
     im.coarse = s.cache.coarse(change, kept);
+    im.imageA = im.inA;
+    im.imageB = im.inB;
+    if (im.coarse) {
+        const std::array<LobeInputs, 2>& drafted = st.draft.take({im.inA, im.inB}, ImGui::GetTime(), st.draftHasB != (b != nullptr));
+        st.draftHasB = b != nullptr;
+        im.imageA = drafted[0];
+        im.imageB = drafted[1];
+    }
     auto sample = [&](const LobeInputs& in) {
         return st.images.get({in, im.coarse}, [&] { return sampleSlice(in, im.coarse ? kSliceCoarseStepDeg : 1); });
     };
-    im.a = sample(im.inA);
+    im.a = sample(im.imageA);
     if (b) {
-        im.b = sample(im.inB);
-        im.difference = st.differences.get({{im.inA, im.coarse}, {im.inB, im.coarse}},
+        im.b = sample(im.imageB);
+        im.difference = st.differences.get({{im.imageA, im.coarse}, {im.imageB, im.coarse}},
                                            [&] { return sliceDifference(*im.a, *im.b); });
     }
     return im;
 }
 
 // The images' scales for component `c`: the larger maximum of A and B, the largest |A − B|.
-void scaled(Images& im, PlotComponent c) {
-    im.largest = im.a->largest(c);
-    if (im.b) {
-        im.largest = std::max(im.largest, im.b->largest(c));
-        im.largestDifference = largestMagnitude(im.difference->component(c));
+void scaled(Images& im, PlotComponent c, SliceState& st) {
+    SliceState::Scales& kept = st.scales;
+    if (kept.a != im.a || kept.b != im.b || kept.difference != im.difference || kept.component != c) {
+        kept = {im.a, im.b, im.difference, c, im.a->largest(c), 0.0f};
+        if (im.b) {
+            kept.largest = std::max(kept.largest, im.b->largest(c));
+            kept.largestDifference = largestMagnitude(im.difference->component(c));
+        }
     }
+    im.largest = kept.largest;
+    im.largestDifference = kept.largestDifference;
 }
 
 // The vertices of the shown images, each at its rectangle.
 void addImage(SliceMesh& m, const std::vector<ImU32>& colors, int side, const ImVec4& r) {
-    const unsigned base = static_cast<unsigned>(m.positions.size()), n = static_cast<unsigned>(side);
+    const unsigned base = static_cast<unsigned>(m.vertices.size()), n = static_cast<unsigned>(side);
     const float last = static_cast<float>(side - 1);
+    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
     for (int row = 0; row < side; ++row) {
         for (int column = 0; column < side; ++column) {
-            m.positions.emplace_back(r.x + r.z * static_cast<float>(column) / last,
-                                     r.y + r.w * (1.0f - static_cast<float>(row) / last)); // θd up
+            const ImVec2 at(r.x + r.z * static_cast<float>(column) / last, r.y + r.w * (1.0f - static_cast<float>(row) / last)); // θd up
+            m.vertices.push_back(ImDrawVert{at, uv, colors[static_cast<std::size_t>(row * side + column)]});
         }
     }
-    m.colors.insert(m.colors.end(), colors.begin(), colors.end());
     for (unsigned row = 0; row + 1 < n; ++row) {
         for (unsigned column = 0; column + 1 < n; ++column) {
             const unsigned k = base + row * n + column;
             for (unsigned v : {k, k + 1, k + n + 1, k, k + n + 1, k + n}) {
-                m.indices.push_back(v);
+                m.indices.push_back(static_cast<ImDrawIdx>(v)); // three images of 8,281: under 65536
             }
         }
     }
@@ -275,7 +291,7 @@ void drawImages(ImDrawList* dl, const Pens& p, const Frame& f, const SliceMesh& 
         }
     }
     under.paint(dl);
-    drawMesh(dl, mesh.positions, mesh.colors, mesh.indices);
+    drawMesh(dl, mesh);
     for (const ImVec4& r : f.layout.images) {
         if (r.z > 0.0f) {
             dl->AddRect(ImVec2(r.x, r.y), ImVec2(r.x + r.z, r.y + r.w), ink(Ink::Axis), 0.0f, 0, p.thin);
@@ -286,9 +302,9 @@ void drawImages(ImDrawList* dl, const Pens& p, const Frame& f, const SliceMesh& 
 
 SliceKey keyOf(const Frame& f, const PlotSettings& s) {
     SliceKey key;
-    key.a = f.images.inA;
+    key.a = f.images.imageA;
     key.hasB = f.images.b != nullptr;
-    key.b = f.images.inB;
+    key.b = f.images.imageB;
     key.coarse = f.images.coarse;
     key.component = f.component;
     key.scale = s.scale;
@@ -335,9 +351,10 @@ void drawView(PlotSettings& s, const Pens& p, Frame& f, ImVec2 origin, ImVec2 ro
 void slicePanel(const Preset& a, const Preset* b, PlotSettings& s) {
     const Pens p = pens();
     Frame f;
+    f.state = &s.slice;
     f.images = images(a, b, s);
     f.component = s.slice.component;
-    scaled(f.images, f.component);
+    scaled(f.images, f.component, s.slice);
     f.marker = planeToSlice(a.plotIncidentDeg, s.viewerDeg);
     f.incidentDeg = a.plotIncidentDeg;
     f.viewerDeg = s.viewerDeg;
@@ -352,7 +369,7 @@ void slicePanel(const Preset& a, const Preset* b, PlotSettings& s) {
     }
     drawOptions(s, optionsRow(full, selector, p));
     f.component = s.slice.component; // the row may have chosen another
-    scaled(f.images, f.component);
+    scaled(f.images, f.component, s.slice);
     if (selector) {
         f.shown = s.slice.compare == SliceCompare::Both ? Shown::AB : Shown::Difference;
     }

@@ -14,8 +14,9 @@
 // The images are computed once per material, BRDF and term switches (91 × 91 = 8281 values, kept in
 // SliceState), their vertices once per view (inputs, component, scale, palette and where they lie), so
 // a frame in which nothing changed copies them. While the inputs change frame after frame (a slider
-// dragged: ui/plots/plot_cache.h's ChangeWatch) the view draws the coarse image (every 5°, 19 × 19) and
-// owes the app a frame: the first frame after the change draws the full one. The image does not depend
+// dragged: ui/plots/plot_cache.h's ChangeWatch) the view draws a coarse image (every 5°, 19 × 19) that
+// lags like the albedo — the inputs of at most 0.5 s ago, its legend's numbers muted — and owes the app
+// a frame: the first frame after the change draws the full one. The image does not depend
 // on the incident angle or on plots at the probe (only the marker follows the plane plot's θi and V).
 // What it does not do: call GL (ImGui draw lists only), or scroll (it fits the region it is given).
 #pragma once
@@ -29,6 +30,7 @@
 #include <imgui.h>
 
 #include <array>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -54,11 +56,7 @@ float largestMagnitude(const std::vector<float>& values);
 
 // One frame's images, as kept: the vertices of each image's samples (their colours from sliceColors or
 // differenceColors) and the triangles between them.
-struct SliceMesh {
-    std::vector<ImVec2> positions;
-    std::vector<ImU32> colors;
-    std::vector<unsigned> indices;
-};
+using SliceMesh = KeptMesh;
 
 struct SliceKey {
     LobeInputs a, b; // the surfaces (the incident angle left at 0: the image does not depend on it)
@@ -79,6 +77,29 @@ struct SliceState {
     RecentlyUsed<std::pair<ImageKey, ImageKey>, SliceImage> differences{2};
     RecentlyUsed<SliceKey, SliceMesh> meshes{2};
     ChangeWatch watchA, watchB; // whether A's and B's inputs are in a change (the coarse image then)
+    // During a change, the inputs A's and B's coarse images show (B's: with a compare set, draftHasB).
+    LaggingDraft<std::array<LobeInputs, 2>> draft;
+    bool draftHasB = false;
+    // The readout strip's height (slice_parts.h readoutHeight: two readouts written and measured) for
+    // the latest inputs it was asked for, at up to two widths a frame (whether three images fit, the view).
+    struct ReadoutHeight {
+        bool made = false, hasB = false;
+        LobeInputs a, b;
+        PlotComponent component = PlotComponent::Specular;
+        float markerH = 0.0f, markerD = 0.0f;
+        bool onSlice = false;
+        float incidentDeg = 0.0f, viewerDeg = 0.0f, font = 0.0f, width = 0.0f;
+        float height = 0.0f;
+    };
+    std::array<ReadoutHeight, 2> readoutHeights;
+    // The scales of the images last drawn (each a scan of 8,281 values), found again while the images
+    // and the component stay the same.
+    struct Scales {
+        std::shared_ptr<const SliceImage> a, b, difference;
+        PlotComponent component = PlotComponent::Specular;
+        float largest = 0.0f, largestDifference = 0.0f;
+    };
+    Scales scales;
     // How many images and meshes were computed rather than found (for the tests).
     std::size_t computed() const { return images.made() + differences.made() + meshes.made(); }
 };

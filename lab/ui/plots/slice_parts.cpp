@@ -202,7 +202,30 @@ Readout readout(const Frame& f, const Hover& hover, const Pens& p) {
 
 float readoutHeight(const Frame& f, const Pens& p, float width) {
     const Hover over{0, 88.8f, 88.8f};
-    return std::max(readout(f, over, p).height(p, width), readout(f, Hover{}, p).height(p, width));
+    auto measured = [&] { return std::max(readout(f, over, p).height(p, width), readout(f, Hover{}, p).height(p, width)); };
+    if (!f.state) {
+        return measured();
+    }
+    // What the readouts' text depends on (the value at `over` too: the surfaces).
+    const Images& im = f.images;
+    SliceState::ReadoutHeight now{true, im.b != nullptr, im.inA, im.b ? im.inB : LobeInputs{}, f.component,
+                                  f.marker.thetaHDeg, f.marker.thetaDDeg, f.marker.onSlice, f.incidentDeg, f.viewerDeg,
+                                  p.font, width, 0.0f};
+    auto same = [&](const SliceState::ReadoutHeight& k) {
+        return k.made && k.hasB == now.hasB && k.a == now.a && k.b == now.b && k.component == now.component &&
+               k.markerH == now.markerH && k.markerD == now.markerD && k.onSlice == now.onSlice &&
+               k.incidentDeg == now.incidentDeg && k.viewerDeg == now.viewerDeg && k.font == now.font && k.width == now.width;
+    };
+    std::array<SliceState::ReadoutHeight, 2>& kept = f.state->readoutHeights;
+    for (const SliceState::ReadoutHeight& k : kept) {
+        if (same(k)) {
+            return k.height;
+        }
+    }
+    now.height = measured();
+    kept[1] = kept[0];
+    kept[0] = now;
+    return now.height;
 }
 
 Placement placeReadout(const Frame& f, ImVec2 origin, ImVec2 room, const Pens& p) {

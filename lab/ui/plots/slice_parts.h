@@ -18,7 +18,8 @@ namespace lab::ui::slice {
 
 // One frame's images: A's, and in compare mode B's and A − B, all full or all coarse.
 struct Images {
-    LobeInputs inA, inB;
+    LobeInputs inA, inB;         // this frame's surfaces (the readout's exact values)
+    LobeInputs imageA, imageB;   // the images': the same, or during a change a lagging draft's (plots_slice.cpp)
     std::shared_ptr<const SliceImage> a, b, difference;
     bool coarse = false;
     float largest = 0.0f;           // the component's, of A and B: the value images' common scale
@@ -51,6 +52,7 @@ struct Frame {
     float incidentDeg = 0.0f, viewerDeg = 0.0f; // the plane plot's θi and V
     Shown shown = Shown::A;
     Layout layout;
+    SliceState* state = nullptr; // where readoutHeight keeps what it measured (none: measured each time)
 };
 
 // What the pointer is over: an image (-1 none) and the angles there (to 0.1°).
