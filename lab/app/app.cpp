@@ -546,8 +546,7 @@ FrameOutput App::frame(const FrameInput& in) {
         m.writeLayoutFile(in, in.framesDue == 0 && redrawIn != 0.0f);
     }
 
-    // The page's description waits while a value is dragged (it follows the state, not each frame of a
-    // gesture: a drag's frames cost the same with the parallel DOM as without it); the frame after is described.
+    // The page's description waits while a value is dragged: the frame after describes the state.
     FrameOutput out = m.output(in.touch, model, in.describePage && !events.gesture && !events.dragging);
     out.typing = events.typing;
     out.viewportScale = scale;

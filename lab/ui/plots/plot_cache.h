@@ -296,12 +296,16 @@ private:
 };
 
 // What a coarse plot shows during a change, lagging like the albedo: the inputs taken when it was
-// drafted, drafted again from the frame's inputs at most every PlotCache::kAlbedoLagSeconds (ImGui's
-// time), or at once where `retake` (what must show at once: the overlay's own angles).
+// drafted, drafted again from the frame's inputs at most every `interval` (ImGui's time; the
+// albedo's PlotCache::kAlbedoLagSeconds unless told), or at once where `retake` (what must show at
+// once: the overlay's own angles).
 template <class Inputs> class LaggingDraft {
 public:
+    LaggingDraft(double interval = PlotCache::kAlbedoLagSeconds) : interval_(interval) {} // not explicit: a view's state is made with {}
+    double interval() const { return interval_; }
+
     const Inputs& take(const Inputs& now, double time, bool retake = false) {
-        if (!made_ || retake || time - at_ >= PlotCache::kAlbedoLagSeconds) {
+        if (!made_ || retake || time - at_ >= interval_) {
             inputs_ = now;
             at_ = time;
             made_ = true;
@@ -312,6 +316,7 @@ public:
     const Inputs& inputs() const { return inputs_; }
 
 private:
+    double interval_;
     bool made_ = false;
     Inputs inputs_{};
     double at_ = 0.0;

@@ -67,7 +67,10 @@ struct Lobe3dState {
     RecentlyUsed<Lobe3dKey, Lobe3dMesh> meshes{2};
     RecentlyUsed<std::pair<GridKey, PlotComponent>, LobeMaximum> peaks{2}; // A's, for the readout
     ChangeWatch watchA, watchB; // whether A's and B's inputs are in a change (a coarse plot then)
-    LaggingDraft<LobeInputs> draftA, draftB; // the inputs A's and B's coarse grids show during a change
+    // The inputs A's and B's coarse grids show during a change: drafted again ten times a second (the
+    // 3D lobe is its tab's picture, and a drag should move it; a draft costs about 0.15 ms).
+    static constexpr double kDraftSeconds = 0.1;
+    LaggingDraft<LobeInputs> draftA{kDraftSeconds}, draftB{kDraftSeconds};
     // The largest value of the grids last drawn (a scan of 8,281 values each), found again while the
     // grids and the component stay the same.
     struct Largest {
