@@ -175,7 +175,7 @@ add_library(PkgConfig::QRENCODE INTERFACE IMPORTED)
 target_link_libraries(PkgConfig::QRENCODE INTERFACE lab_qrencode)
 
 # The UI font, cut down to the characters the UI can show (the glyph ranges ImGuiHost asks for,
-# lab/platform/imgui_host.cpp: Latin-1, Greek, dashes and the ellipsis, arrows, minus, <= and >=)
+# lab/platform/imgui_host.cpp: Latin-1, the Greek letters, dashes and the ellipsis, arrows, minus, <= and >=)
 # and without hinting, which ImGui's rasterizer does not use: 757 KB -> about 60 KB.
 find_program(LAB_PYFTSUBSET pyftsubset REQUIRED) # Debian's fonttools
 set(LAB_WEB_FONT "${CMAKE_BINARY_DIR}/fonts/DejaVuSans-ui.ttf")
@@ -183,7 +183,7 @@ set(LAB_FONT_SOURCE /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf)
 add_custom_command(OUTPUT "${LAB_WEB_FONT}"
   COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_BINARY_DIR}/fonts"
   COMMAND "${LAB_PYFTSUBSET}" "${LAB_FONT_SOURCE}" "--output-file=${LAB_WEB_FONT}"
-          "--unicodes=U+0020-00FF,U+0370-03FF,U+2010-2027,U+2190-2193,U+2212,U+2264-2265,U+FFFD"
+          "--unicodes=U+0020-00FF,U+0391-03A9,U+03B1-03C9,U+2010-2027,U+2190-2193,U+2212,U+2264-2265,U+FFFD"
           --no-hinting --layout-features= --name-IDs=0,1,2,3,4,5,6 --drop-tables+=GSUB,GPOS,GDEF,kern,FFTM
   DEPENDS "${LAB_FONT_SOURCE}" VERBATIM)
 add_custom_target(lab_web_font DEPENDS "${LAB_WEB_FONT}")
