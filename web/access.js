@@ -9,7 +9,7 @@
 // never reach Emscripten's GLFW (index.html), so typing here fires no shortcut.
 'use strict';
 (function () {
-  // Off only for the browser benchmark's baseline (tests/bench-page.test.mjs): a drag's frame without the parallel DOM.
+  // Off only for the browser benchmark's baseline (web/bench/drag-frame.bench.mjs): a drag's frame without the parallel DOM.
   if (window.labParallelDom === false) return;
   const root = document.getElementById('lab-access');
   const tabs = document.getElementById('lab-tabs');

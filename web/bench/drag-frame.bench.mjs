@@ -1,7 +1,8 @@
-// bench-page.test.mjs — measurements for the README's performance table, not pass/fail timings
-// (issue 40): what the parallel DOM (access.js) costs a frame while a slider is dragged.
+// drag-frame.bench.mjs — a benchmark for the README's performance table (row 10b), not a test: what
+// the parallel DOM (access.js) costs a frame while a slider is dragged (issue 40). Not part of the
+// browser tests (npm test runs tests/ only): it takes minutes.
 //
-//   node --test web/tests/bench-page.test.mjs        (after tools/dev web)
+//   tools/dev bench page        (builds the page, then runs this)
 //
 // The same drag of the shininess slider, 1280×720, on a page with the parallel DOM and on one
 // without it (window.labParallelDom = false before the page's scripts: access.js builds nothing and
@@ -12,7 +13,7 @@
 // measured; the figures go to the log (the README's row).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withBrowser, newLabPage, settle, frames, widgets } from './page.mjs';
+import { withBrowser, newLabPage, settle, frames, widgets } from '../tests/page.mjs';
 
 const env = withBrowser();
 
