@@ -10,9 +10,11 @@
 
 #include <emscripten.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string_view>
 
 namespace lab {
 
@@ -82,15 +84,22 @@ void dracoDecoderLoaded(bool ok, const std::string& problem) {
 }
 
 bool mentionsDraco(const std::filesystem::path& file) {
-    std::string bytes;
-    if (std::FILE* f = std::fopen(file.c_str(), "rb")) {
-        char chunk[65536];
-        for (std::size_t n; (n = std::fread(chunk, 1, sizeof chunk, f)) > 0;) {
-            bytes.append(chunk, n);
-        }
-        std::fclose(f);
+    // Read in pieces, each searched with the end of the one before (a model may be hundreds of MB).
+    static constexpr std::string_view kName = "KHR_draco_mesh_compression";
+    std::FILE* f = std::fopen(file.c_str(), "rb");
+    if (!f) {
+        return false;
     }
-    return bytes.find("KHR_draco_mesh_compression") != std::string::npos;
+    std::string window;
+    char chunk[65536];
+    bool found = false;
+    for (std::size_t n; !found && (n = std::fread(chunk, 1, sizeof chunk, f)) > 0;) {
+        window.append(chunk, n);
+        found = window.find(kName) != std::string::npos;
+        window.erase(0, window.size() - std::min(window.size(), kName.size() - 1));
+    }
+    std::fclose(f);
+    return found;
 }
 
 gltf_detail::DracoResult runDracoDecoder(const unsigned char* data, std::size_t size, const gltf_detail::DracoQuery& query) {
