@@ -574,8 +574,8 @@ FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool des
     out.pageDescribed = describe;
     if (describe) {
         PageFacts tools = pageTools();
-        out.page = page.json(workspace, {workspace.exercise() ? &exerciseView : nullptr, toastLeft > 0.0f ? toast : "",
-                                         out.problem, probeWords(probe.shown() ? probe.result() : nullptr),
+        out.page = page.json(workspace, {workspace.exercise() ? &exerciseView : nullptr, out.problem,
+                                         probeWords(probe.shown() ? probe.result() : nullptr),
                                          legendWords(drawn.captions.legend), out.movingLights, toString(theme),
                                          drawn.shareCode ? drawn.shareCode->link : "", tools.shader, tools.sweep,
                                          std::exchange(said, {})});

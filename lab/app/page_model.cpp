@@ -371,7 +371,7 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
     }
     w.key("readouts").open('{').key("probe").str(facts.probe).key("legend").str(facts.legend);
     w.close('}').key("theme").str(facts.theme);
-    w.key("messages").open('{').key("toast").str(facts.toast).key("problem").str(facts.problem).key("said").open('[');
+    w.key("messages").open('{').key("problem").str(facts.problem).key("said").open('[');
     for (const std::string& text : facts.said) {
         w.str(text);
     }

@@ -29,7 +29,6 @@ namespace lab {
 // What the app knows beside the workspace, for the page.
 struct PageFacts {
     const ui::ExercisePanelModel* exercise = nullptr; // while one is solved
-    std::string toast;   // the lab's short message while it is shown
     std::string problem; // the error dialog's text while it is shown
     std::string probe;   // the pixel probe's readout, "" when none
     std::string legend;  // the factor view's legend, "" when the lit model is shown

@@ -119,11 +119,11 @@ EM_JS(void, labJsProblem, (const char* text), {
     if (Module.labProblem) Module.labProblem(UTF8ToString(text));
 });
 
-// The lab described for the page's parallel DOM (web/access.js), when the description changed.
 // Whether the page takes the lab's descriptions (access.js registered Module.labPage; a page opened
 // with window.labParallelDom = false, the benchmark's baseline, has none and is never described).
 EM_JS(int, labJsTakesDescriptions, (), { return Module.labPage ? 1 : 0; });
 
+// The lab described for the page's parallel DOM (web/access.js), when the description changed.
 EM_JS(void, labJsPage, (const char* json), {
     if (Module.labPage) Module.labPage(UTF8ToString(json));
 });
