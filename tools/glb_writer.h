@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -44,9 +45,15 @@ inline std::string glbContainer(std::string json, std::string bin) {
 }
 
 // How writeGlb stores the mesh's data: as it is, or with EXT_meshopt_compression's vertex and
-// index codecs and no filter. Both are lossless but for one liberty of the index codec: it may
-// start a triangle at another of its corners (the triangles, their order and winding are kept).
-enum class GlbStorage { Plain, Meshopt };
+// index codecs. Plain and the codecs alone are lossless but for one liberty of the index codec: it
+// may start a triangle at another of its corners (the triangles, their order and winding are kept).
+// MeshoptExponential also stores the positions through meshopt's EXPONENTIAL filter with a 16-bit
+// mantissa (what gltfpack does for float data): each position moves by at most 2^-16 of its
+// largest coordinate (5e-5 for the trefoil), and its bytes compress to about half — the codec and
+// gzip find little to share in a float's last mantissa bits. The accessor's min and max are those
+// of the positions as a reader decodes them.
+enum class GlbStorage { Plain, Meshopt, MeshoptExponential };
+inline constexpr int kExponentialMantissaBits = 16;
 
 // `generator` names the program in the asset; `nodes` is the glTF "nodes" array; the scene's root is node 0, and a node with "mesh": 0
 // places the mesh. The output is deterministic.
@@ -57,15 +64,31 @@ inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& n
     auto append = [](std::string& out, const auto& v) {
         out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v[0]));
     };
+    // The positions as the EXPONENTIAL filter stores them, and as a reader decodes them.
+    // (The filter's output is integers, kept as such: not every one of them is a float's bits.)
+    struct Filtered {
+        std::uint32_t xyz[3];
+    };
+    std::vector<Filtered> filtered;
+    std::vector<glm::vec3> decoded;
+    if (storage == GlbStorage::MeshoptExponential) {
+        filtered.resize(mesh.positions.size());
+        meshopt_encodeFilterExp(filtered.data(), filtered.size(), sizeof(Filtered), kExponentialMantissaBits,
+                                &mesh.positions.data()->x);
+        std::vector<Filtered> bits = filtered;
+        meshopt_decodeFilterExp(bits.data(), bits.size(), sizeof(Filtered));
+        decoded.resize(bits.size());
+        std::memcpy(decoded.data(), bits.data(), bits.size() * sizeof(Filtered));
+    }
     glm::vec3 lo(1e30f), hi(-1e30f);
-    for (const glm::vec3& p : mesh.positions) {
+    for (const glm::vec3& p : decoded.empty() ? mesh.positions : decoded) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
     std::string bin;
     std::size_t fallbackBytes = 0; // Meshopt: buffer 1, which holds no data (the views' plain size)
     Json views = Json::array(), accessors = Json::array(), attributes = Json::object();
-    auto view = [&](const auto& data, int target) {
+    auto view = [&](const auto& data, int target, const char* filter = nullptr) {
         std::size_t offset = bin.size();
         if (storage == GlbStorage::Plain) {
             append(bin, data);
@@ -87,6 +110,9 @@ inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& n
         }
         Json compressed = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", encoded.size()}, {"byteStride", stride},
                            {"count", count}, {"mode", target == kIndexTarget ? "TRIANGLES" : "ATTRIBUTES"}};
+        if (filter) {
+            compressed["filter"] = filter;
+        }
         Json v = {{"buffer", 1}, {"byteOffset", fallbackBytes}, {"byteLength", count * stride}};
         if (target != kIndexTarget) {
             v["byteStride"] = stride;
@@ -97,7 +123,9 @@ inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& n
         fallbackBytes += (count * stride + 3) / 4 * 4;
         return views.size() - 1;
     };
-    accessors.push_back({{"bufferView", view(mesh.positions, 34962)}, {"componentType", 5126},
+    const std::size_t positionView =
+        filtered.empty() ? view(mesh.positions, 34962) : view(filtered, 34962, "EXPONENTIAL");
+    accessors.push_back({{"bufferView", positionView}, {"componentType", 5126},
                          {"count", mesh.positions.size()}, {"type", "VEC3"},
                          {"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}});
     attributes["POSITION"] = 0;
@@ -113,7 +141,7 @@ inline std::string writeGlb(const GlbMesh& mesh, const nlohmann::ordered_json& n
     }
     Json j = {{"asset", {{"version", "2.0"}, {"generator", generator}}}};
     Json buffers = Json::array({{{"byteLength", bin.size()}}});
-    if (storage == GlbStorage::Meshopt) {
+    if (storage != GlbStorage::Plain) {
         j["extensionsUsed"] = {"EXT_meshopt_compression"};
         j["extensionsRequired"] = {"EXT_meshopt_compression"};
         buffers.push_back({{"byteLength", fallbackBytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
