@@ -452,7 +452,9 @@ EMSCRIPTEN_KEEPALIVE int lab_frames() { return gState ? gState->frames : 0; }
 // For browser tests: 1 when the lab has handled everything it was given, owes no frame and the page
 // has its description of the last frame.
 EMSCRIPTEN_KEEPALIVE int lab_settled() {
-    return gState && !gState->changed && !gState->pendingLink && gState->queue.empty() && !gState->describeOwed &&
+    // A file held for the Draco decoder is one the lab was given and has not handled yet.
+    return gState && !gState->changed && !gState->pendingLink && gState->queue.empty() && gState->heldForDraco.empty() &&
+           !gState->describeOwed &&
            !gState->pacer.due(glfwGetTime(), false);
 }
 // For browser tests: the screen rectangles of the main widgets, in CSS pixels ("name x y w h").

@@ -57,7 +57,7 @@ std::string exerciseToJson(const Exercise& e) {
         PresetJson t = PresetJson::object();
         if (e.tolerance.pixelTolerance) t["pixel_tolerance"] = *e.tolerance.pixelTolerance;
         // Floats as they were typed (0.01, not 0.009999999776482582), as presets write them.
-        auto number = [](float v) { return PresetJson::parse(shortestFloat(v)); };
+        auto number = [](float v) { return PresetJson::parse(std::string_view(shortestFloat(v))); };
         if (e.tolerance.maxFailing) t["max_failing"] = number(*e.tolerance.maxFailing);
         if (e.tolerance.maxMean) t["max_mean"] = number(*e.tolerance.maxMean);
         if (!e.tolerance.fields.empty()) {

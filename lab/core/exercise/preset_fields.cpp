@@ -63,7 +63,7 @@ PresetJson whole(const PresetJson& full) {
 } // namespace
 
 PresetJson presetValue(const Preset& preset) {
-    PresetJson j = PresetJson::parse(presetToJson(preset));
+    PresetJson j = PresetJson::parse(std::string_view(presetToJson(preset)));
     j.erase("format");
     j.erase("version");
     return j;

@@ -112,7 +112,7 @@ std::string exerciseLink(const Exercise& exercise, const std::optional<std::stri
     if (bundledName) {
         return "exercise=" + *bundledName;
     }
-    PresetJson j = PresetJson::parse(exerciseToJson(linkedExercise(exercise)));
+    PresetJson j = PresetJson::parse(std::string_view(exerciseToJson(linkedExercise(exercise))));
     j["start"] = presetPatch(presetValue(Preset{}), j["start"]);
     return "x=" + base64UrlEncode(deflateBytes(j.dump()));
 }
@@ -197,7 +197,7 @@ std::optional<Linked> parseLink(std::string_view fragment, const std::filesystem
         if (!json) {
             return std::nullopt;
         }
-        PresetJson patch = PresetJson::parse(*json, nullptr, false);
+        PresetJson patch = PresetJson::parse(std::string_view(*json), nullptr, false);
         if (patch.is_discarded() || !patch.is_object()) {
             diagnostics.push_back({file, "z", "not a JSON object"});
             return std::nullopt;
@@ -217,7 +217,7 @@ std::optional<Linked> parseLink(std::string_view fragment, const std::filesystem
         // The start is what differs from the defaults (exerciseLink): merged back over them, as a z=
         // scene is, before it is read. (Read as it was, a plane of 64 x 32 subdivisions, the
         // default sphere's, came back with a plane's own default of 16 x 16.)
-        PresetJson exercise = PresetJson::parse(*json, nullptr, false);
+        PresetJson exercise = PresetJson::parse(std::string_view(*json), nullptr, false);
         if (exercise.is_object() && exercise.contains("start") && exercise["start"].is_object()) {
             exercise["start"] = mergePreset(presetValue(Preset{}), exercise["start"]);
             json = exercise.dump();
