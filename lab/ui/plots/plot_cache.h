@@ -80,6 +80,21 @@ public:
     // Keeps a painting, in place of the least recently used one when full.
     void keep(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key, KeptMesh mesh);
 
+    // Whole figures as painted (plot_kit.h's paintWhole: a canvas's grid, arrows and labels), with
+    // what their text depends on besides: the clip rectangle (ImGui leaves out glyphs outside it),
+    // the font and its size, and the atlas (its texture and size: a rebuilt atlas at another UI
+    // scale has another size; at the same scale it is built the same).
+    struct FigureKey {
+        Key lines;
+        ImVec4 clip;
+        const ImFont* font = nullptr;
+        float fontSize = 0.0f;
+        ImTextureID texture{};
+        int atlasW = 0, atlasH = 0;
+    };
+    const KeptMesh* find(const Figure& figure, const FigureKey& key);
+    void keep(const Figure& figure, const FigureKey& key, KeptMesh mesh);
+
 private:
     struct Entry {
         std::vector<glm::vec2> points;
@@ -88,8 +103,16 @@ private:
         KeptMesh mesh;
         std::uint64_t used = 0;
     };
+    struct FigureEntry {
+        Figure figure;
+        FigureKey key;
+        KeptMesh mesh;
+        std::uint64_t used = 0;
+    };
     static constexpr std::size_t kCapacity = 64; // a frame paints about 30 lines long or dashed enough to keep
+    static constexpr std::size_t kFigures = 16;  // a view paints at most 8 figures whole
     std::vector<Entry> entries_;
+    std::vector<FigureEntry> figures_;
     std::uint64_t clock_ = 0;
 };
 

@@ -143,6 +143,27 @@ void line(ImDrawList* dl, const FigureLine& l, PaintedLines* kept) {
 
 } // namespace
 
+void paintWhole(ImDrawList* dl, const Figure& figure, PaintedLines& kept) {
+    const ImFontAtlas* atlas = ImGui::GetIO().Fonts;
+    const PaintedLines::FigureKey key{{0.0f, 0, dl->Flags, ImGui::GetFontTexUvWhitePixel(), ImVec4()},
+                                      dl->_CmdHeader.ClipRect,
+                                      ImGui::GetFont(),
+                                      ImGui::GetFont()->FontSize,
+                                      dl->_CmdHeader.TextureId,
+                                      atlas->TexWidth,
+                                      atlas->TexHeight};
+    if (const KeptMesh* m = kept.find(figure, key)) {
+        drawMesh(dl, *m, false);
+        return;
+    }
+    const int vertices = dl->VtxBuffer.Size, indices = dl->IdxBuffer.Size, commands = dl->CmdBuffer.Size;
+    const unsigned base = dl->_VtxCurrentIdx;
+    paint(dl, figure, &kept);
+    if (std::optional<KeptMesh> m = painting(dl, vertices, indices, base, commands)) {
+        kept.keep(figure, key, std::move(*m));
+    }
+}
+
 void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept) {
     for (const FigureShape& shape : figure.shapes) {
         if (const auto* l = std::get_if<FigureLine>(&shape)) {

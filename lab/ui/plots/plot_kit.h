@@ -37,6 +37,11 @@ ImU32 ink(Ink ink);
 // Sans, as the figures'). With `kept`, lines long or dashed are copied from an earlier frame's
 // painting where it has the same line (plot_cache.h's PaintedLines), and kept when new.
 void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept = nullptr);
+// paint(), or the figure copied whole from an earlier frame's painting of the same figure in the same
+// clip rectangle, font and atlas (plot_cache.h's PaintedLines): for what stays the same from frame to
+// frame (a grid, arrows, an axis' labels); what changes every frame (a curve during a drag) would pay
+// for keeping a painting never found again.
+void paintWhole(ImDrawList* dl, const Figure& figure, PaintedLines& kept);
 
 // A plot on screen: a Figure drawn in the screen style, painted by paint(). Not copyable (the
 // canvas refers to the figure and the style).
@@ -48,6 +53,7 @@ struct ScreenPlot {
     ScreenPlot(const ScreenPlot&) = delete;
     ScreenPlot& operator=(const ScreenPlot&) = delete;
     void paint(ImDrawList* dl, PaintedLines* kept = nullptr) const { plotkit::paint(dl, figure, kept); }
+    void paintWhole(ImDrawList* dl, PaintedLines& kept) const { plotkit::paintWhole(dl, figure, kept); }
 };
 
 // Sizes of this frame's widgets, all from the font size so that they grow with presenter mode.

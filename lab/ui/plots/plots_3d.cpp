@@ -257,7 +257,7 @@ void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& 
         }
         rings.shapes.push_back(std::move(circle));
     }
-    paint(dl, rings, &s.cache.painted());
+    paintWhole(dl, rings, s.cache.painted());
     for (int deg = 0; deg < 360; deg += 30) {
         const float t = glm::radians(static_cast<float>(deg));
         dl->AddLine(cam.at(glm::vec3(0.0f)), cam.at(glm::vec3(std::cos(t), 0.0f, std::sin(t))),
@@ -266,16 +266,16 @@ void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& 
     drawMesh(dl, mesh.surface);
     Figure wires;
     const FigureColor compare = colorOf(currentColors().plot, Ink::Compare);
+    wires.shapes.reserve(mesh.wireframe.size());
     for (const std::vector<ImVec2>& line : mesh.wireframe) {
         FigureLine wire;
         wire.width = p.thin;
         wire.color = compare;
-        for (const ImVec2& q : line) {
-            wire.points.push_back(toVec2(q));
-        }
+        wire.points.resize(line.size());
+        std::transform(line.begin(), line.end(), wire.points.begin(), toVec2);
         wires.shapes.push_back(std::move(wire));
     }
-    paint(dl, wires, &s.cache.painted());
+    paintWhole(dl, wires, s.cache.painted());
     // The vectors: N, L, R, and V (the plane plot's reading direction) with its H.
     const glm::vec3& V = v.viewer;
     ScreenPlot vectors;
@@ -285,7 +285,7 @@ void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& 
     arrow3d(vectors, cam, v.vectors.R, 1.1f, Ink::Mirror, "R", style.stroke());
     arrow3d(vectors, cam, V, 0.9f, Ink::Viewer, "V", style.thin() * 1.5f);
     arrow3d(vectors, cam, glsl::halfVector(v.vectors.L, V), 0.7f, Ink::Half, "H", style.stroke());
-    vectors.paint(dl);
+    vectors.paintWhole(dl, s.cache.painted());
     if (v.peak.value > 0.0f && v.largest > kNothingLit) {
         const ImVec2 q = cam.at(plotRadius(v.peak.value, v.outer, key.scale) * v.peak.V);
         dl->AddCircle(q, 4.5f * p.s, ink(Ink::Text), 0, p.stroke);

@@ -247,8 +247,10 @@ void cartesianLobes(const Canvas& c, const Lobes& lobes, PlotSettings& s) {
     }
     plot.canvas.line({at(lobes.incident, 0), at(lobes.incident, 1)}, style.thin(), Ink::Mirror); // the mirror angle
     plot.canvas.line({at(lobes.viewer, 0), at(lobes.viewer, 1)}, style.thin(), Ink::Viewer);
-    lobeCurves(plot, lobes, s, placementOf(b));
-    plot.paint(c.dl, &s.cache.painted());
+    plot.paintWhole(c.dl, s.cache.painted()); // the axes stay while the curves follow a drag
+    ScreenPlot curves;
+    lobeCurves(curves, lobes, s, placementOf(b));
+    curves.paint(c.dl, &s.cache.painted());
 }
 
 // The probe's vectors in its own plane of incidence: N up, L to the left.
@@ -289,8 +291,12 @@ void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s,
     ScreenPlot plot;
     const PlotStyle& style = plot.style;
     const Polar f = polarFrame(c.origin(), c.width, c.height, style, false);
-    paint(c.dl, *s.cache.polarGrid(f, lobes.outer, s.scale, style), &s.cache.painted()); // under the plot's shapes
-    lobeCurves(plot, lobes, s, placementOf(f));
+    paintWhole(c.dl, *s.cache.polarGrid(f, lobes.outer, s.scale, style), s.cache.painted()); // under the plot's shapes
+    {
+        ScreenPlot curves; // painted on their own: the arrows over them stay while the curves follow a drag
+        lobeCurves(curves, lobes, s, placementOf(f));
+        curves.paint(c.dl, &s.cache.painted());
+    }
     glm::vec2 L = dirFromDeg(lobes.incident, -1.0f), R = dirFromDeg(lobes.incident, 1.0f), V = dirFromDeg(lobes.viewer, 1.0f);
     auto arrow = [&](glm::vec2 dir, float length, Ink ink, const char* label, float width) {
         plot.canvas.arrow(f.at({0, 0}), f.at(dir * length), ink, width, label);
@@ -307,7 +313,7 @@ void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s,
     if (probe && !probe->lights.empty() && !lobes.point) { // at the point, L and V are the probe's
         probeArrows(plot, f, *probe, a.brdf);
     }
-    plot.paint(c.dl, &s.cache.painted());
+    plot.paintWhole(c.dl, s.cache.painted());
     if (!lobes.point) {
         dragArrows(f, L, V, a, s);
     }
@@ -386,7 +392,7 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
     if (canvas.shown()) {
         ScreenPlot plot;
         const Polar f = polarFrame(canvas.origin(), canvas.width, canvas.height, plot.style, false);
-        paint(canvas.dl, *s.cache.polarGrid(f, o.outer, s.scale, plot.style), &s.cache.painted());
+        paintWhole(canvas.dl, *s.cache.polarGrid(f, o.outer, s.scale, plot.style), s.cache.painted());
         for (std::size_t i = 0; i < 3; ++i) {
             const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, placementOf(f), o.coarse);
             plot.canvas.line(*curve, plot.style.stroke(), overlayInk(i));
@@ -396,7 +402,7 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
             // The fields name them.
             plot.canvas.arrow(f.at({0, 0}), f.at(dirFromDeg(deg, -1.0f) * 0.9f), overlayInk(i), plot.style.stroke(), "");
         }
-        plot.paint(canvas.dl, &s.cache.painted());
+        plot.paintWhole(canvas.dl, s.cache.painted()); // the curves lag during a drag of the material
     }
     // The three angles, each field in its curve's colour.
     if (!block.controlsFit) {
@@ -468,7 +474,7 @@ void attenuationCanvas(const Canvas& c, const Attenuation& t, PlotCache& cache) 
         plot.canvas.line({at(t.distance, 0), m}, style.thin(), Ink::Specular);
         plot.canvas.disc(m, 5.0f * style.scale, Ink::Specular);
     }
-    plot.paint(c.dl, &cache.painted());
+    plot.paintWhole(c.dl, cache.painted());
 }
 
 void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Attenuation& t,
