@@ -117,6 +117,29 @@ void PaintedLines::keep(const Figure& figure, const FigureKey& key, KeptMesh mes
     *oldest = std::move(fresh);
 }
 
+const KeptMesh* PaintedLines::find(const std::string& description) {
+    for (DescribedEntry& e : described_) {
+        if (e.description == description) {
+            e.used = ++clock_;
+            return &e.mesh;
+        }
+    }
+    return nullptr;
+}
+
+void PaintedLines::keep(const std::string& description, KeptMesh mesh) {
+    DescribedEntry fresh{description, std::move(mesh), ++clock_};
+    if (described_.size() < kDescribed) {
+        described_.push_back(std::move(fresh));
+        return;
+    }
+    DescribedEntry* oldest = &described_.front();
+    for (DescribedEntry& e : described_) {
+        oldest = e.used < oldest->used ? &e : oldest;
+    }
+    *oldest = std::move(fresh);
+}
+
 bool operator==(const CurvePlacement& x, const CurvePlacement& y) {
     return x.polar == y.polar && x.offset == y.offset && x.scale == y.scale;
 }

@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace lab::ui {
@@ -94,6 +95,10 @@ public:
     };
     const KeptMesh* find(const Figure& figure, const FigureKey& key);
     void keep(const Figure& figure, const FigureKey& key, KeptMesh mesh);
+    // Anything else painted the same way from the same description, written out as bytes (a
+    // readout's tokens, plot_kit.h's Readout::draw): the painting of `description`, or null.
+    const KeptMesh* find(const std::string& description);
+    void keep(const std::string& description, KeptMesh mesh);
 
 private:
     struct Entry {
@@ -109,10 +114,17 @@ private:
         KeptMesh mesh;
         std::uint64_t used = 0;
     };
+    struct DescribedEntry {
+        std::string description;
+        KeptMesh mesh;
+        std::uint64_t used = 0;
+    };
     static constexpr std::size_t kCapacity = 64; // a frame paints about 30 lines long or dashed enough to keep
     static constexpr std::size_t kFigures = 16;  // a view paints at most 8 figures whole
+    static constexpr std::size_t kDescribed = 8; // the Plane view's three readouts, the 3D lobe's
     std::vector<Entry> entries_;
     std::vector<FigureEntry> figures_;
+    std::vector<DescribedEntry> described_;
     std::uint64_t clock_ = 0;
 };
 

@@ -100,7 +100,12 @@ struct Readout {
     void lineBreak() { tokens.push_back({}); }
     void measure(const Pens& p);
     float height(const Pens& p, float width) const;
-    void draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const;
+    // With `kept`, copied from an earlier frame's painting of the same tokens at the same place
+    // (plot_cache.h's PaintedLines) where there is one.
+    void draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width, PaintedLines* kept = nullptr) const;
+
+private:
+    void drawTokens(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const;
 };
 
 // What the outer circle stands for, in words (in tokens that can wrap), with a warning when a
@@ -135,7 +140,8 @@ struct Block {
 // The block's readout drawn into its strip (registered as `readoutMark`), the cursor at the canvas.
 // `box` in the area at `origin`; `cramped`: a low band; `controls`: a row of controls below.
 Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout& r, const char* readoutMark,
-                 bool cramped, bool controls, float minCanvas, const std::function<float(float)>& maxCanvas);
+                 bool cramped, bool controls, float minCanvas, const std::function<float(float)>& maxCanvas,
+                 PaintedLines* kept = nullptr);
 
 // A Cartesian plot's box in a canvas: room for the values left of the y axis (`yLabel` the widest)
 // and under the x axis, half of the last x value (`xLabel`) right of the box. Nullopt when too small.

@@ -524,7 +524,7 @@ void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& s, const ProbeL
     ImGui::PushClipRect(origin, ImVec2(origin.x + room.x, origin.y + std::max(room.y, 1.0f)), true);
     dl->PushClipRect(origin, ImVec2(origin.x + room.x, origin.y + std::max(stripH, 1.0f)), true);
     if (stripH > 0.0f) {
-        v.readout.draw(dl, p, origin, room.x);
+        v.readout.draw(dl, p, origin, room.x, &s.cache.painted());
         ImGui::Dummy(ImVec2(std::max(room.x, 1.0f), stripH));
         mark("plot.lobe3d.readout");
     }
