@@ -121,7 +121,7 @@ private:
     };
     static constexpr std::size_t kCapacity = 64; // a frame paints about 30 lines long or dashed enough to keep
     static constexpr std::size_t kFigures = 16;  // a view paints at most 8 figures whole
-    static constexpr std::size_t kDescribed = 8; // the Plane view's three readouts, the 3D lobe's
+    static constexpr std::size_t kDescribed = 12; // the Plane view's three readouts; the 3D lobe's, rings, wireframe, map marks
     std::vector<Entry> entries_;
     std::vector<FigureEntry> figures_;
     std::vector<DescribedEntry> described_;

@@ -176,14 +176,13 @@ void paintWhole(ImDrawList* dl, const Figure& figure, PaintedLines& kept) {
         [&](KeptMesh m) { kept.keep(figure, key, std::move(m)); });
 }
 
-namespace {
-
-// Appends the bytes of each value to `out` (a description of what a painting is made from).
-template <class... Values> void describe(std::string& out, const Values&... values) {
-    (out.append(reinterpret_cast<const char*>(&values), sizeof values), ...);
+void drawKept(ImDrawList* dl, std::string& description, PaintedLines& kept, const std::function<void()>& draw) {
+    const PaintedLines::FigureKey k = drawState(dl);
+    describe(description, k.lines.flags, k.lines.fillUv.x, k.lines.fillUv.y, k.clip.x, k.clip.y, k.clip.z, k.clip.w,
+             k.font, k.fontSize, k.texture, k.atlasW, k.atlasH);
+    paintKept(
+        dl, [&] { return kept.find(description); }, draw, [&](KeptMesh m) { kept.keep(description, std::move(m)); });
 }
-
-} // namespace
 
 void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept) {
     for (const FigureShape& shape : figure.shapes) {
@@ -198,6 +197,23 @@ void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept) {
             paintText(dl, *t);
         }
     }
+}
+
+void drawKeptLines(ImDrawList* dl, std::string& description, const std::vector<std::vector<ImVec2>>& lines, float width,
+                   FigureColor color, PaintedLines& kept) {
+    describe(description, width, color.r, color.g, color.b);
+    drawKept(dl, description, kept, [&] {
+        Figure figure;
+        for (const std::vector<ImVec2>& line : lines) {
+            FigureLine l;
+            l.width = width;
+            l.color = color;
+            l.points.resize(line.size());
+            std::transform(line.begin(), line.end(), l.points.begin(), toVec2);
+            figure.shapes.push_back(std::move(l));
+        }
+        paint(dl, figure, &kept);
+    });
 }
 
 Pens pens() {
@@ -296,20 +312,16 @@ void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width, Painte
         drawTokens(dl, p, at, width);
         return;
     }
-    // Everything the tokens' painting is made from, field by field (no padding bytes).
+    // Everything the tokens' painting is made from.
     std::string d;
-    const PaintedLines::FigureKey k = drawState(dl);
-    describe(d, k.lines.flags, k.lines.fillUv.x, k.lines.fillUv.y, k.clip.x, k.clip.y, k.clip.z, k.clip.w, k.font, k.fontSize,
-             k.texture, k.atlasW, k.atlasH, at.x, at.y, width, p.font, p.line, p.pad, p.bold);
+    describe(d, at.x, at.y, width, p.font, p.line, p.pad, p.bold);
     for (const Token& t : tokens) {
         const ImU32 color = ink(t.ink);
         const std::size_t length = t.text.size();
         describe(d, t.ink, color, t.swatch, t.width, length);
         d += t.text;
     }
-    paintKept(
-        dl, [&] { return kept->find(d); }, [&] { drawTokens(dl, p, at, width); },
-        [&](KeptMesh m) { kept->keep(d, std::move(m)); });
+    drawKept(dl, d, *kept, [&] { drawTokens(dl, p, at, width); });
 }
 
 void Readout::drawTokens(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const {

@@ -42,6 +42,20 @@ void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept = nullptr);
 // frame (a grid, arrows, an axis' labels); what changes every frame (a curve during a drag) would pay
 // for keeping a painting never found again.
 void paintWhole(ImDrawList* dl, const Figure& figure, PaintedLines& kept);
+// Appends the bytes of each value to `out`: a description of what a drawing is made from, field by
+// field (no padding bytes), for drawKept.
+template <class... Values> void describe(std::string& out, const Values&... values) {
+    (out.append(reinterpret_cast<const char*>(&values), sizeof values), ...);
+}
+// draw(), or a copy of an earlier frame's drawing of the same `description` (what draw() draws from,
+// written by describe(); the clip rectangle, font and atlas are added here) kept in `kept`: for
+// drawings that are not a Figure (a readout, the 3D lobe's map marks). The description must name
+// everything the drawing depends on, or a copy would show what an earlier frame drew.
+void drawKept(ImDrawList* dl, std::string& description, PaintedLines& kept, const std::function<void()>& draw);
+// Solid polylines of one width and colour painted as a Figure's lines, kept by drawKept under
+// `description` (where the points come from: what makes them the same), the width and the colour.
+void drawKeptLines(ImDrawList* dl, std::string& description, const std::vector<std::vector<ImVec2>>& lines, float width,
+                   FigureColor color, PaintedLines& kept);
 
 // A plot on screen: a Figure drawn in the screen style, painted by paint(). Not copyable (the
 // canvas refers to the figure and the style).
