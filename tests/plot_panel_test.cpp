@@ -113,6 +113,40 @@ TEST(PlotPanel, TheCacheNeverShowsStaleData) {
     }
 }
 
+// What the plots keep as painted (PaintedLines: long lines, whole figures such as grids, arrows and
+// axes, readouts) is a copy of what painting afresh draws: after each edit, the last of a few frames
+// (which copies them) is byte for byte one frame that paints everything again, in compare mode.
+TEST(PlotPanel, KeptPaintingsAreWhatPaintingAfreshDraws) {
+    CpuImGui imgui(1.0f);
+    for (ui::PlotTab view : {ui::PlotTab::Plane, ui::PlotTab::Lobe3d}) {
+        ui::Rect r{800, 0, 480, 800};
+        Preset a, b;
+        b.brdf = BrdfModel::CookTorrance;
+        ui::PlotSettings warm;
+        warm.view = view;
+        const std::vector<std::pair<std::string, std::function<void()>>> edits{
+            {"nothing", [] {}},
+            {"shininess", [&] { a.material.shininess = 12.0f; }},
+            {"B's BRDF", [&] { b.brdf = BrdfModel::Phong; }},
+            {"log scale", [&] { warm.scale = RadialScale::Log; }},
+            {"Cartesian", [&] { warm.cartesian = true; }},
+            {"incident angle", [&] { a.plotIncidentDeg = 25.0f; }},
+            {"V", [&] { warm.viewerDeg = -30.0f; }},
+            {"attenuation", [&] { a.lights[0].attenuation = {1.0f, 0.7f, 0.2f}; }},
+            {"a band below the model", [&] { r = {300, 500, 980, 300}; }},
+            {"back to the column", [&] { r = {800, 0, 480, 800}; }},
+        };
+        for (const auto& [what, edit] : edits) {
+            edit();
+            const Outcome kept = drawPlots(r, 1280, 800, a, &b, warm);
+            ui::PlotSettings afresh = warm;
+            afresh.cache.painted() = ui::PaintedLines{};
+            const Outcome painted = drawPlots(r, 1280, 800, a, &b, afresh, 1);
+            EXPECT_TRUE(sameDrawing(kept, painted)) << "view " << static_cast<int>(view) << ", after an edit of the " << what;
+        }
+    }
+}
+
 // The 3D lobe view (ui/plots/plots_3d.h) fits the same windows: its canvases and controls inside the
 // window, nothing scrolled, the surface and the map drawn (more vertices than the grid has) and
 // ImGui's 16-bit indices never overflowed (under 65536 vertices in the window's list).

@@ -34,7 +34,9 @@ std::vector<double> specularPanelEdges(double ti) {
     return edges;
 }
 
-void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights) {
+namespace {
+
+void solveGaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights) {
     nodes.assign(static_cast<std::size_t>(n), 0.0);
     weights.assign(static_cast<std::size_t>(n), 0.0);
     for (int i = 0; i < n; ++i) {
@@ -57,6 +59,30 @@ void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weigh
         }
         nodes[static_cast<std::size_t>(i)] = x;
         weights[static_cast<std::size_t>(i)] = 2.0 / ((1.0 - x * x) * dp * dp);
+    }
+}
+
+} // namespace
+
+void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights) {
+    // The rules asked for are few (8 and 64 nodes) and solving one takes up to 100 Newton steps a
+    // node: each thread keeps the ones it solved (the same numbers, found rather than solved again;
+    // the plots' albedo asks three times per call, during a drag every 0.5 s).
+    struct Solved {
+        int n;
+        std::vector<double> nodes, weights;
+    };
+    thread_local std::vector<Solved> solved;
+    for (const Solved& s : solved) {
+        if (s.n == n) {
+            nodes = s.nodes;
+            weights = s.weights;
+            return;
+        }
+    }
+    solveGaussLegendre(n, nodes, weights);
+    if (solved.size() < 8) {
+        solved.push_back({n, nodes, weights});
     }
 }
 

@@ -20,14 +20,52 @@ std::vector<glm::vec2> placeAndThin(const std::vector<glm::vec2>& unit, const Cu
     return thinPolyline(screen, kCurveTolerance);
 }
 
+bool sameKey(const PaintedLines::Key& k, const PaintedLines::Key& key) {
+    return k.width == key.width && k.color == key.color && k.flags == key.flags && k.fillUv.x == key.fillUv.x &&
+           k.fillUv.y == key.fillUv.y && k.lineUv.x == key.lineUv.x && k.lineUv.y == key.lineUv.y &&
+           k.lineUv.z == key.lineUv.z && k.lineUv.w == key.lineUv.w;
+}
+
+bool sameColor(FigureColor x, FigureColor y) { return x.r == y.r && x.g == y.g && x.b == y.b; }
+
+// What paint() draws of a shape (an SVG id is not drawn).
+bool sameShape(const FigureShape& x, const FigureShape& y) {
+    if (x.index() != y.index()) {
+        return false;
+    }
+    if (const auto* l = std::get_if<FigureLine>(&x)) {
+        const FigureLine& m = std::get<FigureLine>(y);
+        return l->width == m.width && sameColor(l->color, m.color) && l->points == m.points && l->dash == m.dash;
+    }
+    if (const auto* g = std::get_if<FigurePolygon>(&x)) {
+        const FigurePolygon& h = std::get<FigurePolygon>(y);
+        return sameColor(g->fill, h.fill) && g->points == h.points;
+    }
+    if (const auto* d = std::get_if<FigureDisc>(&x)) {
+        const FigureDisc& e = std::get<FigureDisc>(y);
+        return d->centre == e.centre && d->radius == e.radius && sameColor(d->fill, e.fill);
+    }
+    if (const auto* t = std::get_if<FigureText>(&x)) {
+        const FigureText& u = std::get<FigureText>(y);
+        return t->at == u.at && t->size == u.size && sameColor(t->color, u.color) && t->anchor == u.anchor &&
+               t->bold == u.bold && t->text == u.text;
+    }
+    const FigureImage& i = std::get<FigureImage>(x);
+    const FigureImage& j = std::get<FigureImage>(y);
+    return i.at == j.at && i.size == j.size && i.image == j.image;
+}
+
+bool sameFigureKey(const PaintedLines::FigureKey& k, const PaintedLines::FigureKey& key) {
+    return sameKey(k.lines, key.lines) && k.clip.x == key.clip.x && k.clip.y == key.clip.y && k.clip.z == key.clip.z &&
+           k.clip.w == key.clip.w && k.font == key.font && k.fontSize == key.fontSize && k.texture == key.texture &&
+           k.atlasW == key.atlasW && k.atlasH == key.atlasH;
+}
+
 } // namespace
 
 const KeptMesh* PaintedLines::find(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key) {
     for (Entry& e : entries_) {
-        const Key& k = e.key;
-        if (k.width == key.width && k.color == key.color && k.flags == key.flags && k.fillUv.x == key.fillUv.x &&
-            k.fillUv.y == key.fillUv.y && k.lineUv.x == key.lineUv.x && k.lineUv.y == key.lineUv.y &&
-            k.lineUv.z == key.lineUv.z && k.lineUv.w == key.lineUv.w && e.dash == dash && e.points == points) {
+        if (sameKey(e.key, key) && e.dash == dash && e.points == points) {
             e.used = ++clock_;
             return &e.mesh;
         }
@@ -43,6 +81,60 @@ void PaintedLines::keep(const std::vector<glm::vec2>& points, const std::vector<
     }
     Entry* oldest = &entries_.front();
     for (Entry& e : entries_) {
+        oldest = e.used < oldest->used ? &e : oldest;
+    }
+    *oldest = std::move(fresh);
+}
+
+const KeptMesh* PaintedLines::find(const Figure& figure, const FigureKey& key) {
+    for (FigureEntry& e : figures_) {
+        if (e.figure.shapes.size() != figure.shapes.size() || !sameFigureKey(e.key, key)) {
+            continue;
+        }
+        bool same = true;
+        for (std::size_t i = 0; same && i < figure.shapes.size(); ++i) {
+            same = sameShape(e.figure.shapes[i], figure.shapes[i]);
+        }
+        if (same) {
+            e.used = ++clock_;
+            return &e.mesh;
+        }
+    }
+    return nullptr;
+}
+
+void PaintedLines::keep(const Figure& figure, const FigureKey& key, KeptMesh mesh) {
+    FigureEntry fresh{figure, key, std::move(mesh), ++clock_};
+    fresh.figure.title.clear(); // not painted
+    if (figures_.size() < kFigures) {
+        figures_.push_back(std::move(fresh));
+        return;
+    }
+    FigureEntry* oldest = &figures_.front();
+    for (FigureEntry& e : figures_) {
+        oldest = e.used < oldest->used ? &e : oldest;
+    }
+    *oldest = std::move(fresh);
+}
+
+const KeptMesh* PaintedLines::find(const std::string& description) {
+    for (DescribedEntry& e : described_) {
+        if (e.description == description) {
+            e.used = ++clock_;
+            return &e.mesh;
+        }
+    }
+    return nullptr;
+}
+
+void PaintedLines::keep(const std::string& description, KeptMesh mesh) {
+    DescribedEntry fresh{description, std::move(mesh), ++clock_};
+    if (described_.size() < kDescribed) {
+        described_.push_back(std::move(fresh));
+        return;
+    }
+    DescribedEntry* oldest = &described_.front();
+    for (DescribedEntry& e : described_) {
         oldest = e.used < oldest->used ? &e : oldest;
     }
     *oldest = std::move(fresh);

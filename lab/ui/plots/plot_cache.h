@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace lab::ui {
@@ -80,6 +81,25 @@ public:
     // Keeps a painting, in place of the least recently used one when full.
     void keep(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key, KeptMesh mesh);
 
+    // Whole figures as painted (plot_kit.h's paintWhole: a canvas's grid, arrows and labels), with
+    // what their text depends on besides: the clip rectangle (ImGui leaves out glyphs outside it),
+    // the font and its size, and the atlas (its texture and size: a rebuilt atlas at another UI
+    // scale has another size; at the same scale it is built the same).
+    struct FigureKey {
+        Key lines;
+        ImVec4 clip;
+        const ImFont* font = nullptr;
+        float fontSize = 0.0f;
+        ImTextureID texture{};
+        int atlasW = 0, atlasH = 0;
+    };
+    const KeptMesh* find(const Figure& figure, const FigureKey& key);
+    void keep(const Figure& figure, const FigureKey& key, KeptMesh mesh);
+    // Anything else painted the same way from the same description, written out as bytes (a
+    // readout's tokens, plot_kit.h's Readout::draw): the painting of `description`, or null.
+    const KeptMesh* find(const std::string& description);
+    void keep(const std::string& description, KeptMesh mesh);
+
 private:
     struct Entry {
         std::vector<glm::vec2> points;
@@ -88,8 +108,23 @@ private:
         KeptMesh mesh;
         std::uint64_t used = 0;
     };
+    struct FigureEntry {
+        Figure figure;
+        FigureKey key;
+        KeptMesh mesh;
+        std::uint64_t used = 0;
+    };
+    struct DescribedEntry {
+        std::string description;
+        KeptMesh mesh;
+        std::uint64_t used = 0;
+    };
     static constexpr std::size_t kCapacity = 64; // a frame paints about 30 lines long or dashed enough to keep
+    static constexpr std::size_t kFigures = 16;  // a view paints at most 8 figures whole
+    static constexpr std::size_t kDescribed = 12; // the Plane view's three readouts; the 3D lobe's, rings, wireframe, map marks
     std::vector<Entry> entries_;
+    std::vector<FigureEntry> figures_;
+    std::vector<DescribedEntry> described_;
     std::uint64_t clock_ = 0;
 };
 

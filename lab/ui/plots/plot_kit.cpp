@@ -141,7 +141,48 @@ void line(ImDrawList* dl, const FigureLine& l, PaintedLines* kept) {
     }
 }
 
+// What a painting depends on besides its shapes: the list's flags and clip rectangle, the font and the atlas.
+PaintedLines::FigureKey drawState(const ImDrawList* dl) {
+    const ImFontAtlas* atlas = ImGui::GetIO().Fonts;
+    return {{0.0f, 0, dl->Flags, ImGui::GetFontTexUvWhitePixel(), ImVec4()},
+            dl->_CmdHeader.ClipRect,
+            ImGui::GetFont(),
+            ImGui::GetFontSize(),
+            dl->_CmdHeader.TextureId,
+            atlas->TexWidth,
+            atlas->TexHeight};
+}
+
+// Paints by `draw`, or copies an earlier frame's painting found by `find`; a new painting is kept by `keep`.
+template <class Find, class Draw, class Keep> void paintKept(ImDrawList* dl, Find&& find, Draw&& draw, Keep&& keep) {
+    if (const KeptMesh* m = find()) {
+        drawMesh(dl, *m, false);
+        return;
+    }
+    const int vertices = dl->VtxBuffer.Size, indices = dl->IdxBuffer.Size, commands = dl->CmdBuffer.Size;
+    const unsigned base = dl->_VtxCurrentIdx;
+    draw();
+    if (std::optional<KeptMesh> m = painting(dl, vertices, indices, base, commands)) {
+        keep(std::move(*m));
+    }
+}
+
 } // namespace
+
+void paintWhole(ImDrawList* dl, const Figure& figure, PaintedLines& kept) {
+    const PaintedLines::FigureKey key = drawState(dl);
+    paintKept(
+        dl, [&] { return kept.find(figure, key); }, [&] { paint(dl, figure, &kept); },
+        [&](KeptMesh m) { kept.keep(figure, key, std::move(m)); });
+}
+
+void drawKept(ImDrawList* dl, std::string& description, PaintedLines& kept, const std::function<void()>& draw) {
+    const PaintedLines::FigureKey k = drawState(dl);
+    describe(description, k.lines.flags, k.lines.fillUv.x, k.lines.fillUv.y, k.clip.x, k.clip.y, k.clip.z, k.clip.w,
+             k.font, k.fontSize, k.texture, k.atlasW, k.atlasH);
+    paintKept(
+        dl, [&] { return kept.find(description); }, draw, [&](KeptMesh m) { kept.keep(description, std::move(m)); });
+}
 
 void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept) {
     for (const FigureShape& shape : figure.shapes) {
@@ -156,6 +197,23 @@ void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept) {
             paintText(dl, *t);
         }
     }
+}
+
+void drawKeptLines(ImDrawList* dl, std::string& description, const std::vector<std::vector<ImVec2>>& lines, float width,
+                   FigureColor color, PaintedLines& kept) {
+    describe(description, width, color.r, color.g, color.b);
+    drawKept(dl, description, kept, [&] {
+        Figure figure;
+        for (const std::vector<ImVec2>& line : lines) {
+            FigureLine l;
+            l.width = width;
+            l.color = color;
+            l.points.resize(line.size());
+            std::transform(line.begin(), line.end(), l.points.begin(), toVec2);
+            figure.shapes.push_back(std::move(l));
+        }
+        paint(dl, figure, &kept);
+    });
 }
 
 Pens pens() {
@@ -249,7 +307,24 @@ float Readout::height(const Pens& p, float width) const {
     return static_cast<float>(flowLines(widths, p.font * 0.5f, width)) * p.line;
 }
 
-void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const {
+void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width, PaintedLines* kept) const {
+    if (!kept) {
+        drawTokens(dl, p, at, width);
+        return;
+    }
+    // Everything the tokens' painting is made from.
+    std::string d;
+    describe(d, at.x, at.y, width, p.font, p.line, p.pad, p.bold);
+    for (const Token& t : tokens) {
+        const ImU32 color = ink(t.ink);
+        const std::size_t length = t.text.size();
+        describe(d, t.ink, color, t.swatch, t.width, length);
+        d += t.text;
+    }
+    drawKept(dl, d, *kept, [&] { drawTokens(dl, p, at, width); });
+}
+
+void Readout::drawTokens(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const {
     std::vector<FlowPlace> places = flowTokens(widths, p.font * 0.5f, width);
     for (std::size_t i = 0; i < tokens.size(); ++i) {
         const Token& t = tokens[i];
@@ -316,7 +391,8 @@ std::optional<Box> canvasBox(const Canvas& c, const PlotStyle& style, const std:
 //----------------------------------------------------------------------------------------
 
 Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout& r, const char* readoutMark,
-                 bool cramped, bool controls, float minCanvas, const std::function<float(float)>& maxCanvas) {
+                 bool cramped, bool controls, float minCanvas, const std::function<float(float)>& maxCanvas,
+                 PaintedLines* kept) {
     const ImVec2 top(origin.x + box.x, origin.y + box.y);
     const float controlsH = controls ? p.frame + p.gap : 0.0f;
     Block b;
@@ -361,7 +437,7 @@ Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout
     mark(readoutMark);
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(strip, ImVec2(strip.x + stripW, strip.y + std::max(stripH, 1.0f)), true);
-    r.draw(dl, p, strip, stripW);
+    r.draw(dl, p, strip, stripW, kept);
     dl->PopClipRect();
     ImGui::SetCursorScreenPos(b.canvas);
     return b;

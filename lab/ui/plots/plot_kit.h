@@ -37,6 +37,25 @@ ImU32 ink(Ink ink);
 // Sans, as the figures'). With `kept`, lines long or dashed are copied from an earlier frame's
 // painting where it has the same line (plot_cache.h's PaintedLines), and kept when new.
 void paint(ImDrawList* dl, const Figure& figure, PaintedLines* kept = nullptr);
+// paint(), or the figure copied whole from an earlier frame's painting of the same figure in the same
+// clip rectangle, font and atlas (plot_cache.h's PaintedLines): for what stays the same from frame to
+// frame (a grid, arrows, an axis' labels); what changes every frame (a curve during a drag) would pay
+// for keeping a painting never found again.
+void paintWhole(ImDrawList* dl, const Figure& figure, PaintedLines& kept);
+// Appends the bytes of each value to `out`: a description of what a drawing is made from, field by
+// field (no padding bytes), for drawKept.
+template <class... Values> void describe(std::string& out, const Values&... values) {
+    (out.append(reinterpret_cast<const char*>(&values), sizeof values), ...);
+}
+// draw(), or a copy of an earlier frame's drawing of the same `description` (what draw() draws from,
+// written by describe(); the clip rectangle, font and atlas are added here) kept in `kept`: for
+// drawings that are not a Figure (a readout, the 3D lobe's map marks). The description must name
+// everything the drawing depends on, or a copy would show what an earlier frame drew.
+void drawKept(ImDrawList* dl, std::string& description, PaintedLines& kept, const std::function<void()>& draw);
+// Solid polylines of one width and colour painted as a Figure's lines, kept by drawKept under
+// `description` (where the points come from: what makes them the same), the width and the colour.
+void drawKeptLines(ImDrawList* dl, std::string& description, const std::vector<std::vector<ImVec2>>& lines, float width,
+                   FigureColor color, PaintedLines& kept);
 
 // A plot on screen: a Figure drawn in the screen style, painted by paint(). Not copyable (the
 // canvas refers to the figure and the style).
@@ -48,6 +67,7 @@ struct ScreenPlot {
     ScreenPlot(const ScreenPlot&) = delete;
     ScreenPlot& operator=(const ScreenPlot&) = delete;
     void paint(ImDrawList* dl, PaintedLines* kept = nullptr) const { plotkit::paint(dl, figure, kept); }
+    void paintWhole(ImDrawList* dl, PaintedLines& kept) const { plotkit::paintWhole(dl, figure, kept); }
 };
 
 // Sizes of this frame's widgets, all from the font size so that they grow with presenter mode.
@@ -94,7 +114,12 @@ struct Readout {
     void lineBreak() { tokens.push_back({}); }
     void measure(const Pens& p);
     float height(const Pens& p, float width) const;
-    void draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const;
+    // With `kept`, copied from an earlier frame's painting of the same tokens at the same place
+    // (plot_cache.h's PaintedLines) where there is one.
+    void draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width, PaintedLines* kept = nullptr) const;
+
+private:
+    void drawTokens(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const;
 };
 
 // What the outer circle stands for, in words (in tokens that can wrap), with a warning when a
@@ -129,7 +154,8 @@ struct Block {
 // The block's readout drawn into its strip (registered as `readoutMark`), the cursor at the canvas.
 // `box` in the area at `origin`; `cramped`: a low band; `controls`: a row of controls below.
 Block placeBlock(const PlotBox& box, ImVec2 origin, const Pens& p, const Readout& r, const char* readoutMark,
-                 bool cramped, bool controls, float minCanvas, const std::function<float(float)>& maxCanvas);
+                 bool cramped, bool controls, float minCanvas, const std::function<float(float)>& maxCanvas,
+                 PaintedLines* kept = nullptr);
 
 // A Cartesian plot's box in a canvas: room for the values left of the y axis (`yLabel` the widest)
 // and under the x axis, half of the last x value (`xLabel`) right of the box. Nullopt when too small.

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -181,6 +182,19 @@ void mapMesh(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
     }
 }
 
+// The surface plane's rings at the radial scale's values, as the camera sees them.
+void planeRings(const Lobe3dKey& key, Lobe3dMesh& m) {
+    const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
+    const float pi = glm::pi<float>();
+    for (const RadialRing& ring : radialRings(key.outer, key.scale)) {
+        std::vector<ImVec2>& circle = m.rings.emplace_back();
+        for (int k = 0; k <= 72; ++k) {
+            const float t = 2.0f * pi * static_cast<float>(k) / 72.0f;
+            circle.push_back(cam.at(ring.radius * glm::vec3(std::cos(t), 0.0f, std::sin(t))));
+        }
+    }
+}
+
 // B as rings every 15° of θo and meridians every 24° of φ (both grids' steps divide them).
 void wireframe(const HemisphereGrid& grid, const Lobe3dKey& key, Lobe3dMesh& m) {
     static_assert(15 % kLobeGrid.thetaDeg == 0 && 15 % kLobeCoarseGrid.thetaDeg == 0 && 24 % kLobeGrid.phiDeg == 0 &&
@@ -237,45 +251,30 @@ void arrow3d(ScreenPlot& plot, const Camera& cam, const glm::vec3& dir, float le
     plot.canvas.arrow(toVec2(cam.at(glm::vec3(0.0f))), toVec2(cam.at(dir * length)), ink, width, label);
 }
 
+// Thin solid lines made with the mesh (`which`: its rings, B's wireframe), kept as painted by the
+// mesh's serial: an unchanged frame copies them.
+void meshLines(ImDrawList* dl, const Lobe3dMesh& mesh, int which, const std::vector<std::vector<ImVec2>>& lines,
+               float width, Ink ink, PaintedLines& kept) {
+    const FigureColor color = colorOf(currentColors().plot, ink);
+    std::string d;
+    describe(d, mesh.serial, which);
+    drawKeptLines(dl, d, lines, width, color, kept);
+}
+
 void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& key, const Lobe3dMesh& mesh,
                 PlotSettings& s) {
     ImDrawList* dl = c.dl;
     const Camera cam(key.yawDeg, key.pitchDeg, key.lobeRect);
-    const float pi = glm::pi<float>();
     // The surface plane: rings at the radial scale's values, spokes every 30°, behind the lobe
-    // (the camera stays above the plane). The rings and B's wireframe are solid lines painted as the
-    // figures' are, so that an unchanged frame copies them (PlotCache::painted()).
-    Figure rings;
-    const FigureColor grid = colorOf(currentColors().plot, Ink::Grid);
-    for (const RadialRing& ring : radialRings(v.outer, key.scale)) {
-        FigureLine circle;
-        circle.width = p.thin;
-        circle.color = grid;
-        for (int k = 0; k <= 72; ++k) {
-            const float t = 2.0f * pi * static_cast<float>(k) / 72.0f;
-            circle.points.push_back(toVec2(cam.at(ring.radius * glm::vec3(std::cos(t), 0.0f, std::sin(t)))));
-        }
-        rings.shapes.push_back(std::move(circle));
-    }
-    paint(dl, rings, &s.cache.painted());
+    // (the camera stays above the plane). The rings and B's wireframe are kept with the mesh.
+    meshLines(dl, mesh, 0, mesh.rings, p.thin, Ink::Grid, s.cache.painted());
     for (int deg = 0; deg < 360; deg += 30) {
         const float t = glm::radians(static_cast<float>(deg));
         dl->AddLine(cam.at(glm::vec3(0.0f)), cam.at(glm::vec3(std::cos(t), 0.0f, std::sin(t))),
                     deg % 180 == 0 ? ink(Ink::Axis) : ink(Ink::Grid), p.thin);
     }
     drawMesh(dl, mesh.surface);
-    Figure wires;
-    const FigureColor compare = colorOf(currentColors().plot, Ink::Compare);
-    for (const std::vector<ImVec2>& line : mesh.wireframe) {
-        FigureLine wire;
-        wire.width = p.thin;
-        wire.color = compare;
-        for (const ImVec2& q : line) {
-            wire.points.push_back(toVec2(q));
-        }
-        wires.shapes.push_back(std::move(wire));
-    }
-    paint(dl, wires, &s.cache.painted());
+    meshLines(dl, mesh, 1, mesh.wireframe, p.thin, Ink::Compare, s.cache.painted());
     // The vectors: N, L, R, and V (the plane plot's reading direction) with its H.
     const glm::vec3& V = v.viewer;
     ScreenPlot vectors;
@@ -285,7 +284,7 @@ void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& 
     arrow3d(vectors, cam, v.vectors.R, 1.1f, Ink::Mirror, "R", style.stroke());
     arrow3d(vectors, cam, V, 0.9f, Ink::Viewer, "V", style.thin() * 1.5f);
     arrow3d(vectors, cam, glsl::halfVector(v.vectors.L, V), 0.7f, Ink::Half, "H", style.stroke());
-    vectors.paint(dl);
+    vectors.paintWhole(dl, s.cache.painted());
     if (v.peak.value > 0.0f && v.largest > kNothingLit) {
         const ImVec2 q = cam.at(plotRadius(v.peak.value, v.outer, key.scale) * v.peak.V);
         dl->AddCircle(q, 4.5f * p.s, ink(Ink::Text), 0, p.stroke);
@@ -299,14 +298,12 @@ void lobeCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& 
     }
 }
 
-// The map's grid, marks and legend over its mesh.
-void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& key, const Lobe3dMesh& mesh,
-               float legendW) {
+// The map's grid, marks and legend.
+void mapMarks(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& key, float legendW) {
     ImDrawList* dl = c.dl;
     const ImVec4& r = key.mapRect;
     const ImVec2 centre(r.x + r.z * 0.5f, r.y + r.w * 0.5f);
     const float radius = std::min(r.z, r.w) * 0.5f;
-    drawMesh(dl, mesh.map);
     for (int deg = 30; deg <= 90; deg += 30) {
         dl->AddCircle(centre, radius * static_cast<float>(deg) / 90.0f, deg == 90 ? ink(Ink::Axis) : ink(Ink::Grid), 64, p.thin);
     }
@@ -371,6 +368,20 @@ void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& k
         dl->AddLine(ImVec2(x + barW, y), ImVec2(x + barW + p.pad * 0.5f, y), ink(Ink::Axis), p.thin);
         dl->AddText(ImVec2(x + barW + p.pad, y - p.line * 0.5f), ink(Ink::Text), text.c_str());
     }
+}
+
+// The map's mesh, and its marks over it: kept as painted, found by everything mapMarks draws them from.
+void mapCanvas(const Canvas& c, const Pens& p, const View& v, const Lobe3dKey& key, const Lobe3dMesh& mesh,
+               float legendW, PaintedLines& kept) {
+    drawMesh(c.dl, mesh.map);
+    std::string d;
+    describe(d, c.corner.x, c.corner.y, c.width, c.height, legendW, key.mapRect.x, key.mapRect.y, key.mapRect.z,
+             key.mapRect.w, key.scale, p.s, p.font, p.line, p.pad, p.thin, p.stroke);
+    for (Ink i : {Ink::Axis, Ink::Grid, Ink::Text, Ink::Mirror, Ink::Light, Ink::Viewer}) {
+        describe(d, ink(i));
+    }
+    describe(d, v.vectors.R, v.vectors.L, v.atPoint, v.viewer, v.peak.value, v.peak.V, v.largest, v.outer);
+    drawKept(c.dl, d, kept, [&] { mapMarks(c, p, v, key, legendW); });
 }
 
 // The options row: the component and the radial scale (shared with the plane plots).
@@ -524,7 +535,7 @@ void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& s, const ProbeL
     ImGui::PushClipRect(origin, ImVec2(origin.x + room.x, origin.y + std::max(room.y, 1.0f)), true);
     dl->PushClipRect(origin, ImVec2(origin.x + room.x, origin.y + std::max(stripH, 1.0f)), true);
     if (stripH > 0.0f) {
-        v.readout.draw(dl, p, origin, room.x);
+        v.readout.draw(dl, p, origin, room.x, &s.cache.painted());
         ImGui::Dummy(ImVec2(std::max(room.x, 1.0f), stripH));
         mark("plot.lobe3d.readout");
     }
@@ -551,9 +562,12 @@ void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& s, const ProbeL
     const bool lobeShown = key.lobeRect.z >= 1.5f * p.font && key.lobeRect.w >= 1.5f * p.font;
     const bool mapShown = mapSide >= 2.5f * p.font;
     const std::shared_ptr<const Lobe3dMesh> mesh = s.lobe3d.meshes.get(key, [&] {
+        static std::atomic<std::uint64_t> made{0};
         Lobe3dMesh m;
+        m.serial = ++made;
         if (lobeShown) {
             surfaceMesh(*v.gridA, key, m);
+            planeRings(key, m);
             if (v.gridB) {
                 wireframe(*v.gridB, key, m);
             }
@@ -578,7 +592,7 @@ void lobe3dPanel(const Preset& a, const Preset* b, PlotSettings& s, const ProbeL
         }
     };
     canvasIn(lobeBox, "lobe3d", "plot.lobe3d", lobeShown, [&](const Canvas& c) { lobeCanvas(c, p, v, key, *mesh, s); });
-    canvasIn(mapBox, "lobe3d.map", "plot.lobe3d.map", mapShown, [&](const Canvas& c) { mapCanvas(c, p, v, key, *mesh, legendW); });
+    canvasIn(mapBox, "lobe3d.map", "plot.lobe3d.map", mapShown, [&](const Canvas& c) { mapCanvas(c, p, v, key, *mesh, legendW, s.cache.painted()); });
     ImGui::PopClipRect();
 }
 

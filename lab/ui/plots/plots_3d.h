@@ -29,6 +29,7 @@
 
 #include <imgui.h>
 
+#include <cstdint>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -42,7 +43,9 @@ struct PlotSettings;
 struct Lobe3dMesh {
     KeptMesh surface; // its triangles far to near
     KeptMesh map;
+    std::vector<std::vector<ImVec2>> rings;     // the surface plane's
     std::vector<std::vector<ImVec2>> wireframe; // B
+    std::uint64_t serial = 0; // which mesh this is, never another's (B's wireframe is kept as painted by it)
 };
 
 struct Lobe3dKey {

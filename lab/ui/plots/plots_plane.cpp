@@ -203,8 +203,10 @@ Attenuation attenuationData(const Preset& a, PlotSettings& s, const Pens& p, con
 // The lobe plot
 //----------------------------------------------------------------------------------------
 
-// The lobe's curves, where `at` puts them: A's diffuse, specular and total, and B's total.
-void lobeCurves(ScreenPlot& plot, const Lobes& lobes, PlotSettings& s, const CurvePlacement& at) {
+// The lobe's curves, where `at` puts them: A's diffuse, specular and total, and B's total; painted
+// on their own, so that the rest of the plot (painted whole) stays the same while they follow a drag.
+void lobeCurves(ImDrawList* dl, const Lobes& lobes, PlotSettings& s, const CurvePlacement& at) {
+    ScreenPlot plot;
     const PlotStyle& style = plot.style;
     auto curve = [&](const LobeInputs& in, PlotComponent component, Ink ink, float width) {
         plot.canvas.line(*s.cache.lobe(in, component, lobes.outer, s.scale, at), width, ink);
@@ -215,6 +217,7 @@ void lobeCurves(ScreenPlot& plot, const Lobes& lobes, PlotSettings& s, const Cur
     if (lobes.b) {
         curve(lobes.inB, PlotComponent::Total, Ink::Compare, style.stroke());
     }
+    plot.paint(dl, &s.cache.painted());
 }
 
 // x: θo from -90 to 90; y: intensity (radius function), 0 at the bottom.
@@ -247,8 +250,8 @@ void cartesianLobes(const Canvas& c, const Lobes& lobes, PlotSettings& s) {
     }
     plot.canvas.line({at(lobes.incident, 0), at(lobes.incident, 1)}, style.thin(), Ink::Mirror); // the mirror angle
     plot.canvas.line({at(lobes.viewer, 0), at(lobes.viewer, 1)}, style.thin(), Ink::Viewer);
-    lobeCurves(plot, lobes, s, placementOf(b));
-    plot.paint(c.dl, &s.cache.painted());
+    plot.paintWhole(c.dl, s.cache.painted());
+    lobeCurves(c.dl, lobes, s, placementOf(b));
 }
 
 // The probe's vectors in its own plane of incidence: N up, L to the left.
@@ -289,8 +292,8 @@ void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s,
     ScreenPlot plot;
     const PlotStyle& style = plot.style;
     const Polar f = polarFrame(c.origin(), c.width, c.height, style, false);
-    paint(c.dl, *s.cache.polarGrid(f, lobes.outer, s.scale, style), &s.cache.painted()); // under the plot's shapes
-    lobeCurves(plot, lobes, s, placementOf(f));
+    paintWhole(c.dl, *s.cache.polarGrid(f, lobes.outer, s.scale, style), s.cache.painted()); // under the plot's shapes
+    lobeCurves(c.dl, lobes, s, placementOf(f));
     glm::vec2 L = dirFromDeg(lobes.incident, -1.0f), R = dirFromDeg(lobes.incident, 1.0f), V = dirFromDeg(lobes.viewer, 1.0f);
     auto arrow = [&](glm::vec2 dir, float length, Ink ink, const char* label, float width) {
         plot.canvas.arrow(f.at({0, 0}), f.at(dir * length), ink, width, label);
@@ -307,7 +310,7 @@ void polarLobes(const Canvas& c, const Lobes& lobes, Preset& a, PlotSettings& s,
     if (probe && !probe->lights.empty() && !lobes.point) { // at the point, L and V are the probe's
         probeArrows(plot, f, *probe, a.brdf);
     }
-    plot.paint(c.dl, &s.cache.painted());
+    plot.paintWhole(c.dl, s.cache.painted());
     if (!lobes.point) {
         dragArrows(f, L, V, a, s);
     }
@@ -329,7 +332,7 @@ void lobePlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, co
     const Block block = placeBlock(box, origin, p, lobes.readout, "plot.lobe.readout", cramped, true,
                                    lobeNeeds(lobes, s, p, box.w).minCanvas, [&](float w) {
         return s.cartesian ? w * 0.55f : polarMaxHeight(screenStyle(), w, false);
-    });
+    }, &s.cache.painted());
     const Canvas canvas = beginCanvas("lobe", "plot.lobe", block.canvasW, block.canvasH);
     if (canvas.shown()) {
         if (s.cartesian) {
@@ -381,12 +384,13 @@ ImVec4 shade(Ink ink, float k) {
 
 void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Overlay& o, PlotSettings& s) {
     const Block block = placeBlock(box, origin, p, o.readout, "plot.overlay.readout", cramped, true,
-                                   overlayNeeds(o, p, box.w).minCanvas, [&](float w) { return polarMaxHeight(screenStyle(), w, false); });
+                                   overlayNeeds(o, p, box.w).minCanvas, [&](float w) { return polarMaxHeight(screenStyle(), w, false); },
+                                   &s.cache.painted());
     const Canvas canvas = beginCanvas("overlay", "plot.overlay", block.canvasW, block.canvasH);
     if (canvas.shown()) {
         ScreenPlot plot;
         const Polar f = polarFrame(canvas.origin(), canvas.width, canvas.height, plot.style, false);
-        paint(canvas.dl, *s.cache.polarGrid(f, o.outer, s.scale, plot.style), &s.cache.painted());
+        paintWhole(canvas.dl, *s.cache.polarGrid(f, o.outer, s.scale, plot.style), s.cache.painted());
         for (std::size_t i = 0; i < 3; ++i) {
             const PlotCache::Points curve = s.cache.lobe(o.inputs[i], PlotComponent::Total, o.outer, s.scale, placementOf(f), o.coarse);
             plot.canvas.line(*curve, plot.style.stroke(), overlayInk(i));
@@ -396,7 +400,7 @@ void overlayPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped,
             // The fields name them.
             plot.canvas.arrow(f.at({0, 0}), f.at(dirFromDeg(deg, -1.0f) * 0.9f), overlayInk(i), plot.style.stroke(), "");
         }
-        plot.paint(canvas.dl, &s.cache.painted());
+        plot.paintWhole(canvas.dl, s.cache.painted()); // the curves lag during a drag of the material
     }
     // The three angles, each field in its curve's colour.
     if (!block.controlsFit) {
@@ -468,13 +472,14 @@ void attenuationCanvas(const Canvas& c, const Attenuation& t, PlotCache& cache) 
         plot.canvas.line({at(t.distance, 0), m}, style.thin(), Ink::Specular);
         plot.canvas.disc(m, 5.0f * style.scale, Ink::Specular);
     }
-    plot.paint(c.dl, &cache.painted());
+    plot.paintWhole(c.dl, cache.painted());
 }
 
 void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cramped, const Attenuation& t,
                      const Preset& a, PlotSettings& s) {
     const Block block = placeBlock(box, origin, p, t.readout, "plot.attenuation.readout", cramped, lightChooser(a, t),
-                                   attenuationNeeds(t, a, p, box.w).minCanvas, [&](float w) { return t.light ? w * 0.42f : 0.0f; });
+                                   attenuationNeeds(t, a, p, box.w).minCanvas, [&](float w) { return t.light ? w * 0.42f : 0.0f; },
+                                   &s.cache.painted());
     if (t.light) {
         const Canvas canvas = beginCanvas("attenuation", "plot.attenuation", block.canvasW, block.canvasH);
         if (canvas.shown()) {
@@ -496,14 +501,7 @@ void attenuationPlot(const PlotBox& box, ImVec2 origin, const Pens& p, bool cram
 // The options row
 //----------------------------------------------------------------------------------------
 
-// Keeps the next item on this line when it fits the window, else starts a new line.
-void sameLineIfFits(float nextWidth) {
-    float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-    if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + nextWidth <= right) {
-        ImGui::SameLine();
-    }
-}
-
+// A checkbox's or radio button's width, for ui/widgets.h's sameLineIfFits.
 float checkWidth(const char* label) {
     return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
 }
