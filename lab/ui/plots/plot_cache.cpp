@@ -61,6 +61,20 @@ bool sameFigureKey(const PaintedLines::FigureKey& k, const PaintedLines::FigureK
            k.atlasW == key.atlasW && k.atlasH == key.atlasH;
 }
 
+// `fresh` into `entries`, in place of the least recently used one when `capacity` are kept.
+template <typename Entry>
+void keepRecent(std::vector<Entry>& entries, Entry fresh, std::size_t capacity) {
+    if (entries.size() < capacity) {
+        entries.push_back(std::move(fresh));
+        return;
+    }
+    Entry* oldest = &entries.front();
+    for (Entry& e : entries) {
+        oldest = e.used < oldest->used ? &e : oldest;
+    }
+    *oldest = std::move(fresh);
+}
+
 } // namespace
 
 const KeptMesh* PaintedLines::find(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key) {
@@ -75,15 +89,7 @@ const KeptMesh* PaintedLines::find(const std::vector<glm::vec2>& points, const s
 
 void PaintedLines::keep(const std::vector<glm::vec2>& points, const std::vector<float>& dash, const Key& key, KeptMesh mesh) {
     Entry fresh{points, dash, key, std::move(mesh), ++clock_};
-    if (entries_.size() < kCapacity) {
-        entries_.push_back(std::move(fresh));
-        return;
-    }
-    Entry* oldest = &entries_.front();
-    for (Entry& e : entries_) {
-        oldest = e.used < oldest->used ? &e : oldest;
-    }
-    *oldest = std::move(fresh);
+    keepRecent(entries_, std::move(fresh), kCapacity);
 }
 
 const KeptMesh* PaintedLines::find(const Figure& figure, const FigureKey& key) {
@@ -106,15 +112,7 @@ const KeptMesh* PaintedLines::find(const Figure& figure, const FigureKey& key) {
 void PaintedLines::keep(const Figure& figure, const FigureKey& key, KeptMesh mesh) {
     FigureEntry fresh{figure, key, std::move(mesh), ++clock_};
     fresh.figure.title.clear(); // not painted
-    if (figures_.size() < kFigures) {
-        figures_.push_back(std::move(fresh));
-        return;
-    }
-    FigureEntry* oldest = &figures_.front();
-    for (FigureEntry& e : figures_) {
-        oldest = e.used < oldest->used ? &e : oldest;
-    }
-    *oldest = std::move(fresh);
+    keepRecent(figures_, std::move(fresh), kFigures);
 }
 
 const KeptMesh* PaintedLines::find(const std::string& description) {
@@ -129,15 +127,7 @@ const KeptMesh* PaintedLines::find(const std::string& description) {
 
 void PaintedLines::keep(const std::string& description, KeptMesh mesh) {
     DescribedEntry fresh{description, std::move(mesh), ++clock_};
-    if (described_.size() < kDescribed) {
-        described_.push_back(std::move(fresh));
-        return;
-    }
-    DescribedEntry* oldest = &described_.front();
-    for (DescribedEntry& e : described_) {
-        oldest = e.used < oldest->used ? &e : oldest;
-    }
-    *oldest = std::move(fresh);
+    keepRecent(described_, std::move(fresh), kDescribed);
 }
 
 bool operator==(const CurvePlacement& x, const CurvePlacement& y) {
