@@ -52,8 +52,23 @@ endfunction()
 # Dear ImGui 1.86 from Debian's source package.
 lab_fetch_source(LAB_IMGUI_SOURCE_DIR imgui libimgui-dev imgui.cpp)
 set(imgui "${LAB_IMGUI_SOURCE_DIR}")
+# Its imgui_draw.cpp with one line changed: ImFontAtlas::Build adds ImGui's built-in font
+# (ProggyClean, 10.8 KB of gzip) when no font was added — a test at run time, so the font stays in
+# lab.wasm although the page always adds its own (lab/platform/web_window.cpp checks it is in
+# lab.data before the lab starts, and ImGuiHost has no fallback there). The line becomes an
+# assertion; the configure stops if ImGui's text is not what is replaced.
+file(READ "${imgui}/imgui_draw.cpp" imgui_draw)
+set(imgui_default_font "    if (ConfigData.Size == 0)\n        AddFontDefault();\n")
+string(FIND "${imgui_draw}" "${imgui_default_font}" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "${imgui}/imgui_draw.cpp: ImFontAtlas::Build's AddFontDefault() call is not as cmake/web.cmake expects")
+endif()
+string(REPLACE "${imgui_default_font}" "    IM_ASSERT(ConfigData.Size > 0 && \"the page adds its own font\");\n" imgui_draw "${imgui_draw}")
+file(WRITE "${CMAKE_BINARY_DIR}/imgui/imgui_draw.cpp.new" "${imgui_draw}")
+configure_file("${CMAKE_BINARY_DIR}/imgui/imgui_draw.cpp.new" "${CMAKE_BINARY_DIR}/imgui/imgui_draw.cpp" COPYONLY)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${imgui}/imgui_draw.cpp")
 add_library(lab_imgui STATIC
-  "${imgui}/imgui.cpp" "${imgui}/imgui_draw.cpp" "${imgui}/imgui_tables.cpp" "${imgui}/imgui_widgets.cpp"
+  "${imgui}/imgui.cpp" "${CMAKE_BINARY_DIR}/imgui/imgui_draw.cpp" "${imgui}/imgui_tables.cpp" "${imgui}/imgui_widgets.cpp"
   "${imgui}/misc/cpp/imgui_stdlib.cpp"
   "${imgui}/backends/imgui_impl_glfw.cpp" "${imgui}/backends/imgui_impl_opengl3.cpp")
 target_include_directories(lab_imgui SYSTEM PUBLIC "${imgui}" "${imgui}/misc/cpp")
@@ -218,12 +233,14 @@ function(lab_configure_web_target target)
     # enabled or renamed behind the lab's back (it uses none). Main-thread script time a frame
     # while dragging a slider, median of 4 runs each way: 0.95 ms before, 0.97 ms after.
     -sMALLOC=emmalloc -sGL_EXTENSIONS_IN_PREFIXED_FORMAT=0 -sGL_SUPPORT_AUTOMATIC_ENABLE_EXTENSIONS=0
-    "-sEXPORTED_FUNCTIONS=[_main,_lab_open_file,_lab_open_link,_lab_widgets,_lab_frames,_lab_settled,_lab_touch,_lab_text,_lab_backspace,_lab_page_field,_lab_page_command,_lab_page_focus,_lab_draco_loaded,_malloc,_free]"
+    "-sEXPORTED_FUNCTIONS=[_main,_lab_open_file,_lab_open_link,_lab_widgets,_lab_frames,_lab_settled,_lab_touch,_lab_text,_lab_backspace,_lab_page_field,_lab_page_command,_lab_page_focus,_lab_draco_loaded,_lab_site_file_fetched,_malloc,_free]"
     "-sEXPORTED_RUNTIME_METHODS=[ccall,FS]"
     # lab.js reads only the Module properties index.html sets (and the file packager's preRun), and
     # decodes text with the TextDecoder every WebGL2 browser has: 0.4 KB less gzip (issue 40).
     "-sINCOMING_MODULE_JS_API=[canvas,print,printErr,onAbort,preRun]" -sTEXTDECODER=2
-    "--preload-file=${CMAKE_SOURCE_DIR}/presets@/presets"
+    # The bundled models stay out of lab.data: the site's models/ folder, fetched the first time a
+    # preset names one (lab/core/io/site_files.h; the trefoil is 16.4 KB of gzip).
+    "--preload-file=${CMAKE_SOURCE_DIR}/presets@/presets" --exclude-file "${CMAKE_SOURCE_DIR}/presets/models"
     "--preload-file=${font}@/fonts/DejaVuSans-ui.ttf")
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS "${font}")
   file(GLOB_RECURSE bundled CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/presets/*")
@@ -235,5 +252,7 @@ function(lab_configure_web_target target)
                                                              "${CMAKE_SOURCE_DIR}/tools/minify_page.py"
                                                              "${CMAKE_SOURCE_DIR}/web/access.js")
   add_custom_command(TARGET ${target} POST_BUILD
-    COMMAND Python3::Interpreter "${CMAKE_SOURCE_DIR}/tools/minify_page.py" "${CMAKE_SOURCE_DIR}/web/index.html" "${site}/index.html")
+    COMMAND Python3::Interpreter "${CMAKE_SOURCE_DIR}/tools/minify_page.py" "${CMAKE_SOURCE_DIR}/web/index.html" "${site}/index.html"
+    COMMAND "${CMAKE_COMMAND}" -E rm -rf "${site}/models"
+    COMMAND "${CMAKE_COMMAND}" -E copy_directory "${CMAKE_SOURCE_DIR}/presets/models" "${site}/models")
 endfunction()

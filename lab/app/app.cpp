@@ -199,6 +199,7 @@ ui::ScreenModel App::Impl::screenModel() {
 
 // What the platform and the UI asked for this frame, in order, then one undo step if a gesture ended.
 void App::Impl::carryOut(const FrameInput& in, const ui::ScreenEvents& events) {
+    workspace.resumeWaiting(); // an open that waited for a file of the page's site
     for (const std::string& note : in.notes) {
         workspace.note(note);
     }

@@ -228,6 +228,7 @@ void Workspace::adopt(Preset preset, fs::path file, fs::path folder) {
 
 // Loads and checks everything first; the scene changes only when all of it worked.
 void Workspace::open(const fs::path& file) {
+    waiting_.reset();
     Diagnostics d;
     std::string error;
     if (std::optional<std::string> text = readFile(file, kMaxExerciseBytes, error); text && isExerciseText(*text)) {
@@ -236,8 +237,13 @@ void Workspace::open(const fs::path& file) {
             problem("Cannot open " + file.filename().string() + " (nothing was changed)", std::move(d));
             return;
         }
+        const std::string title = "Cannot load the model of " + file.filename().string() + " (nothing was changed)";
+        if (waitsFor(exercise->exercise.start.model, exercise->folder(), title, [this, file] { open(file); }) ||
+            waitsFor(exercise->exercise.target.model, exercise->folder(), title, [this, file] { open(file); })) {
+            return;
+        }
         if (!meshes_.get(exercise->exercise.start.model, exercise->folder(), d)) {
-            problem("Cannot load the model of " + file.filename().string() + " (nothing was changed)", std::move(d));
+            problem(title, std::move(d));
             return;
         }
         std::optional<std::string> bundled;
@@ -253,8 +259,12 @@ void Workspace::open(const fs::path& file) {
         problem("Cannot open " + file.filename().string() + " (nothing was changed)", std::move(d));
         return;
     }
+    const std::string title = "Cannot load the model of " + file.filename().string() + " (nothing was changed)";
+    if (waitsFor(loaded->preset.model, loaded->folder(), title, [this, file] { open(file); })) {
+        return;
+    }
     if (!meshes_.get(*loaded, d)) { // (a glTF model without a camera in the file is framed here)
-        problem("Cannot load the model of " + file.filename().string() + " (nothing was changed)", std::move(d));
+        problem(title, std::move(d));
         return;
     }
     whenChangesAreSafe("open " + file.filename().string(), [this, loaded = std::move(*loaded)]() {
@@ -343,60 +353,6 @@ void Workspace::download() {
     notes_.push_back("Downloaded " + downloads_.back().name);
 }
 
-void Workspace::useModel(const fs::path& path) {
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) {
-        problem("Cannot load the model", path.string() + ": no such file");
-        return;
-    }
-    // What the lights were placed for (before the folder may change): the built-ins fit the unit sphere.
-    auto boundsOf = [this](Side side, const Preset& p) {
-        std::shared_ptr<const Mesh> m = this->mesh(side);
-        return (m ? drawnBounds(*m, p.model) : std::nullopt).value_or(Sphere{});
-    };
-    Sphere oldBounds = boundsOf(Side::A, doc_.preset), oldBoundsB = boundsOf(Side::B, doc_.compare);
-    if (doc_.file().empty() && !doc_.dirty()) {
-        doc_.setFolder(canonicalFolder(path.parent_path())); // an untitled scene adopts the model's folder
-    }
-    std::optional<fs::path> relative = relativeInside(doc_.folder(), path);
-    if (!relative) {
-        problem("Cannot use " + path.filename().string(),
-                "the model is outside this preset's folder " + canonicalFolder(doc_.folder()).string() +
-                    ". Save the preset next to the model first (Save as), or copy the model into that folder.");
-        return;
-    }
-    Model candidate = doc_.preset.model;
-    candidate.gltf = relative->generic_string();
-    Diagnostics d;
-    std::vector<std::string> notes;
-    if (!meshes_.get(candidate, doc_.folder(), d, &notes)) {
-        problem("Cannot load " + path.filename().string() + " (nothing was changed)", std::move(d));
-        return;
-    }
-    // The model, the camera and the lights change in one frame: one undo step.
-    doc_.preset.model = candidate;
-    std::shared_ptr<const Mesh> mesh = this->mesh(Side::A);
-    if (auto drawn = mesh ? drawnPositions(*mesh, doc_.preset.model) : std::nullopt) {
-        doc_.preset.camera = framedCamera(Camera{}, *drawn, threeQuarterDirection());
-    }
-    if (std::optional<Sphere> bounds = mesh ? drawnBounds(*mesh, doc_.preset.model) : std::nullopt) {
-        carryLights(doc_.preset.lights, oldBounds, *bounds);
-        if (view.compare) { // B compares settings on the same model: it takes the model, its lights move alike
-            doc_.compare.model = doc_.preset.model;
-            carryLights(doc_.compare.lights, oldBoundsB, *bounds);
-        }
-    }
-    notes_.push_back(notes.empty() ? "Model " + candidate.gltf : notes.front());
-}
-
-// A's camera moved to show all of A's model, looking the way it looks now (B follows A's camera).
-void Workspace::frameModel() {
-    std::shared_ptr<const Mesh> mesh = this->mesh(Side::A);
-    if (auto drawn = mesh ? drawnPositions(*mesh, doc_.preset.model) : std::nullopt) {
-        doc_.preset.camera = framedCamera(doc_.preset.camera, *drawn);
-    }
-}
-
 void Workspace::drop(const std::vector<std::string>& files) {
     for (const std::string& f : files) {
         if (hasExtension(f, {".json"})) {
@@ -474,6 +430,7 @@ void Workspace::saveFiles(const std::vector<Download>& files, const std::string&
 //----------------------------------------------------------------------------------------
 
 void Workspace::openLink(const std::string& fragment, bool saved) {
+    waiting_.reset();
     Diagnostics d;
     OmittedKeys omitted;
     auto parsed = parseLink(fragment, bundledFolder(), d, &omitted, saved ? kMaxSavedLinkChars : kMaxLinkChars);
@@ -491,7 +448,12 @@ void Workspace::openLink(const std::string& fragment, bool saved) {
         open(file);
         return;
     }
+    auto again = [this, fragment, saved] { openLink(fragment, saved); };
     if (auto* exercise = std::get_if<Exercise>(&*parsed)) {
+        const char* title = "Cannot load the linked exercise's model (nothing was changed)";
+        if (waitsFor(exercise->start.model, bundledFolder(), title, again) || waitsFor(exercise->target.model, bundledFolder(), title, again)) {
+            return;
+        }
         if (!meshes_.get(exercise->start.model, bundledFolder(), d)) {
             problem("Cannot load the linked exercise's model (nothing was changed)", std::move(d));
             return;
@@ -510,6 +472,9 @@ void Workspace::openLink(const std::string& fragment, bool saved) {
         return;
     }
     LoadedPreset linked{std::get<Preset>(*parsed), {}, omitted};
+    if (waitsFor(linked.preset.model, bundledFolder(), "Cannot load the linked preset's model (nothing was changed)", again)) {
+        return;
+    }
     std::shared_ptr<const Mesh> mesh = meshes_.get(linked.preset.model, bundledFolder(), d);
     if (!mesh) {
         problem("Cannot load the linked preset's model (nothing was changed)", std::move(d));
@@ -548,39 +513,6 @@ bool Workspace::linkShareable() {
                                             "its description or the exercise's text, or download the file and share that.");
     }
     return length <= kMaxLinkChars;
-}
-
-//----------------------------------------------------------------------------------------
-// Meshes
-//----------------------------------------------------------------------------------------
-
-// The mesh of `model`; looked up only when the model or the folder changed since `resolved`.
-// A model that cannot load goes back to the last one that did, with a problem.
-std::shared_ptr<const Mesh> Workspace::resolve(Model& model, Resolved& resolved, const char* which) {
-    fs::path folder = doc_.folder();
-    if (resolved.mesh && model == resolved.model && folder == resolved.folder) {
-        return resolved.mesh; // the common frame: nothing to look up
-    }
-    Diagnostics d;
-    std::vector<std::string> notes;
-    if (std::shared_ptr<const Mesh> mesh = meshes_.get(model, folder, d, &notes)) {
-        notes_.insert(notes_.end(), notes.begin(), notes.end());
-        resolved = {model, folder, std::move(mesh)};
-        return resolved.mesh;
-    }
-    problem(std::string("Cannot load ") + which, std::move(d));
-    if (resolved.mesh) {
-        model = resolved.model;
-        return resolved.mesh;
-    }
-    Diagnostics ignored; // nothing loaded yet: fall back to the default built-in
-    model = Model{};
-    resolved = {model, folder, meshes_.get(model, folder, ignored)};
-    return resolved.mesh;
-}
-
-std::shared_ptr<const Mesh> Workspace::mesh(Side side) {
-    return resolve(preset(side).model, resolved_[indexOf(side)], side == Side::A ? "the model" : "B's model");
 }
 
 } // namespace lab

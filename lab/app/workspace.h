@@ -116,6 +116,11 @@ public:
     void frameModel();
     void drop(const std::vector<std::string>& files);
     void requestQuit();
+    // An open that waits for a file of the page's site (core/io/site_files.h: a bundled model, fetched
+    // the first time a preset names it) is carried out once the file is here, or reports why it could
+    // not be fetched; the app asks every frame. A newer open, link or model replaces the one waiting.
+    void resumeWaiting();
+    bool waiting() const { return waiting_.has_value(); }
     // A PNG of the view into the screenshot folder (a download in the browser), named
     // <preset><suffix>-NNN.png; `what` names it in the messages ("Screenshot", "Sweep").
     void saveScreenshot(const Image& image, const std::string& suffix = "", const std::string& what = "Screenshot");
@@ -177,6 +182,8 @@ private:
         std::shared_ptr<const Mesh> mesh;
     };
     std::shared_ptr<const Mesh> resolve(Model& model, Resolved& resolved, const char* which);
+    bool waitsFor(const std::filesystem::path& file, std::string title, std::function<void()> again);
+    bool waitsFor(const Model& model, const std::filesystem::path& folder, std::string title, std::function<void()> again);
     bool runEdit(Command command);
     void stepPreset(int delta);
     bool save(const std::string& saveAsField);
@@ -205,6 +212,12 @@ private:
     int currentPreset_ = -1;
     std::optional<std::string> question_;
     std::function<void()> pending_;
+    struct Waiting {
+        std::filesystem::path file; // the site's file being fetched
+        std::string title;          // the problem's title if it cannot be
+        std::function<void()> again;
+    };
+    std::optional<Waiting> waiting_;
     bool quit_ = false;
     std::vector<Problem> problems_;
     std::vector<std::string> notes_;

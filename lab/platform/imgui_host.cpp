@@ -150,8 +150,15 @@ const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0391, 0x03A9, 0x03B1, 0x03C9, 
 
 } // namespace
 
+void imguiBuiltinFont(float pixels) {
+    ImFontConfig config;
+    config.SizePixels = pixels;
+    ImGui::GetIO().Fonts->AddFontDefault(&config);
+}
+
 struct ImGuiHost::Impl {
     std::vector<std::string> fontFiles;
+    FallbackFont fallback = nullptr;
     App* app = nullptr;
     ImGuiStyle baseStyle;
     float scale = 0.0f;
@@ -176,10 +183,8 @@ struct ImGuiHost::Impl {
                 loaded = io.Fonts->AddFontFromFileTTF(f.c_str(), 15.0f * s, nullptr, kGlyphRanges) != nullptr;
             }
         }
-        if (!loaded) {
-            ImFontConfig config;
-            config.SizePixels = 13.0f * s;
-            io.Fonts->AddFontDefault(&config);
+        if (!loaded && fallback) {
+            fallback(13.0f * s);
         }
         ImGui_ImplOpenGL3_DestroyFontsTexture();
         ImGui_ImplOpenGL3_CreateFontsTexture();
@@ -197,8 +202,9 @@ struct ImGuiHost::Impl {
     }
 };
 
-ImGuiHost::ImGuiHost(std::vector<std::string> fontFiles) : impl_(std::make_unique<Impl>()) {
+ImGuiHost::ImGuiHost(std::vector<std::string> fontFiles, FallbackFont fallback) : impl_(std::make_unique<Impl>()) {
     impl_->fontFiles = std::move(fontFiles);
+    impl_->fallback = fallback;
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr; // the layout is the app's, not a file's

@@ -16,11 +16,16 @@
 
 namespace lab {
 
+// ImGui's built-in font (ProggyClean) at `pixels`: the desktop's font when none of its files loads.
+void imguiBuiltinFont(float pixels);
+using FallbackFont = void (*)(float pixels);
+
 // Owns the ImGui context and its renderer backend (not copyable: impl_ is unique).
 class ImGuiHost {
 public:
-    // `fontFiles`: the first that exists is the UI font; ImGui's built-in font when none does.
-    explicit ImGuiHost(std::vector<std::string> fontFiles = {});
+    // `fontFiles`: the first that exists is the UI font; `fallback`'s when none does. The page passes
+    // none: its font is in lab.data, and ImGui's own stays out of lab.wasm (cmake/web.cmake).
+    explicit ImGuiHost(std::vector<std::string> fontFiles = {}, FallbackFont fallback = imguiBuiltinFont);
     ~ImGuiHost(); // shuts the renderer backend down and destroys the context
 
     // Creates the context (no .ini file, dark style) and the renderer backend; needs a current

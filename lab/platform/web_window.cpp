@@ -32,6 +32,7 @@
 #include "app/frame_pacer.h"
 #include "app/touch.h"
 #include "core/gltf/draco_decoder.h"
+#include "core/io/site_files.h"
 #include "core/plots/theme.h"
 #include "core/share/share_link.h" // kMaxLinkChars
 #include "platform/imgui_glfw.h"
@@ -160,7 +161,7 @@ const std::vector<std::string> kFonts = {"/fonts/DejaVuSans-ui.ttf"}; // cut to 
 struct WebState : PlatformInput {
     explicit WebState(const AppOptions& options) : app(options) {}
     App app;
-    ImGuiHost host{kFonts};
+    ImGuiHost host{kFonts, nullptr}; // no fallback: runLab checks the font is here
     GLFWwindow* window = nullptr;
     std::unique_ptr<GlfwBackend> backend;
     double last = 0.0;
@@ -353,6 +354,14 @@ EMSCRIPTEN_KEEPALIVE void lab_draco_loaded(int ok, const char* why) {
     }
     gState->changed = true;
 }
+// A file of the site the lab asked for (core/io/site_files.h: a bundled model) is in the file
+// system (ok 1), or could not be fetched (ok 0, why): the open that waited for it goes on.
+EMSCRIPTEN_KEEPALIVE void lab_site_file_fetched(const char* path, int ok, const char* why) {
+    siteFileFetched(path, ok != 0, why ? why : "");
+    if (gState) {
+        gState->changed = true;
+    }
+}
 // A finger (CSS pixels from the canvas's corner): phase 0 down, 1 moved, 2 up, 3 cancelled.
 EMSCRIPTEN_KEEPALIVE void lab_touch(int phase, int id, float x, float y) {
     if (!gState) {
@@ -452,8 +461,10 @@ EMSCRIPTEN_KEEPALIVE int lab_frames() { return gState ? gState->frames : 0; }
 // For browser tests: 1 when the lab has handled everything it was given, owes no frame and the page
 // has its description of the last frame.
 EMSCRIPTEN_KEEPALIVE int lab_settled() {
-    // A file held for the Draco decoder is one the lab was given and has not handled yet.
+    // A file held for the Draco decoder is one the lab was given and has not handled yet; a site
+    // file being fetched, one an open waits for.
     return gState && !gState->changed && !gState->pendingLink && gState->queue.empty() && gState->heldForDraco.empty() &&
+           !siteFilesFetching() &&
            !gState->describeOwed &&
            !gState->pacer.due(glfwGetTime(), false);
 }
@@ -467,6 +478,10 @@ EMSCRIPTEN_KEEPALIVE const char* lab_widgets() {
 
 WindowResult runLab(const AppOptions& options, const WindowOptions&, std::string& error) {
     labJsMark("main");
+    if (std::error_code ec; !fs::is_regular_file(kFonts.front(), ec)) {
+        error = "the page's font " + kFonts.front() + " is not in lab.data (rebuild the page)";
+        return WindowResult::Failed;
+    }
     if (!glfwInit()) {
         error = "GLFW did not start";
         return WindowResult::Failed;

@@ -202,6 +202,68 @@ test('a Draco decoder that cannot be fetched is named in the error, and the scen
   await context.close();
 });
 
+// The bundled models (the trefoil) are not in lab.data either: the site's models/ folder, fetched
+// the first time a preset names one (core/io/site_files.h), the open waiting meanwhile.
+function modelRequests(page) {
+  const seen = [];
+  page.on('request', (r) => { if (new URL(r.url()).pathname.startsWith('/models/')) seen.push(new URL(r.url()).pathname); });
+  return seen;
+}
+
+async function openLink(page, link) {
+  await page.evaluate((l) => Module.ccall('lab_open_link', null, ['string'], [l]), link);
+  await frames(page, 1);
+  await settle(page); // (it waits for the site's files being fetched)
+}
+
+test('the bundled trefoil is not part of the first load: it is fetched once, when a preset names it', async () => {
+  const context = await env.browser.newContext({ viewport: { width: 1024, height: 640 } });
+  const page = await context.newPage();
+  const seen = modelRequests(page);
+  await page.goto(env.base);
+  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
+  await settle(page);
+  await openLink(page, 'preset=05-full-phong');
+  assert.deepEqual(seen, [], 'the page, and a preset with a built-in model, fetched no model');
+
+  await openLink(page, 'preset=24-gltf-trefoil');
+  assert.deepEqual(seen, ['/models/trefoil.glb'], 'the trefoil was fetched');
+  assert.equal((await widgets(page)).error, undefined, 'an error window opened');
+  assert.match(await page.title(), /trefoil/i, 'the preset opened');
+  assert.equal(await page.evaluate(() => location.hash), '#preset=24-gltf-trefoil');
+  const log = await page.locator('#lab-log').textContent();
+  assert.match(log, /Loading trefoil\.glb…[\s\S]*Opened 24-gltf-trefoil\.json/, `the message log says what the preset waited for: ${log}`);
+  const shot = model(await viewShot(page));
+  assert.ok(shot.share > 0.05, `the trefoil is drawn (${(shot.share * 100).toFixed(1)}% of the view)`);
+
+  await openLink(page, 'preset=05-full-phong');
+  await openLink(page, 'preset=24-gltf-trefoil');
+  assert.match(await page.title(), /trefoil/i, 'the preset opened again');
+  assert.equal(seen.length, 1, 'opening it again fetched nothing more');
+  await context.close();
+});
+
+test('a bundled model that cannot be fetched is named in the error, and the scene stays', async () => {
+  const { page, context } = await openLab();
+  await page.route('**/models/trefoil.glb', (route) => route.fulfill({ status: 404, body: 'not here' }));
+  const title = await page.title();
+  await openLink(page, 'preset=24-gltf-trefoil');
+  await page.waitForFunction(() => /could not be fetched/.test(document.getElementById('lab-problem').textContent),
+    null, { timeout: 20000 });
+  const said = await page.locator('#lab-problem').textContent();
+  assert.match(said, /24-gltf-trefoil\.json/, `the error names the preset: ${said}`);
+  assert.match(said, /trefoil\.glb: could not be fetched from the page's site: the server answered 404/, `the error says what was missing: ${said}`);
+  assert.ok((await widgets(page)).error, 'the error window is open');
+  assert.equal(await page.title(), title, 'the scene did not change');
+  // Once the file can be fetched, the next try opens the preset.
+  await page.unroute('**/models/trefoil.glb');
+  await press(page, 'Escape');
+  await openLink(page, 'preset=05-full-phong');
+  await openLink(page, 'preset=24-gltf-trefoil');
+  assert.match(await page.title(), /trefoil/i, 'the preset opened');
+  await context.close();
+});
+
 // The glyphs ImGui drew in `rgba` during one frame, line by line: each a list of glyph keys (the
 // glyph's corner in the font atlas) from left to right. Draw-list vertices are ImDrawVert: x, y,
 // u, v (float) and the colour (RGBA bytes), a glyph being 4 vertices (ImDrawList::PrimRectUV).

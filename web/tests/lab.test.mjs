@@ -262,7 +262,10 @@ test('the page\'s first load is within the 0.645 MB gzip budget', () => {
     total += zlib.gzipSync(fs.readFileSync(path.join(site, name)), { level: 9 }).length;
   }
   const others = fs.readdirSync(site).filter((name) => !firstLoad.includes(name));
-  assert.deepEqual(others.sort(), ['draco.js', 'draco.wasm'], 'the site holds the first load and the Draco decoder, nothing else');
+  assert.deepEqual(others.sort(), ['draco.js', 'draco.wasm', 'models'],
+    'the site holds the first load, the Draco decoder and the bundled models, nothing else');
+  assert.deepEqual(fs.readdirSync(path.join(site, 'models')).sort(), fs.readdirSync(path.join(repo, 'presets/models')).sort(),
+    'the site\'s models/ are the bundled models');
   console.log(`gzip size of the page's first load: ${(total / 1e6).toFixed(3)} MB (${total} bytes)`);
   assert.ok(total <= 0.645e6, `${total} bytes gzip-compressed, more than 0.645 MB`);
 });

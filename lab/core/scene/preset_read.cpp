@@ -16,6 +16,7 @@
 #include "core/io/json_text.h"
 #include "core/io/paths.h"
 #include "core/io/safe_text.h"
+#include "core/io/site_files.h"
 #include "core/scene/limits.h"
 #include "core/scene/field_path.h"
 #include "core/scene/field_table.h"
@@ -358,6 +359,9 @@ std::optional<fs::path> resolveModelPath(const std::string& gltf, const fs::path
         return std::nullopt;
     }
     fs::file_status status = fs::status(full, ec);
+    if (!fs::exists(status) && onSite(full)) {
+        return full; // the page fetches it when the preset opens (core/io/site_files.h)
+    }
     if (!fs::exists(status)) {
         error = "model file " + inQuotes(gltf) + " not found (looked for " + inQuotes(full.string(), 400) + ")";
         return std::nullopt;
