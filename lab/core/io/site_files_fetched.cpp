@@ -30,26 +30,23 @@ std::map<std::string, Fetch> gFetches; // by path: the site's files asked for so
 
 // Fetches `url` into `path` (written as path + ".part", then renamed); tells the lab with
 // lab_site_file_fetched(path, ok, why).
+// clang-format off
 EM_JS(void, labJsFetchSiteFile, (const char* url, const char* path), {
     const file = UTF8ToString(path);
-    const done = (ok, why) =
-        > Module.ccall("lab_site_file_fetched", null, [ "string", "number", "string" ], [ file, ok, why ]);
+    const done = (ok, why) => Module.ccall("lab_site_file_fetched", null, ["string", "number", "string"], [file, ok, why]);
     fetch(UTF8ToString(url))
-        .then((r) =
-                  >
-                  {
-                      if (!r.ok)
-                          throw new Error("the server answered " + r.status + (r.statusText ? " " + r.statusText : ""));
-                      return r.arrayBuffer();
-                  })
-        .then((bytes) = >
-                        {
-                            FS.writeFile(file + ".part", new Uint8Array(bytes));
-                            FS.rename(file + ".part", file);
-                            done(1, "");
-                        })
-        .catch((e) = > done(0, String((e && e.message) || e)));
+        .then((r) => {
+            if (!r.ok) throw new Error("the server answered " + r.status + (r.statusText ? " " + r.statusText : ""));
+            return r.arrayBuffer();
+        })
+        .then((bytes) => {
+            FS.writeFile(file + ".part", new Uint8Array(bytes));
+            FS.rename(file + ".part", file);
+            done(1, "");
+        })
+        .catch((e) => done(0, String((e && e.message) || e)));
 });
+// clang-format on
 
 } // namespace
 
