@@ -217,6 +217,16 @@ function(lab_configure_draco_module target)
     -sFILESYSTEM=0 --no-entry "-sEXPORTED_FUNCTIONS=[_lab_draco_decode,_malloc,_free]")
 endfunction()
 
+# The page's QR encoder (lab/platform/web_qr_module.cpp): qr.js and qr.wasm in the site, fetched
+# only when the QR code window asks for a code (7 KB of gzip out of the first load). As the Draco
+# decoder's module.
+function(lab_configure_qr_module target)
+  set_target_properties(${target} PROPERTIES OUTPUT_NAME qr SUFFIX ".js" RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/site")
+  target_link_options(${target} PRIVATE -Oz
+    -sMODULARIZE=1 -sEXPORT_NAME=LabQr -sENVIRONMENT=web -sALLOW_MEMORY_GROWTH=1 -sMALLOC=emmalloc
+    -sFILESYSTEM=0 --no-entry "-sEXPORTED_FUNCTIONS=[_lab_qr_encode,_malloc,_free]")
+endfunction()
+
 # The page: the program, the bundled presets and font, and web/'s shell, in one static folder.
 function(lab_configure_web_target target)
   set(site "${CMAKE_BINARY_DIR}/site")
@@ -233,7 +243,7 @@ function(lab_configure_web_target target)
     # enabled or renamed behind the lab's back (it uses none). Main-thread script time a frame
     # while dragging a slider, median of 4 runs each way: 0.95 ms before, 0.97 ms after.
     -sMALLOC=emmalloc -sGL_EXTENSIONS_IN_PREFIXED_FORMAT=0 -sGL_SUPPORT_AUTOMATIC_ENABLE_EXTENSIONS=0
-    "-sEXPORTED_FUNCTIONS=[_main,_lab_open_file,_lab_open_link,_lab_widgets,_lab_frames,_lab_settled,_lab_touch,_lab_text,_lab_backspace,_lab_page_field,_lab_page_command,_lab_page_focus,_lab_draco_loaded,_lab_site_file_fetched,_malloc,_free]"
+    "-sEXPORTED_FUNCTIONS=[_main,_lab_open_file,_lab_open_link,_lab_widgets,_lab_frames,_lab_settled,_lab_touch,_lab_text,_lab_backspace,_lab_page_field,_lab_page_command,_lab_page_focus,_lab_draco_loaded,_lab_qr_loaded,_lab_site_file_fetched,_malloc,_free]"
     "-sEXPORTED_RUNTIME_METHODS=[ccall,FS]"
     # lab.js reads only the Module properties index.html sets (and the file packager's preRun), and
     # decodes text with the TextDecoder every WebGL2 browser has: 0.4 KB less gzip (issue 40).

@@ -2,6 +2,7 @@
 #include "app/share_code.h"
 
 #include "core/io/safe_text.h"
+#include "core/share/qr_encoder.h"
 #include "core/share/share_link.h"
 
 namespace lab {
@@ -25,6 +26,22 @@ const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& 
         model_.problem = "The QR code needs the course page's address. Start the lab once with\n"
                          "  lab --share-base https://your-course.example.org/lab/\n"
                          "(it is remembered), or use the page's Copy link.";
+        return model_;
+    }
+    // The page fetches the QR encoder the first time it is needed (core/share/qr_encoder.h): the link
+    // shows meanwhile, and the code is made in the frame after it arrived.
+    if (qrEncoderState() != QrEncoderState::Ready) {
+        if (qrEncoderState() == QrEncoderState::Failed && loadingFor_ == url) { // shown until the link changes
+            model_.problem = "The QR encoder could not be loaded: " + qrEncoderProblem() +
+                             ". The link below opens the scene (the page's Copy link copies it).";
+            return model_;
+        }
+        if (qrEncoderState() != QrEncoderState::Loading) { // a new link tries again after a failure
+            loadQrEncoder();
+            loadingFor_ = url;
+        }
+        made_ = false; // asked again each frame until the encoder is here
+        model_.problem = "Loading the QR encoder…";
         return model_;
     }
     std::string error;

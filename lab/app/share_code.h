@@ -24,6 +24,7 @@ public:
 private:
     std::string url_;
     bool made_ = false;
+    std::string loadingFor_; // the link the page's QR encoder was last fetched for
     std::optional<QrCode> code_;
     ui::ShareCodeModel model_;
 };

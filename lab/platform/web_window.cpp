@@ -33,6 +33,7 @@
 #include "app/touch.h"
 #include "core/gltf/draco_decoder.h"
 #include "core/io/site_files.h"
+#include "core/share/qr_encoder.h"
 #include "core/plots/theme.h"
 #include "core/share/share_link.h" // kMaxLinkChars
 #include "platform/imgui_glfw.h"
@@ -354,6 +355,14 @@ EMSCRIPTEN_KEEPALIVE void lab_draco_loaded(int ok, const char* why) {
     }
     gState->changed = true;
 }
+// The QR encoder's module is loaded (ok 1) or could not be (ok 0, why): the QR code window shows
+// the code, or why there is none.
+EMSCRIPTEN_KEEPALIVE void lab_qr_loaded(int ok, const char* why) {
+    qrEncoderLoaded(ok != 0, why ? why : "");
+    if (gState) {
+        gState->changed = true;
+    }
+}
 // A file of the site the lab asked for (core/io/site_files.h: a bundled model) is in the file
 // system (ok 1), or could not be fetched (ok 0, why): the open that waited for it goes on.
 EMSCRIPTEN_KEEPALIVE void lab_site_file_fetched(const char* path, int ok, const char* why) {
@@ -462,9 +471,9 @@ EMSCRIPTEN_KEEPALIVE int lab_frames() { return gState ? gState->frames : 0; }
 // has its description of the last frame.
 EMSCRIPTEN_KEEPALIVE int lab_settled() {
     // A file held for the Draco decoder is one the lab was given and has not handled yet; a site
-    // file being fetched, one an open waits for.
+    // file being fetched, one an open waits for; the QR encoder being fetched, a code the window waits for.
     return gState && !gState->changed && !gState->pendingLink && gState->queue.empty() && gState->heldForDraco.empty() &&
-           !siteFilesFetching() &&
+           !siteFilesFetching() && qrEncoderState() != QrEncoderState::Loading &&
            !gState->describeOwed &&
            !gState->pacer.due(glfwGetTime(), false);
 }

@@ -375,3 +375,49 @@ test('Q and the panel\'s QR code button show the page\'s own link as a QR code t
   assert.deepEqual(exercise.problems, []);
   await exercise.context.close();
 });
+
+// libqrencode is a module of its own (qr.js, qr.wasm), fetched the first time the QR code window
+// asks for a code (core/share/qr_encoder.h), never with the page.
+async function fetched(page) {
+  return page.evaluate(() => performance.getEntriesByType('resource').map((e) => new URL(e.name).pathname)
+    .filter((p) => /^\/qr\.(js|wasm)$/.test(p)).sort());
+}
+
+test('the QR encoder is not part of the first load: it is fetched once, when the QR code window asks for a code', async () => {
+  const { page, context, problems } = await newLabPage(env.browser, `${env.base}#preset=05-full-phong`, { width: 1280, height: 720 });
+  assert.deepEqual(await fetched(page), [], 'the first load fetched no QR encoder');
+  await page.mouse.move(...centre((await widgets(page)).view));
+  await press(page, 'q');
+  const qr = (await widgets(page))['share.qr'];
+  assert.ok(qr, 'the window shows the code once the encoder is here');
+  const png = path.join(scratch, 'qr-fetched.png');
+  await page.screenshot({ path: png, clip: { x: qr.x, y: qr.y, width: qr.w, height: qr.h } });
+  assert.equal(decodeQr(png), `${env.base}#preset=05-full-phong`);
+  assert.deepEqual(await fetched(page), ['/qr.js', '/qr.wasm'], 'the encoder was fetched');
+  await press(page, 'q');
+  await press(page, '1'); // another scene, another link: another code
+  await press(page, 'q');
+  assert.ok((await widgets(page))['share.qr'], 'the second code is shown');
+  assert.deepEqual(await fetched(page), ['/qr.js', '/qr.wasm'], 'a second code fetched nothing more');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('a QR encoder that cannot be fetched leaves the window saying why, and the next link tries again', async () => {
+  const { page, context } = await newLabPage(env.browser, `${env.base}#preset=05-full-phong`, { width: 1280, height: 720 });
+  await page.route('**/qr.wasm', (route) => route.fulfill({ status: 404, body: 'not here' }));
+  await page.mouse.move(...centre((await widgets(page)).view));
+  await press(page, 'q');
+  let rects = await widgets(page);
+  assert.equal(rects['share.qr'], undefined, 'no code');
+  assert.ok(rects['share.problem'], 'the window says why there is none');
+  assert.ok(rects['share.close'], 'and can be closed');
+  await page.unroute('**/qr.wasm');
+  await press(page, 'q');
+  await press(page, '1'); // a new link: the encoder is fetched again
+  await press(page, 'q');
+  rects = await widgets(page);
+  assert.ok(rects['share.qr'], 'the code is shown once the encoder can be fetched');
+  assert.equal(rects['share.problem'], undefined);
+  await context.close();
+});

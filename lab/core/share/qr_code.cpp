@@ -1,12 +1,10 @@
-// qr_code.cpp — encodeQr through libqrencode, and the code drawn into an RGB image.
+// qr_code.cpp — encodeQr through libqrencode (qr_encoder.h), and the code drawn into an RGB image.
 #include "core/share/qr_code.h"
 
-#include <qrencode.h>
+#include "core/share/qr_encoder.h"
 
 #include <array>
-#include <cerrno>
 #include <cstring>
-#include <memory>
 
 namespace lab {
 
@@ -24,15 +22,6 @@ std::string tooLong(std::size_t bytes, int maxVersion) {
     return "the text is " + std::to_string(bytes) + " bytes; a QR code of version " + std::to_string(maxVersion) +
            " (" + std::to_string(17 + 4 * maxVersion) + "x" + std::to_string(17 + 4 * maxVersion) +
            " modules, error correction M) holds at most " + std::to_string(qrCapacityBytes(maxVersion)) + " bytes";
-}
-
-std::string whyNull(int error) {
-    switch (error) {
-    case ERANGE: return "the text is too large for any QR code";
-    case ENOMEM: return "out of memory";
-    case EINVAL: return "libqrencode refused the input as invalid";
-    default: return std::string("libqrencode failed: ") + std::strerror(error);
-    }
 }
 
 } // namespace
@@ -56,26 +45,13 @@ std::optional<QrCode> encodeQr(std::string_view text, std::string& error, int ma
         error = tooLong(text.size(), maxVersion);
         return std::nullopt;
     }
-    // QRcode_encodeData, not encodeString8bit: the text is a string_view (no NUL at its end, and
-    // it may hold NULs). Version 0 lets libqrencode pick the smallest version that holds it.
-    errno = 0;
-    std::unique_ptr<QRcode, void (*)(QRcode*)> encoded(
-        QRcode_encodeData(int(text.size()), reinterpret_cast<const unsigned char*>(text.data()), 0, QR_ECLEVEL_M),
-        QRcode_free);
-    if (!encoded) {
-        error = whyNull(errno);
+    std::optional<QrCode> code = runQrEncoder(text, error);
+    if (!code) {
         return std::nullopt;
     }
-    if (encoded->version > maxVersion) { // the table above and libqrencode disagree: trust the symbol
+    if (code->version > maxVersion) { // the table above and libqrencode disagree: trust the symbol
         error = tooLong(text.size(), maxVersion);
         return std::nullopt;
-    }
-    QrCode code;
-    code.version = encoded->version;
-    code.size = encoded->width;
-    code.modules.resize(std::size_t(code.size) * std::size_t(code.size));
-    for (std::size_t i = 0; i < code.modules.size(); ++i) {
-        code.modules[i] = encoded->data[i] & 1; // bit 0 is dark; the other bits say what the module is for
     }
     return code;
 }

@@ -2,7 +2,9 @@
 //
 // Byte mode at error-correction level M (15% of the code may be lost), the smallest version that
 // holds the text, up to kMaxQrVersion. The encoding itself is libqrencode's (Debian's
-// libqrencode-dev natively; in the browser build the same sources compiled by cmake/web.cmake).
+// libqrencode-dev natively; in the browser build the same sources compiled by cmake/web.cmake into
+// a module the page fetches when it needs a code: qr_encoder.h). In the page encodeQr fails, saying
+// so, until that module is here (app/share_code.cpp asks for it and waits).
 // No GL, no ImGui: the caller shows the image (a texture, a PNG file) as it likes.
 #pragma once
 
