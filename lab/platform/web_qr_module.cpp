@@ -2,7 +2,7 @@
 // libqrencode, which the page fetches the first time the QR code window asks for a code
 // (core/share/qr_fetched.cpp) instead of carrying it in every first load. Its one function: the
 // text in, libqrencode's symbol out (core/share/qr_encoder.h qrSymbol, as the desktop makes it).
-#include "core/share/qr_encoder.h"
+#include "core/share/qr_symbol.h"
 
 #include <emscripten.h>
 

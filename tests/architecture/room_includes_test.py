@@ -34,6 +34,7 @@ FOLDER_TARGET = {
     'lab/platform': 'lab_platform',  # window.h: the seam lab_platform implements
     'lab/cli': 'lab_cli',          # command_kit.h: what the commands share
     'lab/core/gltf': 'lab_gltf',   # draco_decoder.h: the seam draco_linked.cpp and draco_fetched.cpp implement
+    'lab/core/share': 'lab_share', # qr_encoder.h: the seam qr_linked.cpp and qr_fetched.cpp implement
 }
 SOURCES = ('.h', '.cpp')
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/io/image.h"
+#include "core/share/qr_symbol.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -19,16 +20,6 @@
 
 namespace lab {
 
-struct QrCode {
-    int version = 0; // 1 to 40: the code has 17 + 4 * version modules a side
-    int size = 0;    // modules a side
-    std::vector<std::uint8_t> modules; // size*size, 1 = dark, row-major, top first
-
-    // Whether module (x, y) is dark; outside the code (the quiet zone) it is light.
-    bool dark(int x, int y) const {
-        return x >= 0 && y >= 0 && x < size && y < size && modules[std::size_t(y) * std::size_t(size) + std::size_t(x)];
-    }
-};
 
 // The largest code the lab makes: 97x97 modules, still scannable across a classroom.
 inline constexpr int kMaxQrVersion = 20;

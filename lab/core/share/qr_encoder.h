@@ -31,10 +31,6 @@ void loadQrEncoder();
 // the encoder is not Ready.
 std::optional<QrCode> runQrEncoder(std::string_view text, std::string& error);
 
-// libqrencode itself (qr_symbol.cpp): what runQrEncoder does where the encoder is linked, and what
-// the page's module runs.
-std::optional<QrCode> qrSymbol(std::string_view text, std::string& error);
-
 #ifdef __EMSCRIPTEN__
 // The page: the module's answer to loadQrEncoder (lab_qr_loaded, lab/platform/web_window.cpp).
 void qrEncoderLoaded(bool ok, const std::string& problem);

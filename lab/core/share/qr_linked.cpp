@@ -1,5 +1,6 @@
 // qr_linked.cpp — libqrencode linked in (qr_encoder.h): the desktop and the command line.
 #include "core/share/qr_encoder.h"
+#include "core/share/qr_symbol.h"
 
 namespace lab {
 

@@ -1,7 +1,7 @@
 // qr_symbol.cpp — libqrencode's symbol of a text (qr_encoder.h qrSymbol): linked into the
 // desktop and the command line (qr_linked.cpp), and into the page's QR module
 // (lab/platform/web_qr_module.cpp), never into the page itself.
-#include "core/share/qr_encoder.h"
+#include "core/share/qr_symbol.h"
 
 #include <qrencode.h>
 
