@@ -30,13 +30,13 @@ const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& 
     }
     // The page fetches the QR encoder the first time it is needed (core/share/qr_encoder.h): the link
     // shows meanwhile, and the code is made in the frame after it arrived.
-    if (qrEncoderState() != QrEncoderState::Ready) {
-        if (qrEncoderState() == QrEncoderState::Failed && loadingFor_ == url) { // shown until the link changes
+    if (qrEncoderState() != ModuleState::Ready) {
+        if (qrEncoderState() == ModuleState::Failed && loadingFor_ == url) { // shown until the link changes
             model_.problem = "The QR encoder could not be loaded: " + qrEncoderProblem() +
                              ". The link below opens the scene (the page's Copy link copies it).";
             return model_;
         }
-        if (qrEncoderState() != QrEncoderState::Loading) { // a new link tries again after a failure
+        if (qrEncoderState() != ModuleState::Loading) { // a new link tries again after a failure
             loadQrEncoder();
             loadingFor_ = url;
         }

@@ -335,7 +335,7 @@ EMSCRIPTEN_KEEPALIVE void lab_open_file(const char* path) {
     if (!gState) {
         return;
     }
-    if (dracoDecoderState() != DracoDecoderState::Ready && mentionsDraco(path)) {
+    if (dracoDecoderState() != ModuleState::Ready && mentionsDraco(path)) {
         gState->heldForDraco.push_back(path);
         loadDracoDecoder();
         gState->notes.push_back("Loading the Draco decoder to open " + fs::path(path).filename().string() + "…");
@@ -473,7 +473,7 @@ EMSCRIPTEN_KEEPALIVE int lab_settled() {
     // A file held for the Draco decoder is one the lab was given and has not handled yet; a site
     // file being fetched, one an open waits for; the QR encoder being fetched, a code the window waits for.
     return gState && !gState->changed && !gState->pendingLink && gState->queue.empty() && gState->heldForDraco.empty() &&
-           !siteFilesFetching() && qrEncoderState() != QrEncoderState::Loading &&
+           !siteFilesFetching() && qrEncoderState() != ModuleState::Loading &&
            !gState->describeOwed &&
            !gState->pacer.due(glfwGetTime(), false);
 }

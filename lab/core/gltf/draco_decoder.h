@@ -6,20 +6,16 @@
 #pragma once
 
 #include "core/gltf/draco_mesh.h"
+#include "core/io/fetched_module.h"
 
 #include <filesystem>
 #include <string>
 
 namespace lab {
 
-enum class DracoDecoderState {
-    Ready,     // decodes now
-    NotLoaded, // the page has not fetched it yet
-    Loading,   // the page is fetching it
-    Failed,    // the page could not load it: dracoDecoderProblem() says why (the next model tries again)
-};
-
-DracoDecoderState dracoDecoderState();
+// Ready where it is linked; in the page, as fetched (core/io/fetched_module.h): the next model tries
+// again after a failure, which dracoDecoderProblem() explains.
+ModuleState dracoDecoderState();
 std::string dracoDecoderProblem();
 
 // Starts fetching the decoder where it is not here yet (the page); nothing where it is linked.

@@ -20,27 +20,11 @@ namespace lab {
 
 namespace {
 
-DracoDecoderState gDecoder = DracoDecoderState::NotLoaded;
-std::string gProblem;
-
-// Loads draco.js (it defines LabDraco, the module's factory) and instantiates draco.wasm; tells
-// the lab with lab_draco_loaded(ok, why).
-EM_JS(void, labJsLoadDraco, (), {
-    const done = (ok, why) => Module.ccall("lab_draco_loaded", null, ["number", "string"], [ok, why]);
-    const script = document.createElement("script");
-    script.src = "draco.js";
-    script.onload = () => {
-        if (typeof LabDraco !== "function") { done(0, "draco.js defines no decoder"); return; }
-        LabDraco().then((m) => { Module.labDraco = m; done(1, ""); },
-                        (e) => done(0, "draco.wasm could not be loaded: " + String((e && e.message) || e)));
-    };
-    script.onerror = () => done(0, "draco.js could not be fetched");
-    document.head.appendChild(script);
-});
+FetchedModule gDecoder("draco.js", "LabDraco", "labDraco", "lab_draco_loaded");
 
 // One decode in the module: the bytes and the query's words copied in, its answer (a 32-bit length,
 // then the packed result) copied into this module's memory, which the caller frees. 0 when the
-// module failed (it is then dropped, and loaded again for the next model).
+// module failed (the caller drops it: it is loaded again for the next model).
 EM_JS(unsigned char*, labJsDracoDecode, (const unsigned char* data, int size, const double* words, double maxBytes), {
     const d = Module.labDraco;
     if (!d) return 0;
@@ -59,7 +43,6 @@ EM_JS(unsigned char*, labJsDracoDecode, (const unsigned char* data, int size, co
         d._free(out);
         return copy;
     } catch (e) {
-        Module.labDraco = null;
         return 0;
     }
 });
@@ -68,20 +51,10 @@ gltf_detail::DracoResult failure(std::string message) { return gltf_detail::Drac
 
 } // namespace
 
-DracoDecoderState dracoDecoderState() { return gDecoder; }
-std::string dracoDecoderProblem() { return gProblem; }
-
-void loadDracoDecoder() {
-    if (gDecoder == DracoDecoderState::NotLoaded || gDecoder == DracoDecoderState::Failed) {
-        gDecoder = DracoDecoderState::Loading;
-        labJsLoadDraco();
-    }
-}
-
-void dracoDecoderLoaded(bool ok, const std::string& problem) {
-    gDecoder = ok ? DracoDecoderState::Ready : DracoDecoderState::Failed;
-    gProblem = ok ? "" : problem;
-}
+ModuleState dracoDecoderState() { return gDecoder.state(); }
+std::string dracoDecoderProblem() { return gDecoder.problem(); }
+void loadDracoDecoder() { gDecoder.load(); }
+void dracoDecoderLoaded(bool ok, const std::string& problem) { gDecoder.loaded(ok, problem); }
 
 bool mentionsDraco(const std::filesystem::path& file) {
     // Read in pieces, each searched with the end of the one before (a model may be hundreds of MB).
@@ -103,17 +76,16 @@ bool mentionsDraco(const std::filesystem::path& file) {
 }
 
 gltf_detail::DracoResult runDracoDecoder(const unsigned char* data, std::size_t size, const gltf_detail::DracoQuery& query) {
-    switch (gDecoder) {
-    case DracoDecoderState::Ready: break;
-    case DracoDecoderState::Failed: return failure("the Draco decoder could not be loaded: " + gProblem);
-    case DracoDecoderState::Loading: return failure("the Draco decoder is still loading: open the model again in a moment");
-    case DracoDecoderState::NotLoaded: return failure("the Draco decoder is not loaded: open the model itself (.glb, .gltf) to load it");
+    switch (gDecoder.state()) {
+    case ModuleState::Ready: break;
+    case ModuleState::Failed: return failure("the Draco decoder could not be loaded: " + gDecoder.problem());
+    case ModuleState::Loading: return failure("the Draco decoder is still loading: open the model again in a moment");
+    case ModuleState::NotLoaded: return failure("the Draco decoder is not loaded: open the model itself (.glb, .gltf) to load it");
     }
     const gltf_detail::DracoQueryWords words = gltf_detail::queryWords(query);
     unsigned char* answer = labJsDracoDecode(data, static_cast<int>(size), words.words, static_cast<double>(query.maxBytes));
     if (!answer) {
-        gDecoder = DracoDecoderState::Failed;
-        gProblem = "it stopped while decoding";
+        gDecoder.failed("it stopped while decoding");
         return failure("the Draco decoder stopped while decoding this model (it is loaded again for the next one)");
     }
     std::uint32_t length = 0;

@@ -3,7 +3,7 @@
 
 namespace lab {
 
-DracoDecoderState dracoDecoderState() { return DracoDecoderState::Ready; }
+ModuleState dracoDecoderState() { return ModuleState::Ready; }
 std::string dracoDecoderProblem() { return {}; }
 void loadDracoDecoder() {}
 

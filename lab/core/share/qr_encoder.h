@@ -5,6 +5,7 @@
 // module once, the first time the window asks for a code).
 #pragma once
 
+#include "core/io/fetched_module.h"
 #include "core/share/qr_code.h"
 
 #include <optional>
@@ -13,14 +14,9 @@
 
 namespace lab {
 
-enum class QrEncoderState {
-    Ready,     // encodes now
-    NotLoaded, // the page has not fetched it yet
-    Loading,   // the page is fetching it
-    Failed,    // the page could not load it: qrEncoderProblem() says why (the next code tries again)
-};
-
-QrEncoderState qrEncoderState();
+// Ready where it is linked; in the page, as fetched (core/io/fetched_module.h): the next link tries
+// again after a failure, which qrEncoderProblem() explains.
+ModuleState qrEncoderState();
 std::string qrEncoderProblem();
 
 // Starts fetching the encoder where it is not here yet (the page); nothing where it is linked.

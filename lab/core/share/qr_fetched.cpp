@@ -16,28 +16,12 @@ namespace lab {
 
 namespace {
 
-QrEncoderState gEncoder = QrEncoderState::NotLoaded;
-std::string gProblem;
+FetchedModule gEncoder("qr.js", "LabQr", "labQr", "lab_qr_loaded");
 
 // clang-format off
-// Loads qr.js (it defines LabQr, the module's factory) and instantiates qr.wasm; tells the lab with
-// lab_qr_loaded(ok, why).
-EM_JS(void, labJsLoadQr, (), {
-    const done = (ok, why) => Module.ccall("lab_qr_loaded", null, ["number", "string"], [ok, why]);
-    const script = document.createElement("script");
-    script.src = "qr.js";
-    script.onload = () => {
-        if (typeof LabQr !== "function") { done(0, "qr.js defines no encoder"); return; }
-        LabQr().then((m) => { Module.labQr = m; done(1, ""); },
-                     (e) => done(0, "qr.wasm could not be loaded: " + String((e && e.message) || e)));
-    };
-    script.onerror = () => done(0, "qr.js could not be fetched");
-    document.head.appendChild(script);
-});
-
 // One encode in the module: the text copied in, its answer (two 32-bit words, then the modules or
 // the error's text: web_qr_module.cpp) copied into this module's memory, which the caller frees.
-// 0 when the module failed (it is then dropped, and loaded again for the next code).
+// 0 when the module failed (the caller drops it: it is loaded again for the next code).
 EM_JS(unsigned char*, labJsQrEncode, (const char* text, int size), {
     const q = Module.labQr;
     if (!q) return 0;
@@ -54,7 +38,6 @@ EM_JS(unsigned char*, labJsQrEncode, (const char* text, int size), {
         q._free(out);
         return copy;
     } catch (e) {
-        Module.labQr = null;
         return 0;
     }
 });
@@ -62,32 +45,21 @@ EM_JS(unsigned char*, labJsQrEncode, (const char* text, int size), {
 
 } // namespace
 
-QrEncoderState qrEncoderState() { return gEncoder; }
-std::string qrEncoderProblem() { return gProblem; }
-
-void loadQrEncoder() {
-    if (gEncoder == QrEncoderState::NotLoaded || gEncoder == QrEncoderState::Failed) {
-        gEncoder = QrEncoderState::Loading;
-        labJsLoadQr();
-    }
-}
-
-void qrEncoderLoaded(bool ok, const std::string& problem) {
-    gEncoder = ok ? QrEncoderState::Ready : QrEncoderState::Failed;
-    gProblem = ok ? "" : problem;
-}
+ModuleState qrEncoderState() { return gEncoder.state(); }
+std::string qrEncoderProblem() { return gEncoder.problem(); }
+void loadQrEncoder() { gEncoder.load(); }
+void qrEncoderLoaded(bool ok, const std::string& problem) { gEncoder.loaded(ok, problem); }
 
 std::optional<QrCode> runQrEncoder(std::string_view text, std::string& error) {
-    switch (gEncoder) {
-    case QrEncoderState::Ready: break;
-    case QrEncoderState::Failed: error = "the QR encoder could not be loaded: " + gProblem; return std::nullopt;
-    case QrEncoderState::Loading: error = "the QR encoder is still loading"; return std::nullopt;
-    case QrEncoderState::NotLoaded: error = "the QR encoder is not loaded"; return std::nullopt;
+    switch (gEncoder.state()) {
+    case ModuleState::Ready: break;
+    case ModuleState::Failed: error = "the QR encoder could not be loaded: " + gEncoder.problem(); return std::nullopt;
+    case ModuleState::Loading: error = "the QR encoder is still loading"; return std::nullopt;
+    case ModuleState::NotLoaded: error = "the QR encoder is not loaded"; return std::nullopt;
     }
     unsigned char* answer = labJsQrEncode(text.data(), static_cast<int>(text.size()));
     if (!answer) {
-        gEncoder = QrEncoderState::Failed;
-        gProblem = "it stopped while encoding";
+        gEncoder.failed("it stopped while encoding");
         error = "the QR encoder stopped while encoding (it is loaded again for the next code)";
         return std::nullopt;
     }

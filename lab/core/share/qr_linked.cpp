@@ -4,7 +4,7 @@
 
 namespace lab {
 
-QrEncoderState qrEncoderState() { return QrEncoderState::Ready; }
+ModuleState qrEncoderState() { return ModuleState::Ready; }
 std::string qrEncoderProblem() { return {}; }
 void loadQrEncoder() {}
 std::optional<QrCode> runQrEncoder(std::string_view text, std::string& error) { return qrSymbol(text, error); }
