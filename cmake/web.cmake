@@ -207,24 +207,16 @@ add_custom_command(OUTPUT "${LAB_WEB_FONT}"
   DEPENDS "${LAB_FONT_SOURCE}" VERBATIM)
 add_custom_target(lab_web_font DEPENDS "${LAB_WEB_FONT}")
 
-# The page's Draco decoder (lab/platform/web_draco_module.cpp): draco.js and draco.wasm in the site,
-# fetched only when a model needs them. A module factory (LabDraco) with one function and the heap
-# functions the page copies through; no file system, no main.
-function(lab_configure_draco_module target)
-  set_target_properties(${target} PROPERTIES OUTPUT_NAME draco SUFFIX ".js" RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/site")
+# A module the page fetches when something needs it (core/io/fetched_module.h): NAME.js and NAME.wasm
+# in the site, a module factory FACTORY with one function FUNCTION and the heap functions the page
+# copies through; no file system, no main. The Draco decoder (lab/platform/web_draco_module.cpp:
+# draco, LabDraco, when a model needs it) and the QR encoder (web_qr_module.cpp: qr, LabQr, when the
+# QR code window asks for a code; 7 KB of gzip out of the first load).
+function(lab_configure_fetched_module target name factory function)
+  set_target_properties(${target} PROPERTIES OUTPUT_NAME ${name} SUFFIX ".js" RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/site")
   target_link_options(${target} PRIVATE -Oz
-    -sMODULARIZE=1 -sEXPORT_NAME=LabDraco -sENVIRONMENT=web -sALLOW_MEMORY_GROWTH=1 -sMALLOC=emmalloc
-    -sFILESYSTEM=0 --no-entry "-sEXPORTED_FUNCTIONS=[_lab_draco_decode,_malloc,_free]")
-endfunction()
-
-# The page's QR encoder (lab/platform/web_qr_module.cpp): qr.js and qr.wasm in the site, fetched
-# only when the QR code window asks for a code (7 KB of gzip out of the first load). As the Draco
-# decoder's module.
-function(lab_configure_qr_module target)
-  set_target_properties(${target} PROPERTIES OUTPUT_NAME qr SUFFIX ".js" RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/site")
-  target_link_options(${target} PRIVATE -Oz
-    -sMODULARIZE=1 -sEXPORT_NAME=LabQr -sENVIRONMENT=web -sALLOW_MEMORY_GROWTH=1 -sMALLOC=emmalloc
-    -sFILESYSTEM=0 --no-entry "-sEXPORTED_FUNCTIONS=[_lab_qr_encode,_malloc,_free]")
+    -sMODULARIZE=1 -sEXPORT_NAME=${factory} -sENVIRONMENT=web -sALLOW_MEMORY_GROWTH=1 -sMALLOC=emmalloc
+    -sFILESYSTEM=0 --no-entry "-sEXPORTED_FUNCTIONS=[_${function},_malloc,_free]")
 endfunction()
 
 # The page: the program, the bundled presets and font, and web/'s shell, in one static folder.
