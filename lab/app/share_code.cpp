@@ -33,7 +33,7 @@ const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& 
     if (qrEncoderState() != ModuleState::Ready) {
         if (qrEncoderState() == ModuleState::Failed && loadingFor_ == url) { // shown until the link changes
             model_.problem = "The QR encoder could not be loaded: " + qrEncoderProblem() +
-                             ". The link below opens the scene (the page's Copy link copies it).";
+                             ". The page's Copy link copies the scene's link instead; the next link tries again.";
             return model_;
         }
         if (qrEncoderState() != ModuleState::Loading) { // a new link tries again after a failure

@@ -19,8 +19,13 @@ EM_JS(void, labJsLoadModule, (const char* script, const char* factory, const cha
     element.onload = () => {
         const make = window[name];
         if (typeof make !== "function") { done(0, file + " defines no " + name); return; }
+        // Emscripten rejects with "Aborted(why). Build with -s ASSERTIONS=1 for more info.": the why.
+        const reason = (e) => {
+            const text = String((e && e.message) || e), from = text.indexOf("Aborted("), to = text.indexOf(")", from);
+            return from >= 0 && to > from ? text.substring(from + 8, to) : text;
+        };
         make().then((m) => { Module[key] = m; done(1, ""); },
-                    (e) => done(0, file.slice(0, -3) + ".wasm" + " could not be loaded: " + String((e && e.message) || e)));
+                    (e) => done(0, file.slice(0, -3) + ".wasm could not be loaded: " + reason(e)));
     };
     element.onerror = () => done(0, file + " could not be fetched");
     document.head.appendChild(element);
