@@ -455,7 +455,7 @@ void Workspace::openLink(const std::string& fragment, bool saved) {
             return;
         }
         if (!meshes_.get(exercise->start.model, bundledFolder(), d)) {
-            problem("Cannot load the linked exercise's model (nothing was changed)", std::move(d));
+            problem(title, std::move(d));
             return;
         }
         openExercise(LoadedExercise{*exercise, {}}, std::nullopt);
@@ -472,12 +472,13 @@ void Workspace::openLink(const std::string& fragment, bool saved) {
         return;
     }
     LoadedPreset linked{std::get<Preset>(*parsed), {}, omitted};
-    if (waitsFor(linked.preset.model, bundledFolder(), "Cannot load the linked preset's model (nothing was changed)", again)) {
+    const char* title = "Cannot load the linked preset's model (nothing was changed)";
+    if (waitsFor(linked.preset.model, bundledFolder(), title, again)) {
         return;
     }
     std::shared_ptr<const Mesh> mesh = meshes_.get(linked.preset.model, bundledFolder(), d);
     if (!mesh) {
-        problem("Cannot load the linked preset's model (nothing was changed)", std::move(d));
+        problem(title, std::move(d));
         return;
     }
     frameOmitted(linked, *mesh); // a glTF model without a camera in the link is framed as a file's is
