@@ -71,34 +71,16 @@ void Workspace::frameModel() {
 }
 
 // The mesh of `model`; looked up only when the model or the folder changed since `resolved`.
-// A model that cannot load goes back to the last one that did, with a problem. One of the page's
-// site files (core/io/site_files.h) is fetched meanwhile, the last mesh drawn until it is here.
+// A model that cannot load goes back to the last one that did, with a problem. (A bundled model
+// the page has not fetched yet cannot be here: every open waits for it, waitsFor below.)
 std::shared_ptr<const Mesh> Workspace::resolve(Model& model, Resolved& resolved, const char* which) {
     fs::path folder = doc_.folder();
     if (resolved.mesh && model == resolved.model && folder == resolved.folder) {
         return resolved.mesh; // the common frame: nothing to look up
     }
     Diagnostics d;
-    std::string why;
-    std::string error;
-    std::optional<fs::path> file = model.gltf.empty() ? std::nullopt : resolveModelPath(model.gltf, folder, error);
-    SiteFile site = file ? siteFile(*file, &why) : SiteFile::Here;
-    if (site == SiteFile::Missing) {
-        fetchSiteFile(*file);
-        notes_.push_back("Loading " + file->filename().string() + "…");
-    }
-    if (site == SiteFile::Missing || site == SiteFile::Fetching) {
-        Diagnostics ignored; // asked again each frame until it is here
-        return resolved.mesh ? resolved.mesh : meshes_.get(Model{}, folder, ignored);
-    }
     std::vector<std::string> notes;
-    std::shared_ptr<const Mesh> mesh;
-    if (site == SiteFile::Failed) {
-        d.push_back({file->filename().string(), "", "could not be fetched from the page's site: " + why});
-    } else {
-        mesh = meshes_.get(model, folder, d, &notes);
-    }
-    if (mesh) {
+    if (std::shared_ptr<const Mesh> mesh = meshes_.get(model, folder, d, &notes)) {
         notes_.insert(notes_.end(), notes.begin(), notes.end());
         resolved = {model, folder, std::move(mesh)};
         return resolved.mesh;

@@ -243,6 +243,29 @@ test('the bundled trefoil is not part of the first load: it is fetched once, whe
   await context.close();
 });
 
+test('an edited scene with the trefoil opens from its link: the trefoil is fetched, then the scene is opened', async () => {
+  const first = await openLab('#preset=24-gltf-trefoil');
+  await first.page.mouse.move(...(({ x, y, w, h }) => [x + w / 2, y + h / 2])((await widgets(first.page)).view));
+  await press(first.page, '1'); // flat shading: an edited scene, a #z= link that names the model
+  const hash = await first.page.evaluate(() => location.hash);
+  assert.match(hash, /^#z=/);
+  assert.ok((await sceneModel(first.page)).endsWith('models/trefoil.glb'), `the link names the trefoil: ${await sceneModel(first.page)}`);
+  await first.context.close();
+
+  const context = await env.browser.newContext({ viewport: { width: 1024, height: 640 } });
+  const page = await context.newPage();
+  const seen = modelRequests(page);
+  await page.goto(env.base + hash);
+  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
+  await settle(page);
+  assert.deepEqual(seen, ['/models/trefoil.glb'], 'the link fetched the trefoil');
+  assert.equal((await widgets(page)).error, undefined, 'an error window opened');
+  assert.equal(await page.evaluate(() => location.hash), hash, 'the scene of the link is open');
+  const shot = model(await viewShot(page));
+  assert.ok(shot.share > 0.05, `the trefoil is drawn (${(shot.share * 100).toFixed(1)}% of the view)`);
+  await context.close();
+});
+
 test('a bundled model that cannot be fetched is named in the error, and the scene stays', async () => {
   const { page, context } = await openLab();
   await page.route('**/models/trefoil.glb', (route) => route.fulfill({ status: 404, body: 'not here' }));
