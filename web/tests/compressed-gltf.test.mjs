@@ -137,13 +137,23 @@ test('Draco and meshopt models open through the file picker and show the same to
   await context.close();
 });
 
+// A fresh page at `fragment` whose requests for paths matching `watched` are kept in `seen` from
+// before the page loads (openLab's page would start watching after its first load).
+async function watchedLab(fragment, watched) {
+  const context = await env.browser.newContext({ viewport: { width: 1024, height: 640 } });
+  const page = await context.newPage();
+  page.on('filechooser', () => {}); // as page.mjs's newLabPage, for the picker
+  const seen = [];
+  page.on('request', (r) => { const p = new URL(r.url()).pathname; if (watched.test(p)) seen.push(p); });
+  await page.goto(env.base + fragment);
+  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
+  await settle(page);
+  return { page, context, seen };
+}
+
 // The Draco decoder is a module of its own (draco.js, draco.wasm), fetched the first time a model
 // needs it (core/gltf/draco_decoder.h), never with the page: most students never open one.
-function decoderRequests(page) {
-  const seen = [];
-  page.on('request', (r) => { if (/\/draco\.(js|wasm)$/.test(new URL(r.url()).pathname)) seen.push(new URL(r.url()).pathname); });
-  return seen;
-}
+const decoderFiles = /^\/draco\.(js|wasm)$/;
 
 // Until the scene's model is `name` (the decoder arrives in its own time), at most 20 s.
 async function waitForModel(page, name) {
@@ -156,13 +166,7 @@ async function waitForModel(page, name) {
 }
 
 test('the Draco decoder is not part of the first load: it is fetched once, when a Draco model is opened', async () => {
-  const context = await env.browser.newContext({ viewport: { width: 1024, height: 640 } });
-  const page = await context.newPage();
-  page.on('filechooser', () => {}); // as page.mjs's newLabPage, for the picker below
-  const seen = decoderRequests(page);
-  await page.goto(env.base);
-  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
-  await settle(page);
+  const { page, context, seen } = await watchedLab('', decoderFiles);
   await openThroughPicker(page, 'variant-meshopt.glb'); // meshopt is in the page itself
   assert.deepEqual(seen, [], 'the page, and a meshopt model, fetched no Draco decoder');
   assert.ok((await sceneModel(page)).endsWith('variant-meshopt.glb'));
@@ -204,11 +208,7 @@ test('a Draco decoder that cannot be fetched is named in the error, and the scen
 
 // The bundled models (the trefoil) are not in lab.data either: the site's models/ folder, fetched
 // the first time a preset names one (core/io/site_files.h), the open waiting meanwhile.
-function modelRequests(page) {
-  const seen = [];
-  page.on('request', (r) => { if (new URL(r.url()).pathname.startsWith('/models/')) seen.push(new URL(r.url()).pathname); });
-  return seen;
-}
+const modelFiles = /^\/models\//;
 
 async function openLink(page, link) {
   await page.evaluate((l) => Module.ccall('lab_open_link', null, ['string'], [l]), link);
@@ -217,12 +217,7 @@ async function openLink(page, link) {
 }
 
 test('the bundled trefoil is not part of the first load: it is fetched once, when a preset names it', async () => {
-  const context = await env.browser.newContext({ viewport: { width: 1024, height: 640 } });
-  const page = await context.newPage();
-  const seen = modelRequests(page);
-  await page.goto(env.base);
-  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
-  await settle(page);
+  const { page, context, seen } = await watchedLab('', modelFiles);
   await openLink(page, 'preset=05-full-phong');
   assert.deepEqual(seen, [], 'the page, and a preset with a built-in model, fetched no model');
 
@@ -252,12 +247,7 @@ test('an edited scene with the trefoil opens from its link: the trefoil is fetch
   assert.ok((await sceneModel(first.page)).endsWith('models/trefoil.glb'), `the link names the trefoil: ${await sceneModel(first.page)}`);
   await first.context.close();
 
-  const context = await env.browser.newContext({ viewport: { width: 1024, height: 640 } });
-  const page = await context.newPage();
-  const seen = modelRequests(page);
-  await page.goto(env.base + hash);
-  await page.waitForFunction(() => window.labReady === true, null, { timeout: 60000 });
-  await settle(page);
+  const { page, context, seen } = await watchedLab(hash, modelFiles);
   assert.deepEqual(seen, ['/models/trefoil.glb'], 'the link fetched the trefoil');
   assert.equal((await widgets(page)).error, undefined, 'an error window opened');
   assert.equal(await page.evaluate(() => location.hash), hash, 'the scene of the link is open');
