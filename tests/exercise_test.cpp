@@ -268,6 +268,8 @@ std::vector<BadFile> badFiles() {
     std::vector<std::string> seventeen(17, "a hint");
     return {
         {"NotJson", "{\n  \"format\": oops\n}", "line 2, column", "invalid JSON"},
+        {"NaNLiteral", "{\n  \"version\": NaN\n}", "line 2, column 14",
+         "invalid JSON: syntax error while parsing value - invalid literal; last read: '\"version\": N'"},
         {"NotAnObject", "[1, 2]", "", "an exercise is a JSON object, got an array"},
         {"FormatMissing", drop("format"), "format", "missing; expected \"lighting-lab-exercise\""},
         {"FormatWrong", set("format", "lighting-lab-scene"), "format", "expected \"lighting-lab-exercise\", got \"lighting-lab-scene\""},

@@ -133,6 +133,33 @@ TEST(Fit, NothingToFitIsAnErrorThatSaysWhy) {
     EXPECT_NE(error.find("specular colour is 0"), std::string::npos) << error;
 }
 
+// Issue 49: Cook-Torrance with ior 1 and the full Fresnel equations reflects nothing (F = 0), and
+// the fit blamed the specular colour, which was 1.
+TEST(Fit, AFresnelTermOfZeroIsNamedAsTheReason) {
+    Preset air = beckmann(0.3f, 1.0f);
+    air.cookTorrance.fresnel = FresnelMode::Full;
+    std::string error;
+    EXPECT_FALSE(fitSpecular(air, {BrdfModel::Phong}, error).has_value());
+    EXPECT_EQ(error.find("specular colour"), std::string::npos) << error;
+    EXPECT_NE(error.find("Fresnel term F is 0"), std::string::npos) << error;
+    EXPECT_NE(error.find("ior 1"), std::string::npos) << error;
+    air.cookTorrance.fresnel = FresnelMode::Schlick; // Schlick's F rises towards grazing even at F0 = 0
+    EXPECT_TRUE(fitSpecular(air, {BrdfModel::Phong}, error).has_value()) << error;
+}
+
+// Issue 49: a Cook-Torrance preset whose `check` lists D, F and G kept them when fitted to Phong,
+// and `lab check` on the fit gave three ERROR cases. The views the fitted model has stay.
+TEST(Fit, TheFitKeepsOnlyTheCheckViewsItsModelHas) {
+    Preset target = beckmann(0.3f);
+    target.check.views = {{"d", 1}, {"f", 1}, {"g", 1}, {"n-dot-l", 1}, {"specular", 1}};
+    target.check.maxMean = 0.5f;
+    const FitResult phong = fit(target, {BrdfModel::Phong});
+    EXPECT_EQ(phong.fitted.check.views, (std::vector<CheckView>{{"n-dot-l", 1}, {"specular", 1}}));
+    EXPECT_EQ(phong.fitted.check.maxMean, 0.5f) << "the tolerances stay";
+    const FitResult ct = fit(target, {BrdfModel::CookTorrance, Distribution::Ggx});
+    EXPECT_EQ(ct.fitted.check.views, target.check.views) << "Cook-Torrance has D, F and G";
+}
+
 TEST(Fit, SumsOverSixteenIncidentAngles) {
     const std::vector<float> angles = fitIncidentAngles();
     ASSERT_EQ(angles.size(), 16u);

@@ -115,5 +115,29 @@ TEST_F(Paths, SameFileFollowsLinksAndComparesNamesOfFilesToCome) {
     fs::current_path(before);
 }
 
+// A link to a file still to come is that file: two outputs, one through the link, write one file.
+TEST_F(Paths, ALinkToAFileToComeIsThatFile) {
+    fs::create_symlink("later.json", a / "link.json");
+    EXPECT_TRUE(sameFile(a / "link.json", a / "later.json"));
+    EXPECT_FALSE(sameFile(a / "link.json", a / "link2.json"));
+}
+
+// Issue 49: `lab fit` aborted (filesystem_error from std::filesystem::absolute) for a preset named
+// without a folder ("" is its folder) and for a relative path in a removed working folder.
+TEST_F(Paths, AbsolutePathNeverThrows) {
+    const fs::path before = fs::current_path();
+    fs::current_path(a);
+    EXPECT_EQ(absolutePath(""), fs::current_path());
+    EXPECT_EQ(absolutePath("x/../model.glb"), fs::current_path() / "model.glb");
+    EXPECT_EQ(absolutePath("/abs/./x"), fs::path("/abs/x"));
+    fs::create_directory(dir.path() / "gone");
+    fs::current_path(dir.path() / "gone");
+    fs::remove(dir.path() / "gone");
+    EXPECT_EQ(absolutePath("fit.json"), std::nullopt);
+    EXPECT_EQ(absolutePath(""), std::nullopt);
+    EXPECT_EQ(absolutePath("/abs/x"), fs::path("/abs/x")); // an absolute path needs no working folder
+    fs::current_path(before);
+}
+
 } // namespace
 } // namespace lab

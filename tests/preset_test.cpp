@@ -187,6 +187,11 @@ TEST(Preset, FileLevelProblems) {
         {std::string(100, '[') + std::string(100, ']'), "", "nested deeper"},
         {"{\"format\": \"lighting-lab-preset\", \"version\": 1,\n \"material\": {\"shininess\": 1e999}}", "line 2, column 28",
          "number out of range: 1e999"},
+        // Issue 49: the message kept only what followed the last ": ", which the excerpt holds too ("N'").
+        {"{\"format\": \"lighting-lab-preset\", \"version\": 1,\n \"material\": {\"shininess\": NaN}}", "line 2, column 28",
+         "invalid JSON: syntax error while parsing value - invalid literal; last read: '\"shininess\": N'"},
+        {"{\"format\": \"lighting-lab-preset\", \"version\": 1,\n \"material\": {\"shininess\": Infinity}}",
+         "line 2, column 28", "invalid literal; last read: '\"shininess\": I'"},
     };
     for (const Case& c : cases) {
         Diagnostics d;
@@ -388,6 +393,27 @@ TEST(Preset, OversizedFileIsRefusedBeforeReading) {
     EXPECT_FALSE(loadPreset(file, d));
     ASSERT_EQ(d.size(), 1u);
     EXPECT_NE(d[0].message.find("more than the limit"), std::string::npos);
+}
+
+// Issue 49: `lab fit` of a preset just under the limit wrote a fit over it (every key written, and
+// " (Phong fit)" in the name), which `lab plot --compare` then refused. No preset is saved that no
+// reader would open; the old file stays.
+TEST(Preset, APresetOverTheLimitIsNotSaved) {
+    TempFolder dir;
+    const fs::path file = dir.path() / "fit.json";
+    writeText(file, "old");
+    Preset p;
+    p.description = std::string(kMaxPresetBytes, 'x');
+    Diagnostics d;
+    EXPECT_FALSE(savePreset(p, file, d));
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_NE(d[0].message.find("more than the 1048576 a preset may have"), std::string::npos) << d[0].str();
+    EXPECT_NE(d[0].message.find("shorten its description"), std::string::npos) << d[0].str();
+    EXPECT_EQ(readText(file), "old");
+    p.description = std::string(kMaxPresetBytes - 4096, 'x'); // under the limit with every key: saved, and it loads
+    d.clear();
+    ASSERT_TRUE(savePreset(p, file, d)) << toString(d);
+    EXPECT_TRUE(loadPreset(file, d).has_value()) << toString(d);
 }
 
 TEST(Preset, GltfModelPathsStayInsideThePresetFolder) {

@@ -489,7 +489,8 @@ FrameOutput App::frame(const FrameInput& in) {
     ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.panels == Impl::Panels::All,
                                            m.panels != Impl::Panels::None, m.panel.tab});
     if (!m.started) {
-        ws.start(fs::current_path(), m.options.preset); // the first preset opens in the first frame
+        std::error_code ec; // a removed working folder has no path: the lab starts with none
+        ws.start(fs::current_path(ec), m.options.preset); // the first preset opens in the first frame
         m.started = true;
     }
     // The page's controls go first: this frame's panel shows their values.

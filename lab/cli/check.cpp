@@ -87,8 +87,7 @@ Image crop(const Image& image, int x, int y, int width, int height) {
 // they are the same. Lexical, as a browser resolves a relative link from the path the page was
 // opened by (a folder reached through a symbolic link included).
 std::string linkPrefix(const fs::path& from, const fs::path& folder) {
-    std::error_code ec;
-    fs::path a = fs::absolute(from, ec).lexically_normal(), b = fs::absolute(folder, ec).lexically_normal();
+    fs::path a = absolutePath(from).value_or(from), b = absolutePath(folder).value_or(folder);
     fs::path relative = b.lexically_relative(a);
     if (relative.empty() || relative == ".") {
         return relative.empty() && a != b ? b.generic_string() + "/" : "";

@@ -28,7 +28,8 @@ void addExerciseInputs(RunFiles& files, const LoadedExercise& exercise) {
 // The file's name when it is one of the shipped presets (or exercises) itself: the link names it.
 std::optional<std::string> shippedName(const fs::path& file, const fs::path& folder) {
     std::error_code ec;
-    if (folder.empty() || !fs::is_directory(folder, ec) || !fs::equivalent(fs::absolute(file).parent_path(), folder, ec)) {
+    const std::optional<fs::path> absolute = absolutePath(file);
+    if (folder.empty() || !absolute || !fs::is_directory(folder, ec) || !fs::equivalent(absolute->parent_path(), folder, ec)) {
         return std::nullopt;
     }
     return file.stem().string();

@@ -23,6 +23,12 @@ int runFit(const fs::path& presetFile, const FitRequest& request, const fs::path
     if (!filesUsable(files, "lab fit")) {
         return kExitBadInput;
     }
+    // A glTF model without a camera (or lights) in its file is framed, as `lab render` and the GUI
+    // frame it: the fit keeps that framing, which is the view of A it is compared with.
+    if (!frameForCells(*preset, diagnostics)) {
+        printDiagnostics(diagnostics);
+        return kExitBadInput;
+    }
     std::string error;
     std::optional<FitResult> fit = fitSpecular(preset->preset, request, error);
     if (!fit) {
@@ -32,8 +38,13 @@ int runFit(const fs::path& presetFile, const FitRequest& request, const fs::path
     // A glTF model is named relative to the preset's folder: relative to the output's now.
     Preset& fitted = fit->fitted;
     if (!fitted.model.gltf.empty()) {
-        const fs::path outFolder = fs::absolute(out).parent_path();
-        std::optional<fs::path> relative = relativeInside(outFolder, fs::absolute(preset->folder()) / fitted.model.gltf);
+        const std::optional<fs::path> outFile = absolutePath(out), presetFolder = absolutePath(preset->folder());
+        if (!outFile || !presetFolder) { // (filesUsable has refused a removed working folder for --out)
+            print(stderr, "lab fit: the working folder has been removed: name the preset and --out from the root\n");
+            return kExitBadInput;
+        }
+        const fs::path outFolder = outFile->parent_path();
+        std::optional<fs::path> relative = relativeInside(outFolder, *presetFolder / fitted.model.gltf);
         if (!relative) {
             print(stderr, "lab fit: --out: the model " + fitted.model.gltf + " would be outside " + outFolder.string() +
                               "; write the fitted preset in a folder that holds its model\n");

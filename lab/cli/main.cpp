@@ -40,6 +40,18 @@ std::filesystem::path shippedPresets() {
     return shipped;
 }
 
+// Writes `settings` to the settings file, or says on stderr why `what` is not remembered.
+void remember(const lab::Settings& settings, const std::string& what) {
+    std::string error;
+    const std::optional<std::filesystem::path> file = lab::settingsFile();
+    if (!file) {
+        lab::print(stderr, "lab: cannot remember " + what +
+                               ": neither XDG_CONFIG_HOME nor HOME is set (it applies to this run only)\n");
+    } else if (!lab::writeSettings(settings, *file, error)) {
+        lab::print(stderr, "lab: cannot remember " + what + ": " + error + "\n");
+    }
+}
+
 // The interactive lab on this build's platform (platform/window.h), or a preview without one.
 int runInteractive(const lab::CommandLine& line) {
     lab::AppOptions options;
@@ -50,33 +62,29 @@ int runInteractive(const lab::CommandLine& line) {
     options.frameBudgetSeconds = line.frameBudgetMs / 1000.0f;
     options.presetFolders.push_back(shippedPresets());
     // The course page's address: --share-base, remembered; else what was remembered.
-    std::string warning, error;
-    lab::Settings settings = lab::readSettings(lab::settingsFile(), warning);
+    std::string warning;
+    const std::optional<std::filesystem::path> file = lab::settingsFile();
+    lab::Settings settings = file ? lab::readSettings(*file, warning) : lab::Settings{};
     if (!warning.empty()) {
         lab::print(stderr, "lab: " + warning + "\n");
     }
     if (!line.shareBase.empty() && line.shareBase != settings.shareBase) {
         settings.shareBase = line.shareBase;
-        if (!lab::writeSettings(settings, lab::settingsFile(), error)) {
-            lab::print(stderr, "lab: cannot remember --share-base: " + error + "\n");
-        }
+        remember(settings, "--share-base");
     }
     options.shareBase = settings.shareBase;
     // The theme: --theme, remembered; else the one remembered; a choice in the panel is remembered too.
     if (line.theme && line.theme != settings.theme) {
         settings.theme = line.theme;
-        if (!lab::writeSettings(settings, lab::settingsFile(), error)) {
-            lab::print(stderr, "lab: cannot remember --theme: " + error + "\n");
-        }
+        remember(settings, "--theme");
     }
     options.theme = settings.theme;
     options.themeChosen = [](lab::Theme theme) {
-        std::string ignored, why;
-        lab::Settings now = lab::readSettings(lab::settingsFile(), ignored); // as it is now, share_base kept
-        now.theme = theme;
-        if (!lab::writeSettings(now, lab::settingsFile(), why)) {
-            lab::print(stderr, "lab: cannot remember the theme: " + why + "\n");
-        }
+        std::string ignored;
+        const std::optional<std::filesystem::path> now = lab::settingsFile();
+        lab::Settings kept = now ? lab::readSettings(*now, ignored) : lab::Settings{}; // as it is now, share_base kept
+        kept.theme = theme;
+        remember(kept, "the theme");
     };
     lab::WindowOptions window;
     window.fullscreen = line.fullscreen;
@@ -85,6 +93,7 @@ int runInteractive(const lab::CommandLine& line) {
         window.height = line.windowSize->height;
         window.sizeGiven = true;
     }
+    std::string error;
     switch (lab::runLab(options, window, error)) {
     case lab::WindowResult::Closed: return lab::kExitOk;
     case lab::WindowResult::Failed:

@@ -35,7 +35,7 @@ std::string RunFiles::problem() const {
         }
         if (auto it = read.find(out.id); it != read.end()) {
             const Entry& in = *it->second;
-            bool itself = out.replaces && fs::absolute(out.file, ec).lexically_normal() == fs::absolute(in.file, ec).lexically_normal();
+            bool itself = out.replaces && absolutePath(out.file) && absolutePath(out.file) == absolutePath(in.file);
             if (!itself) {
                 return named + "is " + in.label + ", which this run reads";
             }

@@ -16,7 +16,7 @@ namespace lab {
 
 namespace fs = std::filesystem;
 
-fs::path settingsFile() {
+std::optional<fs::path> settingsFile() {
     const char* config = std::getenv("XDG_CONFIG_HOME");
     if (config && *config && fs::path(config).is_absolute()) {
         return fs::path(config) / "lighting-lab" / "settings.json";
@@ -25,7 +25,7 @@ fs::path settingsFile() {
     if (home && *home) {
         return fs::path(home) / ".config" / "lighting-lab" / "settings.json";
     }
-    return fs::path("lighting-lab-settings.json");
+    return std::nullopt; // (not the working folder: nobody looks for a settings file there)
 }
 
 std::string shareBaseProblem(const std::string& url) {
@@ -92,7 +92,9 @@ Settings readSettings(const fs::path& file, std::string& warning) {
         return s;
     }
     if (auto base = j.find("share_base"); base != j.end()) {
-        if (!base->is_string() || !shareBaseProblem(base->get<std::string>()).empty()) {
+        if (base->is_string() && base->get<std::string>().empty()) {
+            // never given (written so before issue 49)
+        } else if (!base->is_string() || !shareBaseProblem(base->get<std::string>()).empty()) {
             warning = file.string() + ": share_base: " +
                       (base->is_string() ? shareBaseProblem(base->get<std::string>()) : std::string("expected a string")) +
                       " (ignored)";
@@ -113,7 +115,10 @@ Settings readSettings(const fs::path& file, std::string& warning) {
 bool writeSettings(const Settings& settings, const fs::path& file, std::string& error) {
     std::error_code ec;
     fs::create_directories(file.parent_path(), ec);
-    nlohmann::json j = {{"share_base", settings.shareBase}};
+    nlohmann::json j = nlohmann::json::object();
+    if (!settings.shareBase.empty()) {
+        j["share_base"] = settings.shareBase;
+    }
     if (settings.theme) {
         j["theme"] = std::string(toString(*settings.theme));
     }

@@ -1,8 +1,10 @@
 // settings.h — the desktop lab's small settings file: $XDG_CONFIG_HOME/lighting-lab/settings.json
-// (else ~/.config/lighting-lab/settings.json). It holds what a course sets once: the course
-// page's address for the QR codes (`lab --share-base URL`, remembered) and the theme (`--theme`,
-// or the one last chosen in the panel). Written atomically; a
-// file that does not read is reported and ignored, never overwritten unasked.
+// (else ~/.config/lighting-lab/settings.json; with neither variable set there is none, and nothing
+// is remembered). It holds what a course sets once: the course page's address for the QR codes
+// (`lab --share-base URL`, remembered) and the theme (`--theme`, or the one last chosen in the
+// panel); a setting never given is not written. Written atomically, through a symbolic link (a
+// dotfiles folder's file stays where it is); a file that does not read is reported and ignored,
+// never overwritten unasked.
 #pragma once
 
 #include "core/plots/theme.h"
@@ -18,9 +20,11 @@ struct Settings {
     std::optional<Theme> theme; // "theme": "dark" or "light"; none when never chosen
 };
 
-std::filesystem::path settingsFile();
+// The settings file, or nullopt when neither XDG_CONFIG_HOME (absolute) nor HOME is set.
+std::optional<std::filesystem::path> settingsFile();
 
 // The settings, or the defaults (with `warning` saying why, when the file exists but does not read).
+// An empty share_base, as earlier versions wrote for "never given", reads as never given.
 Settings readSettings(const std::filesystem::path& file, std::string& warning);
 bool writeSettings(const Settings& settings, const std::filesystem::path& file, std::string& error);
 

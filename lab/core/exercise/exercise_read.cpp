@@ -53,10 +53,8 @@ std::optional<PresetJson> parseJson(std::string_view text, const std::string& fi
         }
         return json;
     } catch (const PresetJson::parse_error& e) {
-        std::string what = e.what();
-        std::size_t colon = what.rfind(": ");
         diagnostics.push_back({file, lineColumn(text, e.byte == 0 ? 0 : e.byte - 1),
-                               "invalid JSON: " + shortened(colon == std::string::npos ? what : what.substr(colon + 2), 200)});
+                               "invalid JSON: " + shortened(parseErrorDetail(e.what()), 200)});
     } catch (const PresetJson::exception& e) {
         diagnostics.push_back({file, "", "invalid JSON: " + shortened(e.what(), 200)});
     }

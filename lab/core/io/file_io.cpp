@@ -1,6 +1,8 @@
 // file_io.cpp — bounded reads and atomic writes (POSIX).
 #include "core/io/file_io.h"
 
+#include "core/io/paths.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -97,7 +99,10 @@ MappedFile::~MappedFile() {
     }
 }
 
-std::string writeProblem(const fs::path& path) {
+namespace {
+
+// writeProblem for a path that is not a symbolic link.
+std::string fileWriteProblem(const fs::path& path) {
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0) {
         if (S_ISDIR(st.st_mode)) {
@@ -115,13 +120,34 @@ std::string writeProblem(const fs::path& path) {
     if (!S_ISDIR(st.st_mode)) {
         return folder.string() + " is not a folder";
     }
+    if (st.st_nlink == 0) { // a removed folder (the working folder, say) still answers stat()
+        return "the folder " + folder.string() + " has been removed";
+    }
     if (::access(folder.c_str(), W_OK) != 0) {
         return "cannot write in " + folder.string() + ": " + std::strerror(errno);
     }
     return "";
 }
 
-bool writeFileAtomic(const fs::path& path, std::string_view bytes, std::string& error, WriteSafety safety) {
+} // namespace
+
+std::string writeProblem(const fs::path& path) {
+    std::string error;
+    std::optional<fs::path> target = linkTarget(path, error);
+    if (!target) {
+        return error;
+    }
+    std::string why = fileWriteProblem(*target);
+    return why.empty() || *target == path ? why : "leads to " + target->string() + ": " + why;
+}
+
+bool writeFileAtomic(const fs::path& named, std::string_view bytes, std::string& error, WriteSafety safety) {
+    std::optional<fs::path> target = linkTarget(named, error); // through a link: its target is replaced
+    if (!target) {
+        error = "cannot write " + named.string() + ": " + error;
+        return false;
+    }
+    const fs::path& path = *target;
     fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
     std::string tmpl = (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
     int fd = ::mkstemp(tmpl.data());

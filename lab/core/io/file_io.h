@@ -3,7 +3,9 @@
 // Reads refuse anything that is not a regular file and anything larger than the caller's
 // limit before allocating. Writes are atomic: a temporary file in the same folder, flushed to
 // disk (unless the caller says the file can be made again), then renamed over the target, so a
-// failed write leaves the old file intact.
+// failed write leaves the old file intact. A path that is a symbolic link is written through: the
+// file it leads to is replaced and the link stays (core/io/paths.h linkTarget), as an ordinary
+// write would; a link into /proc (`/dev/stdout`) or one that loops is refused.
 #pragma once
 
 #include <cstddef>
@@ -47,9 +49,10 @@ enum class WriteSafety {
 };
 
 // Why writeFileAtomic(path, ...) could not succeed, found without writing anything; "" when it
-// can: the path is a folder, or is something other than a regular file (a device such as
-// /dev/null, a FIFO: the rename would replace it), or its folder does not exist, is not a folder,
-// or cannot be written in. Commands ask this of every output before they write any.
+// can: the path (or the file its links lead to: "leads to T: ...") is a folder, or is something
+// other than a regular file (a device such as /dev/null, a FIFO: the rename would replace it), or
+// its folder does not exist, is not a folder, has been removed or cannot be written in; or its
+// links loop or lead into /proc. Commands ask this of every output before they write any.
 std::string writeProblem(const std::filesystem::path& path);
 
 // Writes `bytes` to `path` atomically; false with `error` on any failure, the old file intact.

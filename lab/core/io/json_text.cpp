@@ -27,6 +27,12 @@ bool jsonNestingWithin(std::string_view text, int maxDepth) {
     return true;
 }
 
+std::string parseErrorDetail(std::string_view what) {
+    const std::size_t place = what.find("parse error");
+    const std::size_t colon = place == std::string_view::npos ? place : what.find(": ", place);
+    return std::string(colon == std::string_view::npos ? what : what.substr(colon + 2));
+}
+
 std::string lineColumn(std::string_view text, std::size_t offset) {
     std::size_t line = 1, column = 1;
     for (std::size_t i = 0; i < offset && i < text.size(); ++i) {

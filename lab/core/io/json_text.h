@@ -21,4 +21,11 @@ bool jsonNestingWithin(std::string_view text, int maxDepth);
 // "line L, column C" (from 1) of byte `offset` in `text`.
 std::string lineColumn(std::string_view text, std::size_t offset);
 
+// What a JSON parser's error says without the place it names in its own words (the caller says it
+// as lineColumn): nlohmann's "[json.exception.parse_error.101] parse error at line 2, column 16:
+// syntax error while parsing value - invalid literal; last read: '"shininess": N'" becomes
+// "syntax error while parsing value - invalid literal; last read: '"shininess": N'". The excerpt
+// may hold ": " itself; the cut is the first one after the place. The whole message otherwise.
+std::string parseErrorDetail(std::string_view what);
+
 } // namespace lab

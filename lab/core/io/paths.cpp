@@ -2,8 +2,11 @@
 #include "core/io/paths.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <climits>
+#include <vector>
 
 namespace lab {
 
@@ -25,7 +28,62 @@ std::optional<fs::path> resolved(const fs::path& path) {
     return c;
 }
 
+// Symbolic links followed before a write gives up: Linux's own limit (MAXSYMLINKS).
+constexpr int kMaxLinks = 40;
+
+// /proc and what lies below it, once `folder` is resolved.
+bool inProc(const fs::path& folder) {
+    std::optional<fs::path> c = resolved(folder);
+    if (!c) {
+        return false;
+    }
+    auto it = c->begin();
+    return c->is_absolute() && ++it != c->end() && *it == "proc";
+}
+
 } // namespace
+
+std::optional<fs::path> absolutePath(const fs::path& path) {
+    if (path.is_absolute()) {
+        return path.lexically_normal();
+    }
+    std::error_code ec;
+    fs::path working = fs::current_path(ec);
+    if (ec || working.empty()) {
+        return std::nullopt;
+    }
+    return path.empty() ? working.lexically_normal() : (working / path).lexically_normal();
+}
+
+std::optional<fs::path> linkTarget(const fs::path& path, std::string& error) {
+    fs::path at = path;
+    for (int links = 0;; ++links) {
+        struct stat st {};
+        if (at.empty() || ::lstat(at.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) {
+            return at; // not a link (or nothing there yet): the write lands here
+        }
+        const fs::path folder = at.parent_path().empty() ? fs::path(".") : at.parent_path();
+        if (inProc(folder)) {
+            error = (at == path ? "is " : "leads to " + at.string() + ", ") +
+                    "a process's open file, which the lab cannot replace (it writes a new file and renames it into "
+                    "place); name a file";
+            return std::nullopt;
+        }
+        if (links == kMaxLinks) {
+            error = "is a symbolic link that leads round in a loop";
+            return std::nullopt;
+        }
+        std::vector<char> text(PATH_MAX + 1);
+        ssize_t n = ::readlink(at.c_str(), text.data(), text.size() - 1);
+        if (n < 0) {
+            error = "cannot read the symbolic link " + at.string();
+            return std::nullopt;
+        }
+        // Not normalized: ".." in a link is the kernel's to resolve, after the folder's own links.
+        const fs::path to(std::string(text.data(), static_cast<std::size_t>(n)));
+        at = to.is_absolute() ? to : at.parent_path() / to;
+    }
+}
 
 fs::path canonicalFolder(const fs::path& folder) {
     if (std::optional<fs::path> c = resolved(folder)) {
@@ -66,10 +124,11 @@ FileIdentity fileIdentity(const fs::path& path) {
         id.inode = static_cast<std::uint64_t>(st.st_ino);
         return id;
     }
-    std::error_code ec;
-    fs::path absolute = fs::absolute(path, ec);
-    std::optional<fs::path> c = resolved(ec ? path : absolute);
-    id.path = (c ? *c : absolute.lexically_normal()).string();
+    std::string error;
+    const fs::path lands = linkTarget(path, error).value_or(path); // a link to a file to come is that file
+    std::optional<fs::path> absolute = absolutePath(lands);
+    std::optional<fs::path> c = resolved(absolute.value_or(lands));
+    id.path = (c ? *c : absolute.value_or(lands)).string();
     return id;
 }
 

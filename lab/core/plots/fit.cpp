@@ -6,6 +6,7 @@
 #include "core/plots/plot_data.h"
 #include "core/scene/limits.h"
 #include "core/scene/preset_choices.h"
+#include "core/scene/view_mode.h"
 
 #include <glm/glm.hpp>
 
@@ -175,7 +176,30 @@ Preset candidateFor(const Preset& target, const FitRequest& request) {
         }
     }
     c.terms.specular = true;
+    // The views `lab check` renders that the fitted model does not have (D, F, G for Phong): they
+    // would be ERROR cases of the fit's own check.
+    std::erase_if(c.check.views, [&](const CheckView& v) {
+        std::optional<ViewMode> mode = viewFromName(v.view);
+        return !mode || !notApplicable(*mode, c, v.light - 1).empty();
+    });
     return c;
+}
+
+// Why `target` reflects no specular light the fit could measure, in words (fitSpecular's error).
+std::string nothingToFit(const Preset& target) {
+    if (!target.terms.specular) {
+        return "nothing to fit: the preset's specular term is switched off";
+    }
+    if (target.material.specular == glm::vec3(0.0f)) {
+        return "nothing to fit: the preset reflects no specular light (its specular colour is 0)";
+    }
+    const CookTorrance& ct = target.cookTorrance;
+    if (target.brdf == BrdfModel::CookTorrance && ct.fresnel == FresnelMode::Full && ct.ior == 1.0f) {
+        return "nothing to fit: the preset reflects no specular light (Cook-Torrance's Fresnel term F is 0 at every "
+               "angle: the full Fresnel equations with ior 1, a surface with the index of the air)";
+    }
+    return "nothing to fit: the preset's specular lobe is too small to measure (below the rule's floor at every "
+           "angle the fit samples)";
 }
 
 void fitPhongLike(Objective& objective, FitResult& r) {
@@ -242,8 +266,7 @@ std::optional<FitResult> fitSpecular(const Preset& target, const FitRequest& req
     const Preset candidate = candidateFor(target, request);
     Objective objective(target, candidate);
     if (!(objective.targetSquares() > 1e-20)) {
-        error = !target.terms.specular ? "nothing to fit: the preset's specular term is switched off"
-                                       : "nothing to fit: the preset reflects no specular light (its specular colour is 0)";
+        error = nothingToFit(target);
         return std::nullopt;
     }
     FitResult r;

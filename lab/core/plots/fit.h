@@ -58,7 +58,9 @@ struct FitResult {
 
 // The fit of `request`'s model to `target`'s specular reflection; nullopt with `error` (one line)
 // when there is nothing to fit: the target reflects no specular light (its specular term off, its
-// Ks 0, or a shininess that leaves nothing above the quadrature's floor).
+// Ks 0, Cook-Torrance's F 0 everywhere, or a lobe that leaves nothing above the quadrature's floor).
+// The fitted preset is the target with the fitted model: its camera, lights and `check` as the
+// target's, less the views `lab check` cannot render for the fitted model (D, F, G for Phong).
 std::optional<FitResult> fitSpecular(const Preset& target, const FitRequest& request, std::string& error);
 
 // The incident angles the objective sums over: 0°, 5°, …, 75°.

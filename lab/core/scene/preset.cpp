@@ -218,8 +218,17 @@ bool savePreset(const Preset& preset, const fs::path& file, Diagnostics& diagnos
         diagnostics.push_back({file.string(), "", "refusing to save a preset with non-finite numbers"});
         return false;
     }
+    // Nor one over the size every reader refuses (a fit of a preset near the limit writes every key).
+    const std::string text = jsonText(json);
+    if (text.size() > kMaxPresetBytes) {
+        diagnostics.push_back({file.string(), "",
+                               "refusing to save a preset of " + std::to_string(text.size()) + " bytes, more than the " +
+                                   std::to_string(kMaxPresetBytes) + " a preset may have (so no reader would open it)" +
+                                   (preset.description.size() > text.size() / 2 ? "; shorten its description" : "")});
+        return false;
+    }
     std::string error;
-    if (!writeFileAtomic(file, jsonText(json), error)) {
+    if (!writeFileAtomic(file, text, error)) {
         diagnostics.push_back({file.string(), "", error});
         return false;
     }

@@ -194,7 +194,9 @@ std::optional<LoadedPreset> loadPreset(const std::filesystem::path& file, Diagno
 // The preset as JSON text with every key, in the documented order. Never writes non-finite values.
 std::string presetToJson(const Preset& preset);
 
-// Writes presetToJson(preset) atomically (temporary file, flush, rename).
+// Writes presetToJson(preset) atomically (temporary file, flush, rename); refuses, writing nothing,
+// a preset with non-finite numbers or one whose text would be over kMaxPresetBytes (no reader
+// would open it).
 bool savePreset(const Preset& preset, const std::filesystem::path& file, Diagnostics& diagnostics);
 
 // Resolves a preset's glTF path against its folder, refusing absolute paths, paths that leave

@@ -61,11 +61,8 @@ std::optional<Json> parseObject(std::string_view text, const std::string& file, 
     try {
         json = Json::parse(text);
     } catch (const Json::parse_error& e) {
-        // e.what() repeats the position in its own words; keep the part after the last ": ".
-        std::string what = e.what();
-        std::size_t colon = what.rfind(": ");
-        std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
-        diagnostics.push_back({file, lineColumn(text, e.byte == 0 ? 0 : e.byte - 1), "invalid JSON: " + shortened(detail, 200)});
+        diagnostics.push_back({file, lineColumn(text, e.byte == 0 ? 0 : e.byte - 1),
+                               "invalid JSON: " + shortened(parseErrorDetail(e.what()), 200)});
         return std::nullopt;
     } catch (const Json::out_of_range& e) {
         // A number too large for a double, e.g. 1e999: "... number overflow parsing '1e999'".
