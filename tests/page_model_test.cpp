@@ -3,6 +3,7 @@
 // no window, no ImGui, no GL, no browser (web/tests/access.test.mjs drives the real page).
 #include "app/page_model.h"
 
+#include "core/io/safe_text.h"
 #include "core/plots/describe.h"
 #include "core/scene/field_edit.h"
 #include "core/scene/field_table.h"
@@ -62,6 +63,79 @@ TEST(FieldEdit, RefusesWhatAPresetFileWouldAndLeavesThePresetAsItWas) {
         EXPECT_NE(problem.find(message), std::string::npos) << edit.first << " = " << edit.second << ": " << problem;
         EXPECT_EQ(p, before) << edit.first << " = " << edit.second;
     }
+}
+
+// Issue 49: a refusal showed an in-range number ("got 1e+06" for 1000001, "got 10" for 10.00001),
+// and 1e39 was "expected a number": the value is said as it was typed, as the command line says it.
+TEST(FieldEdit, ARefusedNumberIsSaidAsTyped) {
+    Preset p;
+    const Preset before = p;
+    const std::pair<std::pair<const char*, const char*>, const char*> cases[] = {
+        {{"material.shininess", "1000001"}, "material.shininess: must be in [0.001, 1000000], got 1000001"},
+        {{"cook_torrance.roughness", "10.00001"}, "cook_torrance.roughness: must be in [0.001, 10], got 10.00001"},
+        {{"material.shininess", "1e39"}, "material.shininess: number out of range: 1e39"},
+        {{"material.shininess", "1e309"}, "material.shininess: number out of range: 1e309"},
+        {{"material.diffuse[0]", "-0.5"}, "material.diffuse[0]: must be in [0, 1], got -0.5"},
+    };
+    p.brdf = BrdfModel::CookTorrance;
+    for (const auto& [edit, message] : cases) {
+        EXPECT_EQ(setFieldFromText(p, edit.first, edit.second), message) << edit.second;
+    }
+    p.brdf = before.brdf;
+    EXPECT_EQ(p, before);
+    p.lights[0].type = LightType::Spot;
+    EXPECT_EQ(setFieldFromText(p, "lights[0].exponent", "1000000.5"), "lights[0].exponent: must be in [0, 1000000], got 1000000.5");
+}
+
+// Issue 49: the page's edits took what the preset reader refuses — hex floats ("0x10" set 16) and
+// text after a NUL — through strtof. They are read by the reader's own JSON parser now.
+TEST(FieldEdit, ANumberIsReadAsAPresetFileReadsIt) {
+    Preset p;
+    const Preset before = p;
+    for (const std::string& text : std::initializer_list<std::string>{"0x10", "0X1p4", std::string("5\0junk", 6), "inf", "-", "e", "--5", "+5", "1e", "", " ",
+                                   "5 6", "[5]", "true", "\"5\"", "1,5"}) {
+        const std::string problem = setFieldFromText(p, "material.shininess", text);
+        EXPECT_TRUE(problem.starts_with("material.shininess: expected a number such as 0.5, -2 or 1e-3, got \""))
+            << printable(text) << ": " << problem;
+        EXPECT_EQ(p, before) << printable(text);
+    }
+    EXPECT_NE(setFieldFromText(p, "material.shininess", std::string("5\0junk", 6)).find("\"5\\0junk\""), std::string::npos)
+        << "a NUL is shown, not cut at";
+    // What a preset file holds is taken, and .5 and 5. as the panel's own fields take them.
+    for (const auto& [text, value] : {std::pair{"64", 64.0f}, {"6.4e1", 64.0f}, {" 12 ", 12.0f}, {".5", 0.5f}, {"5.", 5.0f},
+                                      {"-.5e1", -5.0f}, {"1E2", 100.0f}}) {
+        const char* path = value < 0.0f ? "model.translate[0]" : "material.shininess";
+        EXPECT_EQ(setFieldFromText(p, path, text), "") << text;
+        EXPECT_EQ(value < 0.0f ? p.model.translate.x : p.material.shininess, value) << text;
+    }
+    EXPECT_EQ(setFieldFromText(p, "model.subdivisions[0]", "0x20"),
+              "model.subdivisions[0]: expected a whole number in [1, 1024], got \"0x20\"");
+}
+
+// Issue 49: a 1 MB value put a 1,048,634-character line in the page's log and stalled its canvas; a
+// path likewise. Every value and path a refusal quotes is cut at 120 bytes with its size.
+TEST(FieldEdit, ARefusalQuotesAtMost120BytesOfWhatWasTyped) {
+    Preset p;
+    const std::string huge(1 << 20, '7'), digits(10000, '9');
+    for (const auto& [path, text] : {std::pair<std::string, std::string>{"material.shininess", huge + "x"},
+                                     {"material.shininess", digits},
+                                     {"lights[0].type", huge},
+                                     {"lights[0].enabled", huge},
+                                     {"model.subdivisions[0]", huge},
+                                     {huge, "1"},
+                                     {"material.shininess" + huge, "1"},
+                                     {std::string("material.shininess\0x", 20), "1"}}) {
+        const std::string problem = setFieldFromText(p, path, text);
+        EXPECT_FALSE(problem.empty());
+        EXPECT_LT(problem.size(), 400u) << problem.substr(0, 400);
+        EXPECT_EQ(printable(problem, true), problem) << "escaped for the page and the terminal";
+    }
+    EXPECT_EQ(setFieldFromText(p, "material.shininess", digits),
+              "material.shininess: number out of range: \"" + std::string(120, '9') + "\xe2\x80\xa6\" (10000 bytes)");
+    EXPECT_EQ(setFieldFromText(p, std::string("material.shininess\0x", 20), "1"),
+              "\"material.shininess\\0x\": not a field the page can set");
+    EXPECT_EQ(setFieldFromText(p, "", "1"), "\"\": not a field the page can set");
+    EXPECT_EQ(p, Preset{});
 }
 
 // Every field of the table that applies has its control, with the table's range and the preset's value.

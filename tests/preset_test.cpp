@@ -190,6 +190,9 @@ TEST(Preset, FileLevelProblems) {
         // Issue 49: the message kept only what followed the last ": ", which the excerpt holds too ("N'").
         {"{\"format\": \"lighting-lab-preset\", \"version\": 1,\n \"material\": {\"shininess\": NaN}}", "line 2, column 28",
          "invalid JSON: syntax error while parsing value - invalid literal; last read: '\"shininess\": N'"},
+        // nlohmann's parser takes a NUL for the end of its input: what follows was never read.
+        {std::string("{\"format\": \"lighting-lab-preset\", \"version\": 1}\n\0{\"brdf\": 7}", 60), "line 2, column 1",
+         "a NUL byte, which JSON text never holds"},
         {"{\"format\": \"lighting-lab-preset\", \"version\": 1,\n \"material\": {\"shininess\": Infinity}}",
          "line 2, column 28", "invalid literal; last read: '\"shininess\": I'"},
     };

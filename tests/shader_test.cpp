@@ -275,5 +275,25 @@ TEST(ReadableLog, DriverPlacesBecomeFileAndLine) {
     EXPECT_EQ(d[3].message, "10:12 is not a place");
 }
 
+// Issue 49: a 1 MB shader's compile log reached the page (and the editor) whole: a driver quotes
+// the source it refuses. Each line is cut at 1000 bytes, and the log at kMaxLogLines lines.
+TEST(ReadableLog, AQuotedSourceIsCutAndALongLogBounded) {
+    Diagnostics d;
+    readableLog("ERROR: 0:1: '" + std::string(1 << 20, 'x') + "' : syntax error\n", "lit.frag", d);
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_LT(d[0].message.size(), 1100u);
+    EXPECT_TRUE(d[0].message.starts_with("ERROR: lit.frag:1: 'xxx")) << d[0].message.substr(0, 80);
+    EXPECT_TRUE(d[0].message.ends_with("(1048605 bytes)")) << d[0].message.substr(d[0].message.size() - 40);
+    std::string many;
+    for (int i = 1; i <= 500; ++i) {
+        many += "0:" + std::to_string(i) + ": error: undeclared\n";
+    }
+    d.clear();
+    readableLog(many, "lit.frag", d);
+    ASSERT_EQ(d.size(), kMaxLogLines + 1) << toString(d);
+    EXPECT_EQ(d[kMaxLogLines - 1].message, "lit.frag:50: error: undeclared");
+    EXPECT_EQ(d.back().message, "(and 450 more lines of the driver's log)");
+}
+
 } // namespace
 } // namespace lab

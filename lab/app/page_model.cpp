@@ -391,8 +391,12 @@ std::string applyPageEdits(Workspace& ws, const std::vector<PageEdit>& edits, co
                            std::vector<Request>& requests) {
     std::string problems;
     for (const PageEdit& e : edits) {
+        if (e.path.empty() && e.command < 0) { // a field edit without a path: refused, said (not dropped)
+            problems += (problems.empty() ? "" : "\n") + setFieldFromText(ws.edited(), e.path, e.value);
+            continue;
+        }
         if (e.path.empty()) {
-            if (e.command < 0 || e.command > static_cast<int>(kLastCommand)) {
+            if (e.command > static_cast<int>(kLastCommand)) {
                 continue;
             }
             auto command = static_cast<Command>(e.command);
@@ -410,7 +414,8 @@ std::string applyPageEdits(Workspace& ws, const std::vector<PageEdit>& edits, co
         if (std::string* field = toolField(e.path, tools)) {
             *field = e.value;
         } else if (ws.exercise() && !fieldIsOpen(ws.exercise()->exercise, path)) {
-            problem = path + ": this exercise does not let you change it";
+            problem = (parseFieldPath(path) && path.size() <= 120 ? path : inQuotes(path)) +
+                      ": this exercise does not let you change it";
         } else {
             problem = setFieldFromText(ws.edited(), path, e.value);
         }

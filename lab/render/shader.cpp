@@ -1,6 +1,7 @@
 // shader.cpp — shader assembly, compilation and readable error logs.
 #include "render/shader.h"
 
+#include "core/io/safe_text.h"
 #include "render/shader_sources.h"
 
 #include <algorithm>
@@ -78,6 +79,7 @@ long readNumber(const std::string& line, std::size_t at, std::size_t& end) {
 void readableLog(std::string_view log, std::string_view bodyName, Diagnostics& out) {
     std::istringstream lines{std::string(log)};
     std::string line;
+    std::size_t kept = 0, left = 0;
     while (std::getline(lines, line)) {
         if (!line.empty() && line.back() == '\r') {
             line.pop_back();
@@ -85,6 +87,12 @@ void readableLog(std::string_view log, std::string_view bodyName, Diagnostics& o
         if (line.empty()) {
             continue;
         }
+        if (kept == kMaxLogLines) {
+            ++left;
+            continue;
+        }
+        ++kept;
+        line = shortened(line, 1000);
         for (std::size_t at = line.find('0'); at != std::string::npos; at = line.find('0', at + 1)) {
             if ((at > 0 && line[at - 1] != ' ') || at + 2 >= line.size() || !isDigit(line[at + 2])) {
                 continue;
@@ -104,6 +112,9 @@ void readableLog(std::string_view log, std::string_view bodyName, Diagnostics& o
             }
         }
         out.push_back({"", "", line});
+    }
+    if (left > 0) {
+        out.push_back({"", "", "(and " + std::to_string(left) + " more lines of the driver's log)"});
     }
 }
 

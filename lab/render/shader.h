@@ -40,6 +40,10 @@ bool checkAscii(const StageSources& sources, Diagnostics& diagnostics, int maxLi
 // A driver's info log as diagnostics, one per line, with the first "0:12" (Mesa, ANGLE) or
 // "0(12)" (NVIDIA) of each rewritten as the file and line it is in: "lighting.glsl:12" for a
 // line of the assembled source inside lighting.glsl, "lit.frag:12" (`bodyName`) in the body.
+// A driver quotes the source: each line is cut at 1000 bytes (core/io/safe_text.h shortened), and
+// after kMaxLogLines lines one more says how many were left out, so that a 1 MB shader's log does
+// not reach the editor, the page and the terminal whole.
+inline constexpr std::size_t kMaxLogLines = 50;
 void readableLog(std::string_view log, std::string_view bodyName, Diagnostics& out);
 
 // Compiles and links; on failure adds one diagnostic per log line, with file names restored

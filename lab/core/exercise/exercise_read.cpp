@@ -45,6 +45,10 @@ std::optional<PresetJson> parseJson(std::string_view text, const std::string& fi
         diagnostics.push_back({file, "", "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels"});
         return std::nullopt;
     }
+    if (std::string nul = nulProblem(text); !nul.empty()) {
+        diagnostics.push_back({file, lineColumn(text, text.find('\0')), nul});
+        return std::nullopt;
+    }
     try {
         PresetJson json = PresetJson::parse(text);
         if (!json.is_object()) {

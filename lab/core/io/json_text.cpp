@@ -27,6 +27,12 @@ bool jsonNestingWithin(std::string_view text, int maxDepth) {
     return true;
 }
 
+std::string nulProblem(std::string_view text) {
+    return text.find('\0') == std::string_view::npos
+               ? ""
+               : "a NUL byte, which JSON text never holds (inside a string it is written \\u0000)";
+}
+
 std::string parseErrorDetail(std::string_view what) {
     const std::size_t place = what.find("parse error");
     const std::size_t colon = place == std::string_view::npos ? place : what.find(": ", place);

@@ -18,6 +18,11 @@ namespace lab {
 // not count). Malformed text is the parser's to report; this only bounds its depth.
 bool jsonNestingWithin(std::string_view text, int maxDepth);
 
+// "a NUL byte (...)" when `text` holds one, else "". JSON text holds none (inside a string it is
+// written \u0000), and nlohmann's parser takes one for the end of its input: "{...}\0anything" would
+// read as "{...}" and the rest go unread.
+std::string nulProblem(std::string_view text);
+
 // "line L, column C" (from 1) of byte `offset` in `text`.
 std::string lineColumn(std::string_view text, std::size_t offset);
 

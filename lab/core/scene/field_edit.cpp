@@ -1,45 +1,62 @@
 // field_edit.cpp — a field set from text, checked as the reader checks it (field_edit.h).
 #include "core/scene/field_edit.h"
 
+#include "core/io/safe_text.h"
 #include "core/scene/field_path.h"
 #include "core/scene/field_table.h"
+#include "core/scene/preset_reader.h"
 
 #include <glm/glm.hpp>
 
-#include <charconv>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <optional>
 
 namespace lab {
 
 namespace {
 
-std::optional<float> number(std::string_view text) {
-    std::string s(text);
-    char* end = nullptr;
-    float v = std::strtof(s.c_str(), &end);
-    if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v)) {
-        return std::nullopt;
+using preset_detail::Json;
+
+// A number as the page typed it, written as JSON: spaces around it dropped, and the two forms people
+// type and the panel's own fields take, ".5" and "5.", as 0.5 and 5. Nothing else changes, so that the
+// parser below refuses what a preset file may not hold (hex floats, "inf", '+', text after a NUL).
+std::string asJsonNumber(std::string_view text) {
+    const std::size_t first = text.find_first_not_of(" \t"), last = text.find_last_not_of(" \t");
+    std::string s(first == std::string_view::npos ? std::string_view{} : text.substr(first, last - first + 1));
+    const std::size_t sign = s.starts_with('-') ? 1 : 0;
+    if (s.size() > sign + 1 && s[sign] == '.') {
+        s.insert(sign, "0");
     }
-    return v;
+    const std::size_t dot = s.find('.');
+    if (dot != std::string::npos && dot > sign && (dot + 1 == s.size() || s[dot + 1] == 'e' || s[dot + 1] == 'E')) {
+        s.insert(dot + 1, "0");
+    }
+    return s;
 }
 
-std::optional<int> integer(std::string_view text) {
-    int v = 0;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || end != text.data() + text.size()) {
-        return std::nullopt;
+enum class Parsed { Number, NotANumber, OutOfRange };
+
+// `text` read by the preset reader's own JSON parser (one parser instantiation, as sweep.cpp's).
+Parsed parseNumber(std::string_view text, Json& number) {
+    if (hasNul(text)) { // nlohmann's parser takes a NUL for the end of its input: "5\0junk" would be 5
+        return Parsed::NotANumber;
     }
-    return v;
+    try {
+        number = Json::parse(asJsonNumber(text));
+        return number.is_number() ? Parsed::Number : Parsed::NotANumber;
+    } catch (const Json::out_of_range&) { // beyond a double: 1e309
+        return Parsed::OutOfRange;
+    } catch (const Json::exception&) {
+        return Parsed::NotANumber;
+    }
 }
 
-std::string shown(float v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", static_cast<double>(v));
-    return buffer;
+// A number as typed, for a message: itself when short, else quoted and cut (safe_text.h's rule).
+std::string typed(std::string_view text) {
+    const std::string s = asJsonNumber(text);
+    return s.size() <= 120 && printable(s, true) == s ? s : inQuotes(text);
 }
+
+constexpr const char* kExpectedNumber = "expected a number such as 0.5, -2 or 1e-3, got ";
 
 // The value set on `p` by kind; "" or what is wrong with `text` (completing "<path>: ").
 std::string setByKind(const FieldRow& row, Preset& p, LightDesc* light, std::optional<std::size_t> element,
@@ -53,20 +70,22 @@ std::string setByKind(const FieldRow& row, Preset& p, LightDesc* light, std::opt
     case FieldKind::Vec3:
     case FieldKind::Color:
     case FieldKind::Direction: {
-        std::optional<float> v = number(text);
-        if (!v) {
-            return "expected a number, got \"" + std::string(text) + "\"";
+        Json number;
+        const Parsed parsed = parseNumber(text, number);
+        if (parsed != Parsed::Number) {
+            return parsed == Parsed::OutOfRange ? "number out of range: " + typed(text) : kExpectedNumber + inQuotes(text);
         }
-        if (!limits::contains(*row.range, *v)) {
-            return std::string("must be ") + row.range->text + ", got " + shown(*v);
+        if (std::string why = preset_detail::numberProblem(number.get<double>(), *row.range, typed(text)); !why.empty()) {
+            return why;
         }
+        const float v = static_cast<float>(number.get<double>());
         if (row.kind == FieldKind::Number) {
-            fieldValue<float>(row, p, light) = *v;
+            fieldValue<float>(row, p, light) = v;
             return {};
         }
         glm::vec3& value = fieldValue<glm::vec3>(row, p, light);
         glm::vec3 changed = value;
-        changed[static_cast<int>(*element)] = *v;
+        changed[static_cast<int>(*element)] = v;
         if (row.kind == FieldKind::Direction && glm::length(changed) < limits::kMinDirectionLength) {
             return "a direction must not be (0, 0, 0)";
         }
@@ -74,17 +93,19 @@ std::string setByKind(const FieldRow& row, Preset& p, LightDesc* light, std::opt
         return {};
     }
     case FieldKind::Int2: {
-        std::optional<int> v = integer(text);
-        if (!v || !limits::contains(*row.intRange, *v)) {
+        Json number;
+        const bool whole = parseNumber(text, number) == Parsed::Number && number.is_number_integer() &&
+                           number.get<double>() >= row.intRange->min && number.get<double>() <= row.intRange->max;
+        if (!whole) {
             return "expected a whole number in [" + std::to_string(row.intRange->min) + ", " +
-                   std::to_string(row.intRange->max) + "], got \"" + std::string(text) + "\"";
+                   std::to_string(row.intRange->max) + "], got " + inQuotes(text);
         }
-        fieldValue<glm::ivec2>(row, p, light)[static_cast<int>(*element)] = *v;
+        fieldValue<glm::ivec2>(row, p, light)[static_cast<int>(*element)] = number.get<int>();
         return {};
     }
     case FieldKind::Switch:
         if (text != "true" && text != "false") {
-            return "expected true or false, got \"" + std::string(text) + "\"";
+            return "expected true or false, got " + inQuotes(text);
         }
         fieldValue<bool>(row, p, light) = text == "true";
         return {};
@@ -95,7 +116,7 @@ std::string setByKind(const FieldRow& row, Preset& p, LightDesc* light, std::opt
                 return {};
             }
         }
-        return "not one of its choices: \"" + std::string(text) + "\"";
+        return "not one of its choices: " + inQuotes(text);
     case FieldKind::Text: fieldValue<std::string>(row, p, light) = std::string(text); return {};
     }
     return "cannot be set";
@@ -104,9 +125,11 @@ std::string setByKind(const FieldRow& row, Preset& p, LightDesc* light, std::opt
 } // namespace
 
 std::string setFieldFromText(Preset& preset, std::string_view path, std::string_view text) {
-    const std::string where(path);
-    std::optional<std::vector<PathStep>> steps = parseFieldPath(path);
-    const FieldRow* row = steps ? fieldRow(path) : nullptr;
+    // The path as the refusal says it: itself when a path of the grammar, else quoted and cut.
+    const std::optional<std::vector<PathStep>> parsedPath = parseFieldPath(path);
+    const std::string where = parsedPath && path.size() <= 120 && !hasNul(path) ? std::string(path) : inQuotes(path);
+    const std::optional<std::vector<PathStep>>& steps = parsedPath;
+    const FieldRow* row = steps && !hasNul(path) ? fieldRow(path) : nullptr;
     if (!row || (row->custom && row->kind != FieldKind::Choice && row->kind != FieldKind::Int2) ||
         (row->style & kStyleHidden)) {
         return where + ": not a field the page can set";

@@ -57,6 +57,10 @@ std::optional<Json> parseObject(std::string_view text, const std::string& file, 
         diagnostics.push_back({file, "", "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels"});
         return std::nullopt;
     }
+    if (std::string nul = nulProblem(text); !nul.empty()) {
+        diagnostics.push_back({file, lineColumn(text, text.find('\0')), nul});
+        return std::nullopt;
+    }
     Json json;
     try {
         json = Json::parse(text);

@@ -25,6 +25,21 @@
 namespace lab::preset_detail {
 
 using Json = nlohmann::ordered_json;
+
+// What is wrong with `value`, read as `written`, for a float field within `range`; "" when nothing
+// is. The preset reader's check, which the page's field edits make too (field_edit.cpp), so that
+// both say the same of the same number: "number out of range: 1e39" (finite as a double, not as
+// a float), "must be in [0.001, 1000000], got 1000001".
+inline std::string numberProblem(double value, const limits::Range& range, const std::string& written) {
+    const float f = static_cast<float>(value);
+    if (!std::isfinite(value) || !std::isfinite(f)) {
+        return "number out of range: " + written;
+    }
+    if (!limits::contains(range, f)) {
+        return std::string("must be ") + range.text + ", got " + written;
+    }
+    return {};
+}
 using Keys = std::span<const std::string_view>;
 
 class Reader {
@@ -199,14 +214,11 @@ private:
             errorAt(std::move(where), "expected a number, got " + describe(v));
             return;
         }
-        double d = v.get<double>();
-        float f = static_cast<float>(d);
-        if (!std::isfinite(d) || !std::isfinite(f)) {
-            errorAt(std::move(where), "number out of range: " + v.dump());
-        } else if (!limits::contains(range, f)) {
-            errorAt(std::move(where), std::string("must be ") + range.text + ", got " + v.dump());
+        const double d = v.get<double>();
+        if (std::string why = numberProblem(d, range, v.dump()); !why.empty()) {
+            errorAt(std::move(where), std::move(why));
         } else {
-            dst = f;
+            dst = static_cast<float>(d);
         }
     }
 
