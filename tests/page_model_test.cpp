@@ -130,6 +130,8 @@ TEST(FieldEdit, ARefusalQuotesAtMost120BytesOfWhatWasTyped) {
         EXPECT_LT(problem.size(), 400u) << problem.substr(0, 400);
         EXPECT_EQ(printable(problem, true), problem) << "escaped for the page and the terminal";
     }
+    EXPECT_EQ(setFieldFromText(p, "material.shininess", "1" + digits + "x").find("material.shininess: expected a number"), 0u)
+        << "not a number, though its digits alone would be too large";
     EXPECT_EQ(setFieldFromText(p, "material.shininess", digits),
               "material.shininess: number out of range: \"" + std::string(120, '9') + "\xe2\x80\xa6\" (10000 bytes)");
     EXPECT_EQ(setFieldFromText(p, std::string("material.shininess\0x", 20), "1"),
@@ -191,13 +193,17 @@ TEST(PageModel, EditsAndCommandsFromThePageTakeThePanelsWay) {
     Workspace ws{WorkspaceOptions{{kPresets}, {}, true, {}}};
     ws.start(kPresets);
     std::vector<Request> requests;
-    std::string problems = applyPageEdits(ws, {{"material.shininess", "12"}, {"material.shininess", "-5"},
-                                               {"", "", static_cast<int>(Command::OrbitLeft), -1},
-                                               {"", "", static_cast<int>(Command::OpenPresetAt), 2},
-                                               {"", "", 100000, -1}},
-                                          PageFacts{}, requests);
+    std::vector<PageRefusal> refused = applyPageEdits(ws, {{"material.shininess", "12"}, {"material.shininess", "-5"},
+                                                           {"", "", static_cast<int>(Command::OrbitLeft), -1},
+                                                           {"", "", static_cast<int>(Command::OpenPresetAt), 2},
+                                                           {"", "", 100000, -1}, {"lights[00].type", "laser"}},
+                                                      PageFacts{}, requests);
     EXPECT_EQ(ws.edited().material.shininess, 12.0f);
-    EXPECT_NE(problems.find("material.shininess: must be"), std::string::npos) << problems;
+    ASSERT_EQ(refused.size(), 2u);
+    EXPECT_EQ(refused[0].path, "material.shininess");
+    EXPECT_EQ(refused[0].message, "material.shininess: must be in [0.001, 1000000], got -5");
+    EXPECT_EQ(refused[1].path, "lights[00].type") << "the path as the page sent it: its control's";
+    EXPECT_EQ(refused[1].message.rfind("lights[0].type: not one of its choices: \"laser\"", 0), 0u) << refused[1].message;
     ASSERT_EQ(requests.size(), 2u) << "a command number the table does not have is dropped";
     EXPECT_EQ(requests[0].command, Command::OrbitLeft);
     EXPECT_EQ(requests[1].command, Command::OpenPresetAt);
@@ -208,6 +214,31 @@ TEST(PageModel, EditsAndCommandsFromThePageTakeThePanelsWay) {
     EXPECT_NEAR(glm::length(ws.a().camera.eye - ws.a().camera.target), glm::length(eye - ws.a().camera.target), 1e-4f);
     ws.endFrame(false);
     EXPECT_TRUE(ws.document().canUndo());
+}
+
+// Issue 49: an edit without a path was dropped without a word; every refusal reaches the page's
+// description, each with the path of the control that sent it, as well as the message log.
+TEST(PageModel, RefusedEditsAreSaidAndNamedForTheirControls) {
+    Workspace ws{WorkspaceOptions{{kPresets}, {}, true, {}}};
+    ws.start(kPresets);
+    std::vector<Request> requests;
+    std::vector<PageRefusal> refused;
+    ui::PanelState panel;
+    takePageInput(ws, {{"", "5"}, {"material.shininess", "--5"}, {"material.shininess", "7"}}, std::nullopt, PageFacts{},
+                  panel, refused);
+    ASSERT_EQ(refused.size(), 2u);
+    EXPECT_EQ(refused[0].message, "\"\": not a field the page can set");
+    EXPECT_EQ(refused[1].message, "material.shininess: expected a number such as 0.5, -2 or 1e-3, got \"--5\"");
+    EXPECT_EQ(ws.edited().material.shininess, 7.0f) << "the edit after a refused one is taken";
+    PageFacts facts;
+    facts.refused = refused;
+    const json page = json::parse(PageModel().json(ws, facts));
+    ASSERT_EQ(page["messages"]["refused"].size(), 2u);
+    EXPECT_EQ(page["messages"]["refused"][1]["path"], "material.shininess");
+    EXPECT_EQ(page["messages"]["refused"][1]["message"], refused[1].message);
+    const std::vector<std::string> notes = ws.takeNotes();
+    ASSERT_FALSE(notes.empty());
+    EXPECT_NE(notes.back().find("got \"--5\""), std::string::npos) << notes.back();
 }
 
 TEST(PageModel, AnExerciseShowsOnlyItsOpenFieldsAndRefusesTheOthers) {
@@ -233,8 +264,9 @@ TEST(PageModel, AnExerciseShowsOnlyItsOpenFieldsAndRefusesTheOthers) {
     EXPECT_TRUE(page.contains("exercise"));
     std::vector<Request> requests;
     const glm::vec3 diffuse = ws.edited().material.diffuse;
-    std::string problems = applyPageEdits(ws, {{"material.diffuse[0]", "0.1"}}, PageFacts{}, requests);
-    EXPECT_NE(problems.find("does not let you change it"), std::string::npos) << problems;
+    std::vector<PageRefusal> refused = applyPageEdits(ws, {{"material.diffuse[0]", "0.1"}}, PageFacts{}, requests);
+    ASSERT_EQ(refused.size(), 1u);
+    EXPECT_EQ(refused[0].message, "material.diffuse[0]: this exercise does not let you change it");
     EXPECT_EQ(ws.edited().material.diffuse, diffuse);
 }
 

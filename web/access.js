@@ -36,7 +36,12 @@
     return e;
   };
   const idOf = (path) => 'f-' + path.replace(/[^a-z0-9_]/gi, '_');
-  const send = (path, value) => Module.ccall('lab_page_field', null, ['string', 'string'], [path, String(value)]);
+  // A field's new value to the lab (web_window.cpp labJsFieldSender: any text, NULs and megabytes
+  // included); the control's last refusal goes, and comes back if the lab refuses this one too.
+  const send = (path, value) => {
+    refusal(path, '');
+    Module.labPageField(path, String(value));
+  };
   const command = (b) => Module._lab_page_command(b.command, b.index === undefined ? -1 : b.index);
   const focusPath = (path) => Module.ccall('lab_page_focus', null, ['string'], [path]);
   const labelOf = (c) => c.label + (c.unit ? ' (' + c.unit + ')' : '');
@@ -45,17 +50,69 @@
     return c.unit ? n + ' ' + (units[c.unit] || c.unit) : String(n);
   };
 
-  // One number: a slider where the table's slider spans its whole range, a number field otherwise.
+  // One number: a slider where the table's slider spans its whole range, else a text field that is a
+  // spin button (Up and Down step it, spinKey). Not <input type=number>: the browser keeps to itself
+  // what it cannot read ("1e309", "-", "--5" leave its value empty), so nothing reached the lab and
+  // nobody heard why. Here every text goes to the lab, which reads it as a preset file's number and
+  // says why it refuses one, in the message log and in the field's description (WCAG 3.3.1).
   function numberInput(c, path, name, value) {
-    const input = el('input', { type: c.slider ? 'range' : 'number', id: idOf(path), min: c.min, max: c.max,
-      step: c.step, 'data-path': path, 'aria-label': name, 'aria-describedby': c.help ? idOf(c.path) + '-help' : null });
-    input.value = value;
-    if (c.slider) input.setAttribute('aria-valuetext', spoken(value, c));
-    input.addEventListener(c.slider ? 'input' : 'change', () => {
-      // The lab checks the range and says what is wrong (a value off the step's grid is taken).
-      if (input.value !== '' && !input.validity.badInput) send(path, input.value);
-    });
+    const common = { id: idOf(path), 'data-path': path, 'aria-label': name,
+      'aria-describedby': c.help ? idOf(c.path) + '-help' : null };
+    const input = c.slider
+      ? el('input', { type: 'range', min: c.min, max: c.max, step: c.step, ...common })
+      : el('input', { type: 'text', role: 'spinbutton', inputmode: c.min < 0 ? 'text' : 'decimal', autocomplete: 'off',
+        spellcheck: 'false', 'aria-valuemin': c.min, 'aria-valuemax': c.max, 'data-step': c.step, ...common });
+    shownValue(input, value, c);
+    // The lab checks the range and says what is wrong (a value off the step's grid is taken).
+    input.addEventListener(c.slider ? 'input' : 'change', () => send(path, input.value));
     return input;
+  }
+
+  // The lab's value in a number control: the text, and a spin button's value for a screen reader.
+  function shownValue(input, v, c) {
+    if (input.value !== String(v)) input.value = v;
+    if (input.type === 'range') input.setAttribute('aria-valuetext', spoken(v, c));
+    else {
+      input.setAttribute('aria-valuenow', v);
+      input.setAttribute('aria-valuetext', spoken(v, c));
+    }
+  }
+
+  // Up and Down on a number field: one step (PageUp and PageDown ten) from the lab's value, within
+  // the field's range, as a native spin button does.
+  function spinKey(e) {
+    const steps = { ArrowUp: 1, ArrowDown: -1, PageUp: 10, PageDown: -10 }[e.key];
+    if (steps === undefined || e.altKey || e.ctrlKey || e.metaKey) return false;
+    const input = e.target, now = Number(input.getAttribute('aria-valuenow'));
+    const min = Number(input.getAttribute('aria-valuemin')), max = Number(input.getAttribute('aria-valuemax'));
+    const next = Math.min(max, Math.max(min, Number((now + steps * Number(input.dataset.step)).toPrecision(12))));
+    input.value = next;
+    send(input.dataset.path, String(next));
+    return true;
+  }
+
+  // Why the lab refused the text of the control at `path` ("" clears it): said beside the control, which
+  // is marked invalid and described by it, until the next value it sends.
+  function refusal(path, message) {
+    const input = root.querySelector(`[data-path="${CSS.escape(path)}"]:not([type=radio])`);
+    if (!input) return;
+    const id = idOf(path) + '-error';
+    let note = document.getElementById(id);
+    const described = (input.getAttribute('aria-describedby') || '').split(' ').filter((d) => d && d !== id);
+    if (!message) {
+      if (note) note.remove();
+      input.removeAttribute('aria-invalid');
+    } else {
+      if (!note) {
+        note = el('span', { id, class: 'error' });
+        input.after(note);
+      }
+      note.textContent = message;
+      input.setAttribute('aria-invalid', 'true');
+      described.push(id);
+    }
+    if (described.length) input.setAttribute('aria-describedby', described.join(' '));
+    else input.removeAttribute('aria-describedby');
   }
 
   function control(c) {
@@ -123,7 +180,11 @@
     }
     // The shader editor's compile log or the sweep's problem; the QR code's link while it is shown.
     if (s.log) box.append(el('pre', { class: 'log', role: 'status', text: s.log }));
-    if (s.link) box.append(el('p', {}, 'The QR code opens ', el('a', { href: s.link, text: s.link })));
+    if (s.link && s.linkProblem) {
+      box.append(el('p', { role: 'status' }, 'No QR code: ' + s.linkProblem + ' The link: ', el('a', { href: s.link, text: s.link })));
+    } else if (s.link) {
+      box.append(el('p', {}, 'The QR code opens ', el('a', { href: s.link, text: s.link })));
+    }
     return box;
   }
 
@@ -195,11 +256,13 @@
         values.forEach((v, i) => {
           const path = Array.isArray(c.value) ? c.path + '[' + i + ']' : c.path;
           for (const input of root.querySelectorAll(`[data-path="${CSS.escape(path)}"]`)) {
-            const editing = input === document.activeElement && ['number', 'text', 'textarea'].includes(input.type);
+            const editing = input === document.activeElement && ['text', 'textarea'].includes(input.type);
             if (input.type === 'radio') input.checked = input.value === v;
             else if (input.type === 'checkbox') input.checked = v;
-            else if (!editing && input.value !== String(v)) input.value = v;
-            if (input.type === 'range') input.setAttribute('aria-valuetext', spoken(v, c));
+            else if (typeof v === 'number') {
+              if (!editing) shownValue(input, v, c);
+              else input.setAttribute('aria-valuenow', v); // what is typed stays while it is edited
+            } else if (!editing && input.value !== String(v)) input.value = v;
           }
         });
       }
@@ -228,6 +291,7 @@
       while (log.children.length > 30) log.firstElementChild.remove();
     };
     for (const text of m.messages.said) say(text); // every message since the last description, even a brief one
+    for (const r of m.messages.refused) refusal(r.path, r.message); // and beside each control it refused
     const score = m.exercise ? m.exercise.score : '';
     if (score && score !== lastScore && m.exercise.solved) say('Solved: ' + m.exercise.title);
     lastScore = score;
@@ -274,6 +338,6 @@
     focusPath(key && !key.dataset.key.startsWith('command-') ? key.dataset.key : '');
   });
   root.addEventListener('focusout', (e) => { if (!root.contains(e.relatedTarget)) focusPath(''); });
-  Module.labAccessKey = (e) => e.type === 'keydown' && e.target.getAttribute('role') === 'tab' && tabKey(e) &&
-    (e.preventDefault(), true);
+  Module.labAccessKey = (e) => e.type === 'keydown' && ((e.target.getAttribute('role') === 'tab' && tabKey(e)) ||
+    (e.target.getAttribute('role') === 'spinbutton' && spinKey(e))) && (e.preventDefault(), true);
 })();

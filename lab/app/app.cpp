@@ -66,6 +66,8 @@ struct App::Impl {
     std::string toast;
     float toastLeft = 0.0f;
     std::vector<std::string> said; // every toast since the page's last description (PageFacts::said), the last 30
+    std::vector<PageRefusal> refused; // the page's field edits refused since its last description (PageFacts::refused)
+    std::string shareProblemSaid;     // why the QR code window has no code, once said in the page's log
     void show(std::string text) {
         toast = std::move(text);
         toastLeft = kToastSeconds;
@@ -193,6 +195,13 @@ ui::ScreenModel App::Impl::screenModel() {
     }
     if (shareCode.shown) {
         m.shareCode = &shareCode.update(options.shareBase, workspace);
+        // A code that cannot be made is said in the page's message log as well, once (the window
+        // shows it on the canvas, which a screen reader does not read).
+        const std::string& why = m.shareCode->code || m.shareCode->waiting ? std::string() : m.shareCode->problem;
+        if (why != shareProblemSaid && !why.empty()) {
+            said.push_back(printable(why));
+        }
+        shareProblemSaid = why;
     }
     return m;
 }
@@ -494,7 +503,7 @@ FrameOutput App::frame(const FrameInput& in) {
         m.started = true;
     }
     // The page's controls go first: this frame's panel shows their values.
-    std::vector<Request> pageRequests = takePageInput(ws, in.pageEdits, in.pageFocus, m.pageTools(), m.panel);
+    std::vector<Request> pageRequests = takePageInput(ws, in.pageEdits, in.pageFocus, m.pageTools(), m.panel, m.refused);
     ui::ScreenModel model = m.screenModel();
     ui::placeText(layout, m.steadyCaption(ui::measureText(model.captions, layout.view), layout.view)); // beside the model, never over it
     model.clicks = clicksOf(in.events, m.pressed);
@@ -579,8 +588,10 @@ FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool des
         out.page = page.json(workspace, {workspace.exercise() ? &exerciseView : nullptr, out.problem,
                                          probeWords(probe.shown() ? probe.result() : nullptr),
                                          legendWords(drawn.captions.legend), out.movingLights, toString(theme),
-                                         drawn.shareCode ? drawn.shareCode->link : "", tools.shader, tools.sweep,
-                                         std::exchange(said, {})});
+                                         drawn.shareCode ? drawn.shareCode->link : "",
+                                         drawn.shareCode && !drawn.shareCode->code ? drawn.shareCode->problem : "",
+                                         tools.shader, tools.sweep,
+                                         std::exchange(said, {}), std::exchange(refused, {})});
     }
     return out;
 }

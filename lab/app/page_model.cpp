@@ -344,7 +344,7 @@ void toolSections(Writer& w, const PageFacts& facts) {
         }
     }
     w.close(']').key("log").str(facts.shader ? join(facts.shader->log) : facts.sweep ? facts.sweep->error : "");
-    w.key("link").str(facts.shareLink).close('}');
+    w.key("link").str(facts.shareLink).key("linkProblem").str(printable(facts.shareProblem, true)).close('}');
 }
 
 } // namespace
@@ -375,6 +375,10 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
     for (const std::string& text : facts.said) {
         w.str(text);
     }
+    w.close(']').key("refused").open('[');
+    for (const PageRefusal& r : facts.refused) {
+        w.open('{').key("path").str(printable(r.path, true)).key("message").str(r.message).close('}');
+    }
     w.close(']').close('}');
     if (!described_ || *described_ != ws.a()) {
         described_ = ws.a();
@@ -387,12 +391,12 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
     return json_;
 }
 
-std::string applyPageEdits(Workspace& ws, const std::vector<PageEdit>& edits, const PageFacts& tools,
-                           std::vector<Request>& requests) {
-    std::string problems;
+std::vector<PageRefusal> applyPageEdits(Workspace& ws, const std::vector<PageEdit>& edits, const PageFacts& tools,
+                                        std::vector<Request>& requests) {
+    std::vector<PageRefusal> refused;
     for (const PageEdit& e : edits) {
         if (e.path.empty() && e.command < 0) { // a field edit without a path: refused, said (not dropped)
-            problems += (problems.empty() ? "" : "\n") + setFieldFromText(ws.edited(), e.path, e.value);
+            refused.push_back({e.path, setFieldFromText(ws.edited(), e.path, e.value)});
             continue;
         }
         if (e.path.empty()) {
@@ -420,17 +424,27 @@ std::string applyPageEdits(Workspace& ws, const std::vector<PageEdit>& edits, co
             problem = setFieldFromText(ws.edited(), path, e.value);
         }
         if (!problem.empty()) {
-            problems += (problems.empty() ? "" : "\n") + problem;
+            refused.push_back({e.path, std::move(problem)});
         }
     }
-    return problems;
+    return refused;
 }
 
 std::vector<Request> takePageInput(Workspace& ws, const std::vector<PageEdit>& edits,
-                                   const std::optional<std::string>& focus, const PageFacts& tools, ui::PanelState& panel) {
+                                   const std::optional<std::string>& focus, const PageFacts& tools, ui::PanelState& panel,
+                                   std::vector<PageRefusal>& refused) {
     std::vector<Request> requests;
-    if (std::string refused = applyPageEdits(ws, edits, tools, requests); !refused.empty()) {
-        ws.note(refused);
+    std::vector<PageRefusal> now = applyPageEdits(ws, edits, tools, requests);
+    std::string said;
+    for (PageRefusal& r : now) {
+        said += (said.empty() ? "" : "\n") + r.message;
+        refused.push_back(std::move(r));
+        if (refused.size() > 30) { // (as the page's message log keeps 30)
+            refused.erase(refused.begin());
+        }
+    }
+    if (!said.empty()) {
+        ws.note(said);
     }
     if (focus && ui::widgets().focus(*focus) && !focus->empty()) {
         panel.tab = panelTabOf(*focus, panel.selectedLight).value_or(panel.tab);

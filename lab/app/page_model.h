@@ -26,6 +26,12 @@
 
 namespace lab {
 
+// A field edit of the page's that the lab refused: the path as the page sent it (its control's
+// data-path), and why ("material.shininess: must be in [0.001, 1000000], got 1000001").
+struct PageRefusal {
+    std::string path, message;
+};
+
 // What the app knows beside the workspace, for the page.
 struct PageFacts {
     const ui::ExercisePanelModel* exercise = nullptr; // while one is solved
@@ -35,12 +41,16 @@ struct PageFacts {
     MovingLights motion = MovingLights::None; // a light moves by itself: the Pause button, pressed while paused
     std::string_view theme = "dark";           // the theme in use (the page's own colours follow it)
     std::string shareLink; // the QR code's link while it is shown
+    std::string shareProblem; // why the QR code window shows no code ("" when it shows one)
     // The tool windows while they are open: the page offers their fields too (and sets them).
     ui::ShaderEditorState* shader = nullptr;
     ui::SweepViewState* sweep = nullptr;
     // Every message shown since the last description, oldest first (the page's message log keeps each,
     // however short its time on screen: a toast replaced within one description interval is not lost).
     std::vector<std::string> said;
+    // The page's field edits refused since the last description: each control says why (its
+    // description, aria-invalid) besides the message log.
+    std::vector<PageRefusal> refused;
 };
 
 // The page's description of the lab (a JSON object; web/access.js reads it). The pictures' words
@@ -65,18 +75,19 @@ struct PageEdit {
 
 // Carries out the page's field edits on the edited set, behind the exercise's gate (a field it does
 // not open is refused), and on the open tool windows ("shader.lighting", "sweep.values[1]");
-// returns the problems ("" none), and appends the page's commands to `requests`.
-std::string applyPageEdits(Workspace& workspace, const std::vector<PageEdit>& edits, const PageFacts& tools,
-                           std::vector<Request>& requests);
+// returns the edits refused (none when all were taken), and appends the page's commands to `requests`.
+std::vector<PageRefusal> applyPageEdits(Workspace& workspace, const std::vector<PageEdit>& edits, const PageFacts& tools,
+                                        std::vector<Request>& requests);
 
 // The facts of the tool windows that are open (the rest empty).
 PageFacts openTools(ui::ShaderEditorState& shader, ui::SweepViewState& sweep);
 
 // The page's input for this frame: its field edits carried out (applyPageEdits; what is refused
-// becomes the workspace's note), its focused control ringed on the canvas (on the compact layout's tab
-// that has it); returns its commands.
+// becomes the workspace's note and is appended to `refused`), its focused control ringed on the
+// canvas (on the compact layout's tab that has it); returns its commands.
 std::vector<Request> takePageInput(Workspace& workspace, const std::vector<PageEdit>& edits,
-                                   const std::optional<std::string>& focus, const PageFacts& tools, ui::PanelState& panel);
+                                   const std::optional<std::string>& focus, const PageFacts& tools, ui::PanelState& panel,
+                                   std::vector<PageRefusal>& refused);
 
 // The tool window's text field at `path` ("shader.lighting", "sweep.key0", "sweep.val1") while it is open, else nullptr.
 std::string* toolField(const std::string& path, const PageFacts& tools);

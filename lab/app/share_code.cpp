@@ -22,6 +22,7 @@ const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& 
     model_.code = nullptr;
     model_.link = url;
     model_.problem.clear();
+    model_.waiting = false;
     if (url.empty()) {
         model_.problem = "The QR code needs the course page's address. Start the lab once with\n"
                          "  lab --share-base https://your-course.example.org/lab/\n"
@@ -42,6 +43,7 @@ const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& 
         }
         made_ = false; // asked again each frame until the encoder is here
         model_.problem = "Loading the QR encoder…";
+        model_.waiting = true;
         return model_;
     }
     std::string error;

@@ -130,6 +130,21 @@ EM_JS(void, labJsPage, (const char* json), {
     if (Module.labPage) Module.labPage(UTF8ToString(json));
 });
 
+// How the page's controls send a field's new value (web/access.js): path and text as UTF-8 on the
+// heap, each with its length (lab_page_field below). A ccall "string" would end both at a NUL, and
+// copies them onto the stack, which a pasted megabyte overflows.
+EM_JS(void, labJsFieldSender, (), {
+    Module.labPageField = (path, text) => {
+        const encoder = new TextEncoder(), p = encoder.encode(path), v = encoder.encode(text);
+        const at = _malloc(p.length + v.length + 1);
+        if (!at) return;
+        HEAPU8.set(p, at);
+        HEAPU8.set(v, at + p.length);
+        _lab_page_field(at, p.length, at + p.length, v.length);
+        _free(at);
+    };
+});
+
 EM_JS(void, labJsPickFile, (), {
     const input = document.getElementById('file-input');
     if (input) input.click();
@@ -438,10 +453,13 @@ EMSCRIPTEN_KEEPALIVE void lab_wheel(float dx, float dy) {
     }
 }
 // The page's own controls (web/access.js): a field's new value as text, a command with its
-// argument (-1 none), the control that has the keyboard (a field's path, "" for none).
-EMSCRIPTEN_KEEPALIVE void lab_page_field(const char* path, const char* value) {
-    if (gState) {
-        gState->pageEdits.push_back({path, value});
+// argument (-1 none), the control that has the keyboard (a field's path, "" for none). A field's
+// path and text come with their lengths in bytes: a NUL in either is part of it (and refused by the
+// field's check, core/scene/field_edit.h), never the end of a shorter, valid one.
+EMSCRIPTEN_KEEPALIVE void lab_page_field(const char* path, int pathBytes, const char* value, int valueBytes) {
+    if (gState && path && value && pathBytes >= 0 && valueBytes >= 0) {
+        gState->pageEdits.push_back({std::string(path, static_cast<std::size_t>(pathBytes)),
+                                     std::string(value, static_cast<std::size_t>(valueBytes))});
         gState->changed = true;
     }
 }
@@ -514,6 +532,7 @@ WindowResult runLab(const AppOptions& options, const WindowOptions&, std::string
         return WindowResult::Failed;
     }
     s->host.setTabEntersWindows(false); // Tab leaves the canvas for the page's controls (web/access.js)
+    labJsFieldSender();
     labJsMark("started");
     int saved = 0;
     char* link = labJsInitialLink(static_cast<int>(kMaxLinkChars), &saved);

@@ -206,6 +206,21 @@ test('a Draco decoder that cannot be fetched is named in the error, and the scen
   await context.close();
 });
 
+// Issue 49: with a broken draco.wasm the page said "CompileError: WebAssembly.instantiate(": the
+// reason was cut at its first ")". Emscripten's "Aborted(...)" is unwrapped whole.
+test('a Draco decoder that is not WebAssembly is named with the browser\'s whole reason', async () => {
+  const { page, context } = await openLab();
+  await page.route('**/draco.wasm', (route) => route.fulfill({ status: 200, contentType: 'application/wasm', body: 'garbage, not wasm' }));
+  await openThroughPicker(page, 'variant-draco.glb');
+  await page.waitForFunction(() => /Draco decoder could not be loaded/.test(document.getElementById('lab-problem').textContent),
+    null, { timeout: 20000 });
+  const said = await page.locator('#lab-problem').textContent();
+  assert.match(said, /draco\.wasm could not be loaded: CompileError: WebAssembly\.instantiate(Streaming)?\(\): .*magic/,
+    `the reason is whole: ${said}`);
+  assert.doesNotMatch(said, /Build with/, 'without Emscripten\'s build advice');
+  await context.close();
+});
+
 // The bundled models (the trefoil) are not in lab.data either: the site's models/ folder, fetched
 // the first time a preset names one (core/io/site_files.h), the open waiting meanwhile.
 const modelFiles = /^\/models\//;

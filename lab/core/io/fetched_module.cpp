@@ -1,6 +1,8 @@
 // fetched_module.cpp — the page's modules fetched on demand (fetched_module.h).
 #include "core/io/fetched_module.h"
 
+#include "core/io/safe_text.h"
+
 #include <emscripten.h>
 
 namespace lab {
@@ -19,10 +21,14 @@ EM_JS(void, labJsLoadModule, (const char* script, const char* factory, const cha
     element.onload = () => {
         const make = window[name];
         if (typeof make !== "function") { done(0, file + " defines no " + name); return; }
-        // Emscripten rejects with "Aborted(why). Build with -s ASSERTIONS=1 for more info.": the why.
+        // Emscripten rejects with "Aborted(why). Build with -s ASSERTIONS=1 for more info.": the why,
+        // whole, though it has parentheses of its own ("CompileError: WebAssembly.instantiate(): …").
+        // (No regular expression: EM_JS's text is a C string, where a backslash starts an escape.)
         const reason = (e) => {
-            const text = String((e && e.message) || e), from = text.indexOf("Aborted("), to = text.indexOf(")", from);
-            return from >= 0 && to > from ? text.substring(from + 8, to) : text;
+            const text = String((e && e.message) || e), from = text.indexOf("Aborted(");
+            if (from < 0) return text;
+            const build = text.indexOf(". Build with", from), why = text.substring(from + 8, build < 0 ? text.length : build);
+            return why.endsWith(")") ? why.slice(0, -1) : why;
         };
         make().then((m) => { Module[key] = m; done(1, ""); },
                     (e) => done(0, file.slice(0, -3) + ".wasm could not be loaded: " + reason(e)));
@@ -44,7 +50,7 @@ void FetchedModule::load() {
 
 void FetchedModule::loaded(bool ok, const std::string& why) {
     state_ = ok ? ModuleState::Ready : ModuleState::Failed;
-    problem_ = ok ? "" : why;
+    problem_ = ok ? "" : shortened(why); // the browser's and Emscripten's words: cut as other libraries' are
 }
 
 void FetchedModule::failed(std::string why) {

@@ -35,16 +35,48 @@ std::string asJsonNumber(std::string_view text) {
 
 enum class Parsed { Number, NotANumber, OutOfRange };
 
+// Whether `s` is written as a JSON number: -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?. Only to tell,
+// when the parser finds a number too large for a double, "1e999" from "7777…x": it throws for the
+// number before it reads what follows.
+bool jsonNumberSyntax(std::string_view s) {
+    std::size_t i = 0;
+    auto digits = [&] {
+        const std::size_t from = i;
+        while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
+            ++i;
+        }
+        return i > from;
+    };
+    i += s.starts_with('-') ? 1 : 0;
+    if (i < s.size() && s[i] == '0') {
+        ++i;
+    } else if (!digits()) {
+        return false;
+    }
+    if (i < s.size() && s[i] == '.' && (++i, !digits())) {
+        return false;
+    }
+    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+        ++i;
+        i += i < s.size() && (s[i] == '+' || s[i] == '-') ? 1 : 0;
+        if (!digits()) {
+            return false;
+        }
+    }
+    return i == s.size();
+}
+
 // `text` read by the preset reader's own JSON parser (one parser instantiation, as sweep.cpp's).
 Parsed parseNumber(std::string_view text, Json& number) {
     if (hasNul(text)) { // nlohmann's parser takes a NUL for the end of its input: "5\0junk" would be 5
         return Parsed::NotANumber;
     }
+    const std::string json = asJsonNumber(text);
     try {
-        number = Json::parse(asJsonNumber(text));
+        number = Json::parse(json);
         return number.is_number() ? Parsed::Number : Parsed::NotANumber;
     } catch (const Json::out_of_range&) { // beyond a double: 1e309
-        return Parsed::OutOfRange;
+        return jsonNumberSyntax(json) ? Parsed::OutOfRange : Parsed::NotANumber;
     } catch (const Json::exception&) {
         return Parsed::NotANumber;
     }

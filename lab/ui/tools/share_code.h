@@ -17,6 +17,7 @@ struct ShareCodeModel {
     const QrCode* code = nullptr; // null: `problem` says why
     std::string link;
     std::string problem;
+    bool waiting = false; // `problem` says what is awaited (the page fetching the QR encoder), not a failure
     std::string title; // the scene's or the exercise's name
 };
 
