@@ -3,7 +3,8 @@
 // The lab runs on its headless platform (real App frames, ImGui and all, drawn offscreen). Each
 // file of the committed seeds and regressions, the shipped presets and test inputs, and any
 // corpus folders named in LAB_FUZZ_CORPUS (CI passes the corpora its fuzz run grew) is dropped on
-// the lab like a file from the desktop. The lab must keep running, and a file that does not load
+// the lab like a file from the desktop (a link opened as the page opens its address, a field edit
+// sent as the page's controls send it). The lab must keep running, and a file that does not load
 // must leave the scene exactly as it was (its link, the whole preset, unchanged).
 #include "app/app.h"
 #include "core/exercise/exercise.h"
@@ -23,7 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-enum class Kind { Preset, Gltf, Exercise, Link };
+enum class Kind { Preset, Gltf, Exercise, Link, Field };
 
 std::vector<std::pair<fs::path, Kind>> corpus() {
     std::vector<std::pair<fs::path, Kind>> files;
@@ -46,11 +47,14 @@ std::vector<std::pair<fs::path, Kind>> corpus() {
     add(src / "tests/fuzz/regressions/exercise", Kind::Exercise);
     add(src / "tests/fuzz/seeds/link", Kind::Link);
     add(src / "tests/fuzz/regressions/link", Kind::Link);
+    add(src / "tests/fuzz/seeds/field", Kind::Field);
+    add(src / "tests/fuzz/regressions/field", Kind::Field);
     if (const char* extra = std::getenv("LAB_FUZZ_CORPUS")) {
         add(fs::path(extra) / "preset", Kind::Preset);
         add(fs::path(extra) / "gltf", Kind::Gltf);
         add(fs::path(extra) / "exercise", Kind::Exercise);
         add(fs::path(extra) / "link", Kind::Link);
+        add(fs::path(extra) / "field", Kind::Field);
     }
     return files;
 }
@@ -82,16 +86,24 @@ TEST(GuiCorpus, EveryFuzzInputDroppedOnTheLabIsSurvived) {
         bool loads = kind == Kind::Preset     ? loadPreset(dropped, d).has_value()
                      : kind == Kind::Exercise ? loadExercise(dropped, d).has_value()
                      : kind == Kind::Link     ? parseLink(bytes, options.presetFolders[0], d).has_value()
+                     : kind == Kind::Field    ? true // taken or refused, the lab goes on
                                               : loadGltf(dropped, "m", d).has_value();
+
+        // A field edit ("PATH\nTEXT", fuzz_checks.h checkFieldEdit) arrives as the page's controls send it.
+        const std::size_t newline = bytes.find('\n');
+        const std::string path = newline == std::string::npos ? "material.shininess" : bytes.substr(0, newline);
+        const std::string text = newline == std::string::npos ? bytes : bytes.substr(newline + 1);
 
         FrameInput in;
         if (kind == Kind::Link) {
             in.openLink = bytes;
+        } else if (kind == Kind::Field) {
+            in.pageEdits = {{path, text}};
         } else {
             in.droppedFiles = {dropped.string()};
         }
         FrameOutput out = lab.frame(in);
-        if (!loads) {
+        if (!loads && kind != Kind::Field) { // (a field edit changes the scene or is refused: both survive)
             ++refused;
             EXPECT_EQ(out.link, link) << file << " did not load, yet the scene changed";
         }

@@ -16,7 +16,11 @@
 #include "core/io/image.h"
 #include "core/io/safe_text.h"
 #include "core/lighting/lighting.h"
+#include "core/plots/fit.h"
 #include "core/plots/plot_data.h"
+#include "core/scene/field_edit.h"
+#include "core/scene/field_table.h"
+#include "core/scene/view_mode.h"
 #include "core/scene/preset.h"
 #include "core/share/share_link.h"
 #include "platform/headless_gl.h"
@@ -184,6 +188,85 @@ inline std::string checkPresetRenders(std::string_view text) {
         return d.empty() ? "a valid preset did not render, without a diagnostic" : "";
     }
     return image->width == 8 && image->height == 8 ? "" : "a render of the wrong size";
+}
+
+// The page's field edit (what lab_page_field carries out: core/scene/field_edit.h), as "PATH\nTEXT"
+// (no line feed: the whole input is the text for the shininess), on three scenes (the defaults; a
+// Cook-Torrance spot light; a torus lit by a directional light). Taken: the preset still validates,
+// as it would be saved and read back. Refused: a one-line message, terminal-safe, bounded whatever
+// the input's size (values and paths quoted at 120 bytes), and the preset exactly as it was.
+inline std::string checkFieldEdit(std::string_view input) {
+    const std::size_t newline = input.find('\n');
+    const std::string_view path = newline == std::string_view::npos ? "material.shininess" : input.substr(0, newline);
+    const std::string_view text = newline == std::string_view::npos ? input : input.substr(newline + 1);
+    Preset scenes[3];
+    scenes[1].brdf = BrdfModel::CookTorrance;
+    scenes[1].lights[0].type = LightType::Spot;
+    scenes[2].model.builtin = Builtin::Torus;
+    scenes[2].model.subdivisions = defaultSubdivisions(Builtin::Torus);
+    scenes[2].lights.push_back(LightDesc{LightType::Directional});
+    for (Preset& p : scenes) {
+        const Preset before = p;
+        const std::string problem = setFieldFromText(p, path, text);
+        if (problem.empty()) {
+            Diagnostics d;
+            if (!parsePreset(presetToJson(p), "edited.json", std::nullopt, d)) {
+                return "a field edit that was taken leaves a preset that does not validate: " + toString(d);
+            }
+            continue;
+        }
+        if (!(p == before)) {
+            return "a refused field edit changed the preset: " + problem;
+        }
+        if (printable(problem, true) != problem) {
+            return "a refusal that is not one terminal-safe line: " + printable(problem, true);
+        }
+        if (problem.size() > 600) {
+            return "a refusal of " + std::to_string(problem.size()) + " bytes (values and paths are quoted at 120)";
+        }
+    }
+    return "";
+}
+
+// `lab fit` of a preset that validates (core/plots/fit.h), to the model the input's size picks (one
+// a run: a fit takes tens of milliseconds). A refusal says why in one line; a fit has an error in
+// [0, 1] that the written preset reproduces, finite parameters, a preset that validates, and only
+// `check` views its model has.
+inline std::string checkFit(std::string_view text) {
+    Diagnostics d;
+    std::optional<Preset> target = parsePreset(text, "fuzz.json", std::nullopt, d);
+    if (!target) {
+        return "";
+    }
+    const FitRequest requests[] = {{BrdfModel::Phong}, {BrdfModel::BlinnPhong}, {BrdfModel::CookTorrance, Distribution::Ggx}};
+    const FitRequest& request = requests[text.size() % 3];
+    std::string error;
+    std::optional<FitResult> fit = fitSpecular(*target, request, error);
+    if (!fit) {
+        return error.empty() || printable(error, true) != error ? "a fit refused without a one-line reason" : "";
+    }
+    if (!std::isfinite(fit->error) || fit->error < 0.0 || fit->error > 1.0 + 1e-6) {
+        return "a fit's error outside [0, 1]: " + std::to_string(fit->error);
+    }
+    for (const FitParameter& p : fit->parameters) {
+        if (!std::isfinite(p.value)) {
+            return "a fitted parameter that is not finite: " + p.name;
+        }
+    }
+    if (std::abs(fitError(*target, fit->fitted) - fit->error) > 1e-4) {
+        return "the fitted preset's error is not the fit's";
+    }
+    Diagnostics again;
+    if (!parsePreset(presetToJson(fit->fitted), "fit.json", std::nullopt, again)) {
+        return "a fitted preset that does not validate: " + toString(again);
+    }
+    for (const CheckView& v : fit->fitted.check.views) {
+        std::optional<ViewMode> mode = viewFromName(v.view);
+        if (!mode || !notApplicable(*mode, fit->fitted, v.light - 1).empty()) {
+            return "the fit keeps a check view its model does not have: " + v.view;
+        }
+    }
+    return "";
 }
 
 // A .gltf or .glb (decided by its first bytes), as a real file in `folder`.

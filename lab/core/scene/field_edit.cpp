@@ -186,13 +186,14 @@ std::string setFieldFromText(Preset& preset, std::string_view path, std::string_
     if (std::string problem = setByKind(*row, preset, light, element, text); !problem.empty()) {
         return where + ": " + problem;
     }
-    if (row->rule) {
-        std::vector<FieldProblem> problems;
-        row->rule(preset, light, problems);
-        if (!problems.empty()) {
-            preset = std::move(before);
-            return where + ": " + problems.front().message;
-        }
+    // The rules of its object (the camera's ties eye, target and up): one another field names is named.
+    std::vector<FieldProblem> problems;
+    objectRules(*row, preset, light, problems);
+    if (!problems.empty()) {
+        preset = std::move(before);
+        const FieldProblem& first = problems.front();
+        const std::string other = first.key == fieldKey(*row) ? "" : std::string(fieldObject(*row)) + "." + first.key + " ";
+        return where + ": " + (other.starts_with("lights[].") ? "" : other) + first.message;
     }
     // The model's source is read by hand, not by the table (preset_read.cpp): its rules here, as there.
     const Model& m = preset.model;

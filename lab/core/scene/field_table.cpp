@@ -287,6 +287,14 @@ std::string_view fieldObject(const FieldRow& row) {
     return dot == std::string_view::npos ? std::string_view() : row.path.substr(0, dot);
 }
 
+void objectRules(const FieldRow& row, const Preset& preset, const LightDesc* light, std::vector<FieldProblem>& problems) {
+    for (const FieldRow& r : kRows) {
+        if (r.rule && fieldObject(r) == fieldObject(row)) {
+            r.rule(preset, light, problems);
+        }
+    }
+}
+
 // A light's rows start so ("lights[].exponent"), standing for every light's.
 constexpr std::string_view kLightRows = "lights[]";
 

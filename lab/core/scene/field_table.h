@@ -114,6 +114,11 @@ std::string fieldPath(const FieldRow& row, int light);
 // "" at the top).
 std::string_view fieldKey(const FieldRow& row);
 std::string_view fieldObject(const FieldRow& row);
+
+// What an edit of `row` must keep: the rule of every row in its object (the camera's, on its row
+// "far", ties eye, target and up), each for `light`. The reader runs a rule once its row is read,
+// after the rest of its object; an edit of one field (the panel's, the page's) runs them all.
+void objectRules(const FieldRow& row, const Preset& preset, const LightDesc* light, std::vector<FieldProblem>& problems);
 bool isLightRow(const FieldRow& row);
 
 // Where `row` lies from the object at `object` ("" the top level, "material", "lights[]" one light),

@@ -100,9 +100,9 @@ bool fieldWidget(const FieldRow& row, Preset& preset, LightDesc* light, const st
     // The field's rules: a value they refuse is not taken.
     bool refused = row.kind == FieldKind::Direction &&
                    glm::length(fieldValue<glm::vec3>(row, preset, light)) < limits::kMinDirectionLength;
-    if (changed && row.rule && !refused) {
+    if (changed && !refused) {
         std::vector<FieldProblem> problems;
-        row.rule(preset, light, problems);
+        objectRules(row, preset, light, problems);
         refused = !problems.empty();
     }
     if (changed && refused && numbers) {

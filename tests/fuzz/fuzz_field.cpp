@@ -1,0 +1,16 @@
+// fuzz_field.cpp — libFuzzer target for the page's field edits (what lab_page_field carries out): "PATH\nTEXT".
+// The checks are in fuzz_checks.h; tools/dev fuzz runs this target (see README "Hardening").
+#include "fuzz_checks.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    std::string_view input(reinterpret_cast<const char*>(data), size);
+    std::string problem = lab::fuzz::checkFieldEdit(input);
+    if (!problem.empty()) {
+        std::fprintf(stderr, "fuzz_field: %s\n", problem.c_str());
+        std::abort();
+    }
+    return 0;
+}
