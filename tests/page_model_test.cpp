@@ -224,16 +224,17 @@ TEST(PageModel, RefusedEditsAreSaidAndNamedForTheirControls) {
     Workspace ws{WorkspaceOptions{{kPresets}, {}, true, {}}};
     ws.start(kPresets);
     std::vector<Request> requests;
-    std::vector<PageRefusal> refused;
+    PageNews news;
     ui::PanelState panel;
     takePageInput(ws, {{"", "5"}, {"material.shininess", "--5"}, {"material.shininess", "7"}}, std::nullopt, PageFacts{},
-                  panel, refused);
+                  panel, news);
+    const std::vector<PageRefusal>& refused = news.refused;
     ASSERT_EQ(refused.size(), 2u);
     EXPECT_EQ(refused[0].message, "\"\": not a field the page can set");
     EXPECT_EQ(refused[1].message, "material.shininess: expected a number such as 0.5, -2 or 1e-3, got \"--5\"");
     EXPECT_EQ(ws.edited().material.shininess, 7.0f) << "the edit after a refused one is taken";
     PageFacts facts;
-    facts.refused = refused;
+    facts.news = news;
     const json page = json::parse(PageModel().json(ws, facts));
     ASSERT_EQ(page["messages"]["refused"].size(), 2u);
     EXPECT_EQ(page["messages"]["refused"][1]["path"], "material.shininess");

@@ -13,6 +13,7 @@
 #include "app/viewport_cache.h"
 #include "core/gltf/model_loader.h"
 #include "core/io/file_io.h"
+#include "core/io/paths.h"
 #include "core/io/safe_text.h"
 #include "core/scene/light_orbit.h"
 #include "render/renderer.h"
@@ -65,16 +66,11 @@ struct App::Impl {
     std::optional<Problem> problem;
     std::string toast;
     float toastLeft = 0.0f;
-    std::vector<std::string> said; // every toast since the page's last description (PageFacts::said), the last 30
-    std::vector<PageRefusal> refused; // the page's field edits refused since its last description (PageFacts::refused)
-    std::string shareProblemSaid;     // why the QR code window has no code, once said in the page's log
+    PageNews news; // every toast and refused field edit since the page's last description
     void show(std::string text) {
         toast = std::move(text);
         toastLeft = kToastSeconds;
-        said.push_back(toast);
-        if (said.size() > 30) {
-            said.erase(said.begin());
-        }
+        news.say(toast);
     }
     FrameSpeed speed;       // the frame time shown while the model changes
     double clock = 0.0;     // seconds since the first frame (the sum of the frames' deltaTime)
@@ -195,13 +191,9 @@ ui::ScreenModel App::Impl::screenModel() {
     }
     if (shareCode.shown) {
         m.shareCode = &shareCode.update(options.shareBase, workspace);
-        // A code that cannot be made is said in the page's message log as well, once (the window
-        // shows it on the canvas, which a screen reader does not read).
-        const std::string& why = m.shareCode->code || m.shareCode->waiting ? std::string() : m.shareCode->problem;
-        if (why != shareProblemSaid && !why.empty()) {
-            said.push_back(printable(why));
+        if (std::string why = shareCode.newProblem(); !why.empty()) {
+            news.say(std::move(why)); // in the page's message log too
         }
-        shareProblemSaid = why;
     }
     return m;
 }
@@ -498,12 +490,11 @@ FrameOutput App::frame(const FrameInput& in) {
     ui::Layout layout = ui::computeLayout({in.windowWidth, in.windowHeight, ui::uiScale(), m.panels == Impl::Panels::All,
                                            m.panels != Impl::Panels::None, m.panel.tab});
     if (!m.started) {
-        std::error_code ec; // a removed working folder has no path: the lab starts with none
-        ws.start(fs::current_path(ec), m.options.preset); // the first preset opens in the first frame
+        ws.start(absolutePath("").value_or(fs::path()), m.options.preset); // the first preset opens in the first frame
         m.started = true;
     }
     // The page's controls go first: this frame's panel shows their values.
-    std::vector<Request> pageRequests = takePageInput(ws, in.pageEdits, in.pageFocus, m.pageTools(), m.panel, m.refused);
+    std::vector<Request> pageRequests = takePageInput(ws, in.pageEdits, in.pageFocus, m.pageTools(), m.panel, m.news);
     ui::ScreenModel model = m.screenModel();
     ui::placeText(layout, m.steadyCaption(ui::measureText(model.captions, layout.view), layout.view)); // beside the model, never over it
     model.clicks = clicksOf(in.events, m.pressed);
@@ -588,10 +579,7 @@ FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool des
         out.page = page.json(workspace, {workspace.exercise() ? &exerciseView : nullptr, out.problem,
                                          probeWords(probe.shown() ? probe.result() : nullptr),
                                          legendWords(drawn.captions.legend), out.movingLights, toString(theme),
-                                         drawn.shareCode ? drawn.shareCode->link : "",
-                                         drawn.shareCode && !drawn.shareCode->code ? drawn.shareCode->problem : "",
-                                         tools.shader, tools.sweep,
-                                         std::exchange(said, {}), std::exchange(refused, {})});
+                                         drawn.shareCode, tools.shader, tools.sweep, std::exchange(news, {})});
     }
     return out;
 }

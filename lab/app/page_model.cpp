@@ -344,7 +344,9 @@ void toolSections(Writer& w, const PageFacts& facts) {
         }
     }
     w.close(']').key("log").str(facts.shader ? join(facts.shader->log) : facts.sweep ? facts.sweep->error : "");
-    w.key("link").str(facts.shareLink).key("linkProblem").str(printable(facts.shareProblem, true)).close('}');
+    const ui::ShareCodeModel* share = facts.share;
+    w.key("link").str(share ? share->link : "");
+    w.key("linkProblem").str(share && !share->code ? printable(share->problem, true) : "").close('}');
 }
 
 } // namespace
@@ -372,11 +374,11 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
     w.key("readouts").open('{').key("probe").str(facts.probe).key("legend").str(facts.legend);
     w.close('}').key("theme").str(facts.theme);
     w.key("messages").open('{').key("problem").str(facts.problem).key("said").open('[');
-    for (const std::string& text : facts.said) {
+    for (const std::string& text : facts.news.said) {
         w.str(text);
     }
     w.close(']').key("refused").open('[');
-    for (const PageRefusal& r : facts.refused) {
+    for (const PageRefusal& r : facts.news.refused) {
         w.open('{').key("path").str(printable(r.path, true)).key("message").str(r.message).close('}');
     }
     w.close(']').close('}');
@@ -430,18 +432,30 @@ std::vector<PageRefusal> applyPageEdits(Workspace& ws, const std::vector<PageEdi
     return refused;
 }
 
+namespace {
+
+// (The page's message log keeps 30 too.)
+template <typename T>
+void keepLast30(std::vector<T>& list, T item) {
+    list.push_back(std::move(item));
+    if (list.size() > 30) {
+        list.erase(list.begin());
+    }
+}
+
+} // namespace
+
+void PageNews::say(std::string text) { keepLast30(said, std::move(text)); }
+void PageNews::refuse(PageRefusal refusal) { keepLast30(refused, std::move(refusal)); }
+
 std::vector<Request> takePageInput(Workspace& ws, const std::vector<PageEdit>& edits,
                                    const std::optional<std::string>& focus, const PageFacts& tools, ui::PanelState& panel,
-                                   std::vector<PageRefusal>& refused) {
+                                   PageNews& news) {
     std::vector<Request> requests;
-    std::vector<PageRefusal> now = applyPageEdits(ws, edits, tools, requests);
     std::string said;
-    for (PageRefusal& r : now) {
+    for (PageRefusal& r : applyPageEdits(ws, edits, tools, requests)) {
         said += (said.empty() ? "" : "\n") + r.message;
-        refused.push_back(std::move(r));
-        if (refused.size() > 30) { // (as the page's message log keeps 30)
-            refused.erase(refused.begin());
-        }
+        news.refuse(std::move(r));
     }
     if (!said.empty()) {
         ws.note(said);

@@ -18,6 +18,7 @@
 #include "ui/panel/exercise_panel.h"
 #include "ui/panel/panel.h"
 #include "ui/tools/shader_editor.h"
+#include "ui/tools/share_code.h"
 #include "ui/tools/sweep_view.h"
 
 #include <optional>
@@ -32,6 +33,17 @@ struct PageRefusal {
     std::string path, message;
 };
 
+// What the page is owed by its next description, the last 30 of each: every message shown, oldest
+// first (the page's message log keeps each, however short its time on screen: a toast replaced
+// within one description interval is not lost), and the field edits refused (each control says why,
+// in its description and with aria-invalid, besides the message log).
+struct PageNews {
+    std::vector<std::string> said;
+    std::vector<PageRefusal> refused;
+    void say(std::string text);
+    void refuse(PageRefusal refusal);
+};
+
 // What the app knows beside the workspace, for the page.
 struct PageFacts {
     const ui::ExercisePanelModel* exercise = nullptr; // while one is solved
@@ -40,17 +52,11 @@ struct PageFacts {
     std::string legend;  // the factor view's legend, "" when the lit model is shown
     MovingLights motion = MovingLights::None; // a light moves by itself: the Pause button, pressed while paused
     std::string_view theme = "dark";           // the theme in use (the page's own colours follow it)
-    std::string shareLink; // the QR code's link while it is shown
-    std::string shareProblem; // why the QR code window shows no code ("" when it shows one)
+    const ui::ShareCodeModel* share = nullptr; // the QR code window while it is shown: its link, or why it has no code
     // The tool windows while they are open: the page offers their fields too (and sets them).
     ui::ShaderEditorState* shader = nullptr;
     ui::SweepViewState* sweep = nullptr;
-    // Every message shown since the last description, oldest first (the page's message log keeps each,
-    // however short its time on screen: a toast replaced within one description interval is not lost).
-    std::vector<std::string> said;
-    // The page's field edits refused since the last description: each control says why (its
-    // description, aria-invalid) besides the message log.
-    std::vector<PageRefusal> refused;
+    PageNews news; // what was said and refused since the last description
 };
 
 // The page's description of the lab (a JSON object; web/access.js reads it). The pictures' words
@@ -83,11 +89,11 @@ std::vector<PageRefusal> applyPageEdits(Workspace& workspace, const std::vector<
 PageFacts openTools(ui::ShaderEditorState& shader, ui::SweepViewState& sweep);
 
 // The page's input for this frame: its field edits carried out (applyPageEdits; what is refused
-// becomes the workspace's note and is appended to `refused`), its focused control ringed on the
-// canvas (on the compact layout's tab that has it); returns its commands.
+// becomes the workspace's note and goes into `news`), its focused control ringed on the canvas (on
+// the compact layout's tab that has it); returns its commands.
 std::vector<Request> takePageInput(Workspace& workspace, const std::vector<PageEdit>& edits,
                                    const std::optional<std::string>& focus, const PageFacts& tools, ui::PanelState& panel,
-                                   std::vector<PageRefusal>& refused);
+                                   PageNews& news);
 
 // The tool window's text field at `path` ("shader.lighting", "sweep.key0", "sweep.val1") while it is open, else nullptr.
 std::string* toolField(const std::string& path, const PageFacts& tools);

@@ -58,4 +58,9 @@ const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& 
     return model_;
 }
 
+std::string ShareCode::newProblem() {
+    const std::string why = model_.code || model_.waiting ? std::string() : printable(model_.problem);
+    return why == std::exchange(said_, why) ? std::string() : why;
+}
+
 } // namespace lab

@@ -20,8 +20,13 @@ class ShareCode {
 public:
     bool shown = false;
     const ui::ShareCodeModel& update(const std::string& base, Workspace& workspace);
+    // Why there is no code, the first time it is so (then "" until the reason changes): for the
+    // page's message log, since a screen reader does not read the window on the canvas. A wait (the
+    // page fetching the QR encoder) is no reason.
+    std::string newProblem();
 
 private:
+    std::string said_; // the last reason newProblem() gave
     std::string url_;
     bool made_ = false;
     std::string loadingFor_; // the link the page's QR encoder was last fetched for

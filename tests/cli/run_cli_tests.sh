@@ -33,7 +33,7 @@ check hostile-key-escaped grep -qF 'material."\x1B[31mred\0": unknown key (it ho
 check hostile-key-no-raw-bytes test "$(printf '%s' "$out" | tr -d -c '\000\033' | wc -c)" -eq 0
 printf '{"format": "lighting-lab-preset", "version": 1, "name": "caf\xe9"}' >"$tmp/latin1.json"
 out=$("$lab" render "$tmp/latin1.json" --out "$tmp/h.png" 2>&1)
-check invalid-utf8-escaped grep -qF 'invalid JSON: '"'"'"caf\xE9"'"'" <<<"$out"
+check invalid-utf8-escaped grep -qF 'invalid JSON: syntax error while parsing value - invalid string: ill-formed UTF-8 byte; last read: '"'"'"caf\xE9"'"'" <<<"$out"
 check invalid-utf8-no-raw-byte test "$(printf '%s' "$out" | tr -d -c '\351' | wc -c)" -eq 0
 touch "$tmp/a-file"
 expect check-update-golden-is-a-file 2 '^lab check: --golden .*a-file: cannot be used as a folder' -- \
