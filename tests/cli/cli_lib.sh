@@ -32,6 +32,9 @@ check() { # check NAME CONDITION...: a plain assertion
     if "$@"; then echo "ok   $name"; passed=$((passed + 1)); else echo "FAIL $name"; failed=$((failed + 1)); fi
 }
 
+# edit IN OUT 'python': OUT is the JSON of IN after the python statements run on it as p.
+edit() { python3 -c 'import json, sys; p = json.load(open(sys.argv[1], encoding="utf-8")); exec(sys.argv[3]); json.dump(p, open(sys.argv[2], "w", encoding="utf-8"))' "$@"; }
+
 png_size() { # prints "W H" from a PNG's IHDR
     od -An -tu1 -j16 -N8 "$1" | awk '{print $1*16777216+$2*65536+$3*256+$4, $5*16777216+$6*65536+$7*256+$8}'
 }

@@ -10,8 +10,6 @@ phong=$src/presets/05-full-phong.json
 shin=$src/presets/exercises/02-shininess.json
 shin_sol=$src/tests/exercises/02-shininess.solution.json
 base=https://example.org/lab/
-# edit IN OUT 'python': OUT is the JSON of IN after the python statements run on it as p.
-edit() { python3 -c 'import json, sys; p = json.load(open(sys.argv[1], encoding="utf-8")); exec(sys.argv[3]); json.dump(p, open(sys.argv[2], "w", encoding="utf-8"))' "$@"; }
 # kept NAME FILE...: each FILE is byte for byte its copy FILE.keep (made by keep).
 keep() { for f in "$@"; do cp "$f" "$f.keep"; done; }
 kept() {

@@ -11,7 +11,6 @@ phong=$src/presets/05-full-phong.json
 shin=$src/presets/exercises/02-shininess.json
 shin_sol=$src/tests/exercises/02-shininess.solution.json
 base=https://example.org/lab/
-edit() { python3 -c 'import json, sys; p = json.load(open(sys.argv[1], encoding="utf-8")); exec(sys.argv[3]); json.dump(p, open(sys.argv[2], "w", encoding="utf-8"))' "$@"; }
 # link_kept NAME LINK TARGET: LINK is still a symbolic link to TARGET (as written when it was made).
 link_kept() { check "$1" test -L "$2" -a "$(readlink "$2" 2>/dev/null)" = "$3"; }
 

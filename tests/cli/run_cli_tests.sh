@@ -240,8 +240,7 @@ expect check-no-golden-folder 2 'no such folder' -- "$lab" check "$cphong" --gol
 expect check-broken-preset 2 'ERROR +broken' -- "$lab" check "$src/tests/data/broken.json" --golden "$tmp/golden" --report "$tmp/report"
 
 # --- check: reports, per-preset tolerances, plot and sweep goldens (issue 23) ---------------
-# JSON edits with Python's json module: edit FILE OUT 'p["material"]["shininess"] = 33'
-edit() { python3 -c 'import json, sys; p = json.load(open(sys.argv[1])); exec(sys.argv[3]); json.dump(p, open(sys.argv[2], "w"))' "$@"; }
+# JSON edits with Python's json module (cli_lib.sh): edit FILE OUT 'p["material"]["shininess"] = 33'
 g=$tmp/g23
 r=$tmp/r23
 mkdir -p "$g" "$tmp/page"
@@ -448,8 +447,6 @@ p = {"format": "lighting-lab-preset", "version": 1}
 p.update({k: v for k, v in e["start"].items() if k not in ("format", "version")})
 json.dump(p, open(sys.argv[2], "w", encoding="utf-8"))' "$@"
 }
-# uedit FILE OUT 'python': edit (above) for files with non-ASCII text (the exercises' hints).
-uedit() { python3 -c 'import json, sys; p = json.load(open(sys.argv[1], encoding="utf-8")); exec(sys.argv[3]); json.dump(p, open(sys.argv[2], "w", encoding="utf-8"))' "$@"; }
 exercises=$src/presets/exercises
 solutions=$src/tests/exercises
 base=https://example.org/lab/
@@ -479,7 +476,7 @@ done
 # Near misses stay unsolved: the exercises' own tolerances are not so loose that a visibly
 # different answer passes (the image, or a field tolerance where the image cannot tell).
 near() { # near NAME PATTERN EXERCISE PYTHON: the exercise's solution edited by PYTHON scores exit 1
-    uedit "$solutions/$3.solution.json" "$tmp/near.json" "$4"
+    edit "$solutions/$3.solution.json" "$tmp/near.json" "$4"
     expect "exercise-near-miss-$1" 1 "$2" -- "$lab" exercise check "$exercises/$3.json" "$tmp/near.json"
 }
 unsolved='Score [0-9]{1,2}%: not solved yet'
@@ -498,25 +495,25 @@ near shininess-30-part-way 'Score ([1-9]|[1-9][0-9])%: not solved yet' 02-shinin
 # A field the exercise does not open, changed: refused with its JSON path. The camera is always free.
 shin=$exercises/02-shininess.json
 shin_sol=$solutions/02-shininess.solution.json
-uedit "$shin_sol" "$tmp/locked.json" 'p["background"] = [1, 1, 1]'
+edit "$shin_sol" "$tmp/locked.json" 'p["background"] = [1, 1, 1]'
 expect exercise-locked-field 2 'locked\.json: background: changed from the exercise.s start, but the exercise does not open this field \(open: material\.shininess\)' -- \
     "$lab" exercise check "$shin" "$tmp/locked.json"
-uedit "$shin_sol" "$tmp/camera.json" 'p["camera"] = {"eye": [1.5, 0.5, 6], "fovy_deg": 30}'
+edit "$shin_sol" "$tmp/camera.json" 'p["camera"] = {"eye": [1.5, 0.5, 6], "fovy_deg": 30}'
 expect exercise-camera-is-free 0 'camera\.json: Solved' -- "$lab" exercise check "$shin" "$tmp/camera.json"
 
 # Bad exercise files: refused with the JSON path of the problem.
-uedit "$shin" "$tmp/open.json" 'p["open"] = ["material.shinyness"]'
+edit "$shin" "$tmp/open.json" 'p["open"] = ["material.shinyness"]'
 expect exercise-unknown-open 2 'open\.json: open\[0\]: no field "material\.shinyness" in a preset \(did you mean "material\.shininess"\?\)' -- \
     "$lab" exercise check "$tmp/open.json" "$shin_sol"
-uedit "$shin" "$tmp/locked-target.json" 'p["target"]["material"]["diffuse"] = [1, 0, 0]'
+edit "$shin" "$tmp/locked-target.json" 'p["target"]["material"]["diffuse"] = [1, 0, 0]'
 expect exercise-target-differs-in-locked-field 2 'locked-target\.json: target\.material\.diffuse: differs from start, but the field is not open' -- \
     "$lab" exercise check "$tmp/locked-target.json" "$shin_sol"
-uedit "$shin" "$tmp/tolerance.json" 'p["tolerance"] = {"max_failing": 2}'
+edit "$shin" "$tmp/tolerance.json" 'p["tolerance"] = {"max_failing": 2}'
 expect exercise-bad-tolerance 2 'tolerance\.json: tolerance\.max_failing: expected a share from 0 to 1' -- \
     "$lab" exercise check "$tmp/tolerance.json" "$shin_sol"
 expect exercise-preset-as-exercise 2 '05-full-phong\.json: format: .*\(this is a preset, not an exercise\)' -- \
     "$lab" exercise check "$phong" "$shin_sol"
-uedit "$shin" "$tmp/untitled.json" 'del p["title"]'
+edit "$shin" "$tmp/untitled.json" 'del p["title"]'
 expect exercise-missing-title 2 'untitled\.json: title: missing' -- "$lab" exercise check "$tmp/untitled.json" "$shin_sol"
 
 # lab share: the printed link, and the same text in its QR code (zbarimg reads it back; CI installs
