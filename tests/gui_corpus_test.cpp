@@ -54,7 +54,8 @@ std::vector<std::pair<fs::path, Kind>> corpus() {
         add(fs::path(extra) / "gltf", Kind::Gltf);
         add(fs::path(extra) / "exercise", Kind::Exercise);
         add(fs::path(extra) / "link", Kind::Link);
-        add(fs::path(extra) / "field", Kind::Field);
+        // (Not the field edits fuzz_field grew: about 2,000 inputs, two minutes of CI under ASan, for what
+        // its own check already covers — the lab only adds the message's toast; the seeds come in above.)
     }
     return files;
 }
