@@ -157,22 +157,14 @@ test('keys typed into the page\'s controls fire no shortcut; the camera buttons 
   await shininess.focus();
   await page.keyboard.press('Control+A');
   await page.keyboard.type('1'); // flat shading, were it the canvas's
-  await page.keyboard.press('b'); // the next BRDF
+  await page.keyboard.press('b'); // the next BRDF (typed into the field: it is a text field, issue 49)
+  await page.keyboard.press('Backspace');
   await page.keyboard.press('Tab');
   await settle(page);
-  let model = await page.evaluate(() => window.labPageModel);
+  const model = await page.evaluate(() => window.labPageModel);
   const value = (p) => model.sections.flatMap((s) => s.controls).find((c) => c.path === p).value;
   assert.equal(value('shading'), 'phong');
   assert.equal(value('brdf'), 'phong');
-  // The field holds "1b", which reaches the lab as typed (issue 49) and is refused, in words.
-  assert.equal(value('material.shininess'), 32, 'the lab kept its value');
-  assert.match(await page.evaluate(() => document.getElementById('lab-log').textContent), /got "1b"/);
-  await shininess.focus();
-  await page.keyboard.press('Control+A');
-  await page.keyboard.type('1');
-  await page.keyboard.press('Tab');
-  await settle(page);
-  model = await page.evaluate(() => window.labPageModel);
   assert.equal(value('material.shininess'), 1, 'the typed value was taken when the focus left');
   // Orbit and zoom without a drag (WCAG 2.5.1): buttons, by keyboard.
   const before = await viewPixels(page);

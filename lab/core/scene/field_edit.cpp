@@ -158,9 +158,8 @@ std::string setByKind(const FieldRow& row, Preset& p, LightDesc* light, std::opt
 
 std::string setFieldFromText(Preset& preset, std::string_view path, std::string_view text) {
     // The path as the refusal says it: itself when a path of the grammar, else quoted and cut.
-    const std::optional<std::vector<PathStep>> parsedPath = parseFieldPath(path);
-    const std::string where = parsedPath && path.size() <= 120 && !hasNul(path) ? std::string(path) : inQuotes(path);
-    const std::optional<std::vector<PathStep>>& steps = parsedPath;
+    const std::optional<std::vector<PathStep>> steps = parseFieldPath(path);
+    const std::string where = steps && path.size() <= 120 && !hasNul(path) ? std::string(path) : inQuotes(path);
     const FieldRow* row = steps && !hasNul(path) ? fieldRow(path) : nullptr;
     if (!row || (row->custom && row->kind != FieldKind::Choice && row->kind != FieldKind::Int2) ||
         (row->style & kStyleHidden)) {

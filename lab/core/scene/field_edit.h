@@ -15,9 +15,12 @@
 namespace lab {
 
 // Sets the field at `path` (a row's path for an existing light, or one element of a triplet or a
-// pair) from `text`: a number, "true"/"false", a choice's file name, or a text. Returns "" when
-// set, else the problem ("material.shininess: must be in [0, 10000], got -1") with `preset`
-// untouched.
+// pair) from `text`: a number (read by the preset reader's JSON parser and checked by its
+// numberProblem, so exactly what a preset file may hold there, and ".5" and "5."), "true"/"false",
+// a choice's file name, or a text; then every rule of the field's object holds (field_table.h
+// objectRules). Returns "" when set, else the problem ("material.shininess: must be in [0.001,
+// 1000000], got 1000001": the value as typed; values and paths quoted at 120 bytes, safe_text.h)
+// with `preset` untouched.
 std::string setFieldFromText(Preset& preset, std::string_view path, std::string_view text);
 
 } // namespace lab
