@@ -73,7 +73,7 @@ Parsed parseNumber(std::string_view text, Json& number) {
     }
     const std::string json = asJsonNumber(text);
     try {
-        number = Json::parse(json);
+        number = Json::parse(std::string_view(json)); // (a string_view, as the reader's: one instantiation)
         return number.is_number() ? Parsed::Number : Parsed::NotANumber;
     } catch (const Json::out_of_range&) { // beyond a double: 1e309
         return jsonNumberSyntax(json) ? Parsed::OutOfRange : Parsed::NotANumber;
