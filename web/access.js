@@ -71,11 +71,8 @@
   // The lab's value in a number control: the text, and a spin button's value for a screen reader.
   function shownValue(input, v, c) {
     if (input.value !== String(v)) input.value = v;
-    if (input.type === 'range') input.setAttribute('aria-valuetext', spoken(v, c));
-    else {
-      input.setAttribute('aria-valuenow', v);
-      input.setAttribute('aria-valuetext', spoken(v, c));
-    }
+    input.setAttribute('aria-valuetext', spoken(v, c));
+    if (input.type !== 'range') input.setAttribute('aria-valuenow', v);
   }
 
   // Up and Down on a number field: one step (PageUp and PageDown ten) from the lab's value, within

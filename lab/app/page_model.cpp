@@ -420,8 +420,7 @@ std::vector<PageRefusal> applyPageEdits(Workspace& ws, const std::vector<PageEdi
         if (std::string* field = toolField(e.path, tools)) {
             *field = e.value;
         } else if (ws.exercise() && !fieldIsOpen(ws.exercise()->exercise, path)) {
-            problem = (parseFieldPath(path) && path.size() <= 120 ? path : inQuotes(path)) +
-                      ": this exercise does not let you change it";
+            problem = pathInMessage(path) + ": this exercise does not let you change it";
         } else {
             problem = setFieldFromText(ws.edited(), path, e.value);
         }

@@ -40,6 +40,13 @@ std::filesystem::path shippedPresets() {
     return shipped;
 }
 
+// The settings as the file holds them now (the defaults where there is none; `warning` says why one
+// does not read).
+lab::Settings remembered(std::string& warning) {
+    const std::optional<std::filesystem::path> file = lab::settingsFile();
+    return file ? lab::readSettings(*file, warning) : lab::Settings{};
+}
+
 // Writes `settings` to the settings file, or says on stderr why `what` is not remembered.
 void remember(const lab::Settings& settings, const std::string& what) {
     std::string error;
@@ -63,8 +70,7 @@ int runInteractive(const lab::CommandLine& line) {
     options.presetFolders.push_back(shippedPresets());
     // The course page's address: --share-base, remembered; else what was remembered.
     std::string warning;
-    const std::optional<std::filesystem::path> file = lab::settingsFile();
-    lab::Settings settings = file ? lab::readSettings(*file, warning) : lab::Settings{};
+    lab::Settings settings = remembered(warning);
     if (!warning.empty()) {
         lab::print(stderr, "lab: " + warning + "\n");
     }
@@ -81,8 +87,7 @@ int runInteractive(const lab::CommandLine& line) {
     options.theme = settings.theme;
     options.themeChosen = [](lab::Theme theme) {
         std::string ignored;
-        const std::optional<std::filesystem::path> now = lab::settingsFile();
-        lab::Settings kept = now ? lab::readSettings(*now, ignored) : lab::Settings{}; // as it is now, share_base kept
+        lab::Settings kept = remembered(ignored); // as it is now, share_base kept
         kept.theme = theme;
         remember(kept, "the theme");
     };

@@ -41,12 +41,8 @@ struct Reading {
 };
 
 std::optional<PresetJson> parseJson(std::string_view text, const std::string& file, Diagnostics& diagnostics) {
-    if (!jsonNestingWithin(text, kMaxJsonDepth)) {
-        diagnostics.push_back({file, "", "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels"});
-        return std::nullopt;
-    }
-    if (std::string nul = nulProblem(text); !nul.empty()) {
-        diagnostics.push_back({file, lineColumn(text, text.find('\0')), nul});
+    if (std::optional<Diagnostic> problem = jsonTextProblem(text, file, kMaxJsonDepth)) {
+        diagnostics.push_back(std::move(*problem));
         return std::nullopt;
     }
     try {

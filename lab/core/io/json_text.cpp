@@ -27,10 +27,14 @@ bool jsonNestingWithin(std::string_view text, int maxDepth) {
     return true;
 }
 
-std::string nulProblem(std::string_view text) {
-    return text.find('\0') == std::string_view::npos
-               ? ""
-               : "a NUL byte, which JSON text never holds (inside a string it is written \\u0000)";
+std::optional<Diagnostic> jsonTextProblem(std::string_view text, const std::string& file, int maxDepth) {
+    if (!jsonNestingWithin(text, maxDepth)) {
+        return Diagnostic{file, "", "JSON nested deeper than " + std::to_string(maxDepth) + " levels"};
+    }
+    if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+        return Diagnostic{file, lineColumn(text, nul), "a NUL byte, which JSON text never holds (inside a string it is written \\u0000)"};
+    }
+    return std::nullopt;
 }
 
 std::string parseErrorDetail(std::string_view what) {

@@ -8,7 +8,10 @@
 // This file owns those two questions. It does not parse JSON.
 #pragma once
 
+#include "core/io/diagnostics.h"
+
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -18,10 +21,11 @@ namespace lab {
 // not count). Malformed text is the parser's to report; this only bounds its depth.
 bool jsonNestingWithin(std::string_view text, int maxDepth);
 
-// "a NUL byte (...)" when `text` holds one, else "". JSON text holds none (inside a string it is
-// written \u0000), and nlohmann's parser takes one for the end of its input: "{...}\0anything" would
-// read as "{...}" and the rest go unread.
-std::string nulProblem(std::string_view text);
+// What keeps `text` from going to a JSON parser, as `file`'s diagnostic: nesting deeper than
+// `maxDepth` (jsonNestingWithin), or a NUL byte, with its line and column — JSON text holds none
+// (inside a string it is written \u0000), and nlohmann's parser takes one for the end of its input:
+// "{...}\0anything" would read as "{...}" and the rest go unread. Nullopt when neither.
+std::optional<Diagnostic> jsonTextProblem(std::string_view text, const std::string& file, int maxDepth);
 
 // "line L, column C" (from 1) of byte `offset` in `text`.
 std::string lineColumn(std::string_view text, std::size_t offset);

@@ -157,10 +157,9 @@ std::string setByKind(const FieldRow& row, Preset& p, LightDesc* light, std::opt
 } // namespace
 
 std::string setFieldFromText(Preset& preset, std::string_view path, std::string_view text) {
-    // The path as the refusal says it: itself when a path of the grammar, else quoted and cut.
-    const std::optional<std::vector<PathStep>> steps = parseFieldPath(path);
-    const std::string where = steps && path.size() <= 120 && !hasNul(path) ? std::string(path) : inQuotes(path);
-    const FieldRow* row = steps && !hasNul(path) ? fieldRow(path) : nullptr;
+    const std::optional<std::vector<PathStep>> steps = parseFieldPath(path); // (a NUL breaks the grammar)
+    const std::string where = pathInMessage(path);
+    const FieldRow* row = steps ? fieldRow(path) : nullptr;
     if (!row || (row->custom && row->kind != FieldKind::Choice && row->kind != FieldKind::Int2) ||
         (row->style & kStyleHidden)) {
         return where + ": not a field the page can set";

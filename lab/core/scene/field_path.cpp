@@ -1,6 +1,8 @@
 // field_path.cpp — the field path grammar (field_path.h).
 #include "core/scene/field_path.h"
 
+#include "core/io/safe_text.h"
+
 namespace lab {
 
 namespace {
@@ -59,6 +61,10 @@ std::string canonicalPath(std::string_view path) {
         out += s.isIndex() ? "[" + std::to_string(s.index) + "]" : (out.empty() ? "" : ".") + s.name;
     }
     return out;
+}
+
+std::string pathInMessage(std::string_view path) {
+    return path.size() <= 120 && parseFieldPath(path) ? std::string(path) : inQuotes(path);
 }
 
 bool covers(std::string_view prefix, std::string_view path) {

@@ -34,6 +34,10 @@ std::optional<std::vector<PathStep>> parseFieldPath(std::string_view path);
 // as it is.
 std::string canonicalPath(std::string_view path);
 
+// `path` as a message names it: itself when it is a path of the grammar of at most 120 bytes, else
+// quoted and cut as any typed value is (core/io/safe_text.h inQuotes: a megabyte, a NUL, escapes).
+std::string pathInMessage(std::string_view path);
+
 // True when `path` is `prefix` or lies below it ("lights[0]" covers "lights[0].attenuation",
 // "material" covers "material.diffuse"; "material.diffuse" does not cover "material.diffuse_x").
 // Both as spelt: canonicalPath them first where they come from a user.

@@ -53,12 +53,8 @@ constexpr int kMaxJsonDepth = 32;
 // The JSON object `text` holds, or nullopt after one diagnostic: nested too deep, not JSON, a
 // number beyond a double, or not an object.
 std::optional<Json> parseObject(std::string_view text, const std::string& file, Diagnostics& diagnostics) {
-    if (!jsonNestingWithin(text, kMaxJsonDepth)) {
-        diagnostics.push_back({file, "", "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels"});
-        return std::nullopt;
-    }
-    if (std::string nul = nulProblem(text); !nul.empty()) {
-        diagnostics.push_back({file, lineColumn(text, text.find('\0')), nul});
+    if (std::optional<Diagnostic> problem = jsonTextProblem(text, file, kMaxJsonDepth)) {
+        diagnostics.push_back(std::move(*problem));
         return std::nullopt;
     }
     Json json;
