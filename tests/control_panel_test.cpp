@@ -26,7 +26,9 @@ Drawn drawPanel(Preset& preset, const std::vector<std::filesystem::path>& files)
     ImGui::GetIO().DisplaySize = ImVec2(400, 1600);
     DisplaySettings view;
     ui::PanelInfo info;
-    info.presetFiles = &files;
+    for (const std::filesystem::path& f : files) {
+        info.presetNames.push_back(f.stem().string());
+    }
     info.documentName = "x.json";
     ui::PanelState state;
     std::vector<Request> requests;

@@ -44,12 +44,36 @@ TEST(ViewMode, AFactorAppliesOnlyWhereTheEquationHasIt) {
     }
 }
 
+// A range autoRange found (nearly) constant: [lo, hi] with the value and its half span.
+ValueRange constantRange(float lo, float hi, float v, float spread) {
+    ValueRange r{lo, hi};
+    r.constant = v;
+    r.spread = spread;
+    return r;
+}
+
+TEST(ViewMode, ASpotFactorAppliesToASpotLightOnly) {
+    Preset p;
+    EXPECT_NE(notApplicable(ViewMode::Spot, p, 0).find("point light"), std::string::npos) << notApplicable(ViewMode::Spot, p, 0);
+    p.lights[0].type = LightType::Spot;
+    EXPECT_EQ(notApplicable(ViewMode::Spot, p, 0), "");
+}
+
 TEST(ViewMode, TheAutomaticRangeIsTheValuesOrAConstantAsWhatItIs) {
     EXPECT_EQ(autoRange(0.2f, 3.5f), (ValueRange{0.2f, 3.5f}));
-    EXPECT_EQ(autoRange(1.0f, 1.0f), (ValueRange{0.0f, 1.0f})); // 1 everywhere is the palette's top
-    EXPECT_EQ(autoRange(0.0f, 0.0f), (ValueRange{0.0f, 1.0f})); // 0 everywhere its bottom
-    EXPECT_EQ(autoRange(5.0f, 5.0f), (ValueRange{0.0f, 5.0f}));
-    EXPECT_EQ(autoRange(-2.0f, -2.0f), (ValueRange{-2.0f, 1.0f}));
+    EXPECT_EQ(autoRange(1.0f, 1.0f), constantRange(0.0f, 1.0f, 1.0f, 0.0f)); // 1 everywhere is the palette's top
+    EXPECT_EQ(autoRange(0.0f, 0.0f), constantRange(0.0f, 1.0f, 0.0f, 0.0f)); // 0 everywhere its bottom
+    EXPECT_EQ(autoRange(5.0f, 5.0f), constantRange(0.0f, 5.0f, 5.0f, 0.0f));
+    EXPECT_EQ(autoRange(-2.0f, -2.0f), constantRange(-2.0f, 1.0f, -2.0f, 0.0f));
+    // Preset 13's F: 0.04 to 0.04001 is not a gradient to spread over the palette (issue 50).
+    const ValueRange f = autoRange(0.04f, 0.04001f);
+    ASSERT_TRUE(f.constant);
+    EXPECT_NEAR(*f.constant, 0.040005f, 1e-7f);
+    EXPECT_NEAR(f.spread, 0.000005f, 1e-7f);
+    EXPECT_EQ(f.lo, 0.0f);
+    EXPECT_EQ(f.hi, 1.0f);
+    EXPECT_FALSE(autoRange(0.04f, 0.0405f).constant); // 1.2%: a span to show
+    EXPECT_TRUE(autoRange(2.0f, 2.019f).constant);    // 0.9%
     EXPECT_FLOAT_EQ(rangePosition(0.5f, {0.0f, 2.0f}), 0.25f);
     EXPECT_FLOAT_EQ(rangePosition(9.0f, {0.0f, 2.0f}), 1.0f);
     EXPECT_FLOAT_EQ(rangePosition(-9.0f, {0.0f, 2.0f}), 0.0f);

@@ -7,9 +7,11 @@ namespace fs = std::filesystem;
 
 Document::Document() { reset(Preset{}, {}); }
 
-void Document::reset(Preset p, fs::path file, fs::path folder) {
+void Document::reset(Preset p, fs::path file, fs::path folder, std::optional<Preset> b) {
     preset = std::move(p);
-    compare = preset;
+    compare = b ? std::move(*b) : preset;
+    compare.camera = preset.camera;
+    savedCompare_ = compare;
     file_ = std::move(file);
     folder_ = std::move(folder);
     saved_ = preset;
@@ -29,6 +31,12 @@ bool Document::dirty() const {
     Preset a = preset;
     a.camera = saved_.camera;
     return a != saved_;
+}
+
+bool Document::edited() const {
+    Preset b = compare;
+    b.camera = savedCompare_.camera;
+    return dirty() || b != savedCompare_;
 }
 
 std::string Document::displayName() const { return file_.empty() ? preset.name : file_.filename().string(); }
@@ -74,9 +82,13 @@ void Document::markSaved(fs::path file) {
     saved_ = preset;
 }
 
-void Document::revert() {
+void Document::revert(bool andCompare) {
     commit(false);
     preset = saved_;
+    if (andCompare) {
+        compare = savedCompare_;
+        compare.camera = preset.camera;
+    }
     commit(false);
 }
 

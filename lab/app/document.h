@@ -12,6 +12,7 @@
 #include "core/scene/preset.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,10 @@ public:
     Document();
 
     // Replaces everything: a freshly opened file (or the defaults when `file` is empty); B becomes
-    // a copy of A. The history starts anew. `folder` is where glTF paths resolve when untitled.
-    void reset(Preset preset, std::filesystem::path file, std::filesystem::path folder = {});
+    // `compare` when given (a prepared comparison), else a copy of A. The history starts anew.
+    // `folder` is where glTF paths resolve when untitled.
+    void reset(Preset preset, std::filesystem::path file, std::filesystem::path folder = {},
+               std::optional<Preset> compare = {});
 
     Preset preset;  // set A, edited in place by the UI; what is saved
     Preset compare; // set B, compare mode's second set; never saved
@@ -32,7 +35,10 @@ public:
     std::filesystem::path folder() const;
     std::string displayName() const; // file name, or the preset's name when untitled
     bool dirty() const;
+    // Whether A or B differs from what was opened (the camera aside): the caption's "(edited)".
+    bool edited() const;
     const Preset& saved() const { return saved_; }
+    const Preset& savedCompare() const { return savedCompare_; }
 
     // Records the edits since the last step as one undo step, unless `gestureInProgress`.
     // Returns true if a step was recorded.
@@ -47,8 +53,9 @@ public:
     // After a successful save to `file` (which may be a new path: save-as).
     void markSaved(std::filesystem::path file);
 
-    // Back to what is on disk (or the defaults), as one undoable step.
-    void revert();
+    // Back to what is on disk (or the defaults), as one undoable step; `andCompare`: B too, to
+    // what it was opened as (a deck's "Reset slide").
+    void revert(bool andCompare = false);
 
     void setFolder(std::filesystem::path folder) { folder_ = std::move(folder); }
 
@@ -67,6 +74,7 @@ private:
     std::filesystem::path file_;
     std::filesystem::path folder_; // for untitled documents
     Preset saved_;
+    Preset savedCompare_; // B as it was opened
     Snapshot committed_; // the state after the last recorded step
     std::vector<Snapshot> undo_, redo_;
 };

@@ -228,9 +228,10 @@ void fileSections(Writer& w, Workspace& ws, const ui::ExercisePanelModel* exerci
     w.close('}');
     sectionStart(w, "presets", "Presets", "model");
     w.key("controls").open('[').close(']').key("buttons").open('[');
-    for (std::size_t i = 0; i < ws.presetFiles().size(); ++i) {
-        button(w, Command::OpenPresetAt, static_cast<int>(i), printable(ws.presetFiles()[i].stem().string(), true),
-               static_cast<int>(i) == ws.currentPreset());
+    const std::vector<std::string> slides = ws.slideNames();
+    for (std::size_t i = 0; i < slides.size(); ++i) {
+        button(w, Command::OpenPresetAt, static_cast<int>(i), printable(slides[i], true),
+               static_cast<int>(i) == ws.currentSlide());
     }
     for (std::size_t i = 0; i < ws.exerciseFiles().size(); ++i) {
         button(w, Command::OpenPath, static_cast<int>(i), "Exercise: " + printable(ws.exerciseFiles()[i].stem().string(), true));

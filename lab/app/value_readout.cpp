@@ -68,6 +68,9 @@ std::string legendWords(const std::optional<ui::LegendModel>& legend) {
         std::snprintf(buffer, sizeof buffer, ": colours from %g to %g%s", static_cast<double>(legend->range->lo),
                       static_cast<double>(legend->range->hi), legend->automatic ? " (found on the model)" : "");
         text += buffer;
+        if (legend->range->constant) {
+            text += "; " + ui::constantWords(*legend);
+        }
     }
     if (legend->value) {
         std::snprintf(buffer, sizeof buffer, "; under the pointer %.3f", static_cast<double>(*legend->value));

@@ -70,7 +70,14 @@ void Workspace::start(const fs::path& folder, const std::optional<fs::path>& pre
     std::error_code ec;
     shipped_ = fs::is_directory(bundledFolder(), ec) ? listPresets(bundledFolder()) : std::vector<fs::path>{};
     refreshPresetList();
-    if (preset) {
+    if (preset && fs::is_directory(*preset, ec)) { // a folder is a deck of its presets, in name order
+        std::vector<fs::path> files = listPresets(*preset);
+        if (files.empty()) {
+            problem("Cannot open " + preset->string(), "the folder holds no preset (.json) files");
+        } else {
+            openFile(files.front(), true);
+        }
+    } else if (preset) {
         open(*preset);
     }
 }
@@ -87,9 +94,14 @@ void Workspace::problem(std::string title, std::string message) {
     problem(std::move(title), Diagnostics{{"", "", std::move(message)}});
 }
 
-void Workspace::whenChangesAreSafe(std::string what, std::function<void()> action) {
+void Workspace::whenChangesAreSafe(std::string what, std::function<void()> action, bool replacesScene) {
     doc_.commit(false);
-    if (!doc_.dirty()) {
+    if (replacesScene && onSlide()) { // the slide's edits stay with it (workspace_slides.cpp)
+        keepSlide();
+        action();
+        return;
+    }
+    if (replacesScene ? !doc_.dirty() : slidesEdited() == 0) {
         action();
         return;
     }
@@ -99,15 +111,16 @@ void Workspace::whenChangesAreSafe(std::string what, std::function<void()> actio
 
 void Workspace::answer(UnsavedAnswer answer) {
     std::function<void()> action = std::exchange(pending_, nullptr);
+    const bool quitting = question_ == "quit";
     question_.reset();
-    bool saved = answer == UnsavedAnswer::SaveFirst && save({});
+    bool saved = answer == UnsavedAnswer::SaveFirst && (quitting ? saveEverySlide() : save({}));
     if (action && (answer == UnsavedAnswer::Discard || saved)) {
         action();
     }
 }
 
 void Workspace::requestQuit() {
-    whenChangesAreSafe("quit", [this]() { quit_ = true; });
+    whenChangesAreSafe("quit", [this]() { quit_ = true; }, false);
 }
 
 //----------------------------------------------------------------------------------------
@@ -118,11 +131,10 @@ bool Workspace::run(const Request& r) {
     switch (r.command) {
     case Command::PreviousPreset: stepPreset(-1); return true;
     case Command::NextPreset: stepPreset(+1); return true;
-    case Command::OpenPresetAt:
-        if (r.index >= 0 && r.index < static_cast<int>(presetFiles_.size())) {
-            open(presetFiles_[static_cast<std::size_t>(r.index)]);
-        }
-        return true;
+    case Command::OpenPresetAt: goToSlide(r.index); return true;
+    case Command::FirstSlide: goToSlide(0); return true;
+    case Command::LastSlide: goToSlide(static_cast<int>(slideNames().size()) - 1); return true;
+    case Command::ResetSlide: resetSlide(); return true;
     case Command::OpenPath: open(r.path); return true;
     case Command::Save: save(r.path); return true;
     case Command::SaveAs:
@@ -134,7 +146,7 @@ bool Workspace::run(const Request& r) {
         return true;
     case Command::LoadModel: useModel(r.path); return true;
     case Command::DownloadPreset: download(); return true;
-    case Command::Revert: doc_.revert(); return true;
+    case Command::Revert: doc_.revert(true); return true;
     case Command::Undo: doc_.undo(); return true;
     case Command::Redo: doc_.redo(); return true;
     default: return runExercise(r) || runFit(r) || runEdit(r.command);
@@ -151,8 +163,9 @@ bool Workspace::runEdit(Command command) {
     case Command::NextBrdf: e.brdf = nextOf(kBrdfModels, e.brdf); return true;
     case Command::ToggleNormalMatrix: e.normalMatrix = nextOf(kNormalMatrixModes, e.normalMatrix); return true;
     case Command::NextViewMode: // the views that apply to the edited set (the lit model always does)
+    case Command::PreviousViewMode:
         do {
-            view.mode = nextOf(kViewModes, view.mode);
+            view.mode = command == Command::NextViewMode ? nextOf(kViewModes, view.mode) : previousOf(kViewModes, view.mode);
         } while (!notApplicable(view.mode, e, view.light).empty());
         return true;
     case Command::ToggleWireframe: view.wireframe = !view.wireframe; return true;
@@ -215,31 +228,51 @@ void Workspace::refreshPresetList() {
     }
 }
 
-// The scene becomes `preset`: a new history, B a copy of A.
-void Workspace::adopt(Preset preset, fs::path file, fs::path folder) {
+// The scene becomes `preset`: a new history, B its prepared comparison (or `compare`, or a copy of
+// A), the display as the file asks.
+void Workspace::adopt(Preset preset, fs::path file, fs::path folder, std::optional<Preset> compare) {
     if (exercise_) {
         exercise_.reset();
         view.compare = false;
     }
-    doc_.reset(std::move(preset), std::move(file), std::move(folder));
+    if (!compare) {
+        Diagnostics d; // (checked when the file was read: only a file changed since could fail)
+        compare = comparedPreset(preset, file.empty() ? folder : file.parent_path(), d);
+        if (!compare) {
+            problem("Cannot make the prepared comparison of " + preset.name + " (B is a copy of A)", std::move(d));
+        }
+    }
+    opened_ = preset.display;
+    doc_.reset(std::move(preset), std::move(file), std::move(folder), std::move(compare));
+    slideKey_.clear();
+    currentDeckSlide_ = -1;
     ++scenesOpened_;
     refreshPresetList();
+    showAsOpened();
 }
 
 // Loads and checks everything first; the scene changes only when all of it worked.
-void Workspace::open(const fs::path& file) {
+void Workspace::open(const fs::path& file) { openFile(file, false); }
+
+// `asSlide`: a file of the preset list, stepped to (workspace_slides.cpp): opened without asking.
+void Workspace::openFile(const fs::path& file, bool asSlide) {
     waiting_.reset();
     Diagnostics d;
     std::string error;
-    if (std::optional<std::string> text = readFile(file, kMaxExerciseBytes, error); text && isExerciseText(*text)) {
+    std::optional<std::string> text = readFile(file, kMaxDeckBytes, error);
+    if (text && isDeckText(*text)) {
+        openDeck(file);
+        return;
+    }
+    if (text && text->size() <= kMaxExerciseBytes && isExerciseText(*text)) {
         std::optional<LoadedExercise> exercise = loadExercise(file, d);
         if (!exercise) {
             problem("Cannot open " + file.filename().string() + " (nothing was changed)", std::move(d));
             return;
         }
         const std::string title = "Cannot load the model of " + file.filename().string() + " (nothing was changed)";
-        if (waitsFor(exercise->exercise.start.model, exercise->folder(), title, [this, file] { open(file); }) ||
-            waitsFor(exercise->exercise.target.model, exercise->folder(), title, [this, file] { open(file); })) {
+        if (waitsFor(exercise->exercise.start.model, exercise->folder(), title, [this, file, asSlide] { openFile(file, asSlide); }) ||
+            waitsFor(exercise->exercise.target.model, exercise->folder(), title, [this, file, asSlide] { openFile(file, asSlide); })) {
             return;
         }
         if (!meshes_.get(exercise->exercise.start.model, exercise->folder(), d)) {
@@ -260,26 +293,21 @@ void Workspace::open(const fs::path& file) {
         return;
     }
     const std::string title = "Cannot load the model of " + file.filename().string() + " (nothing was changed)";
-    if (waitsFor(loaded->preset.model, loaded->folder(), title, [this, file] { open(file); })) {
+    if (waitsFor(loaded->preset.model, loaded->folder(), title, [this, file, asSlide] { openFile(file, asSlide); })) {
         return;
     }
     if (!meshes_.get(*loaded, d)) { // (a glTF model without a camera in the file is framed here)
         problem(title, std::move(d));
         return;
     }
-    whenChangesAreSafe("open " + file.filename().string(), [this, loaded = std::move(*loaded)]() {
-        adopt(loaded.preset, loaded.file, {});
-        notes_.push_back("Opened " + loaded.file.filename().string());
-    });
-}
-
-void Workspace::stepPreset(int delta) {
-    if (presetFiles_.empty()) {
+    if (asSlide) {
+        enterSlide(slideKeyOf(file), *loaded, loaded->preset.display, {});
         return;
     }
-    int n = static_cast<int>(presetFiles_.size());
-    int next = currentPreset_ < 0 ? (delta > 0 ? 0 : n - 1) : (currentPreset_ + delta + n) % n;
-    open(presetFiles_[static_cast<std::size_t>(next)]);
+    whenChangesAreSafe("open " + file.filename().string(), [this, loaded = std::move(*loaded)]() {
+        adopt(loaded);
+        notes_.push_back("Opened " + loaded.file.filename().string());
+    });
 }
 
 bool Workspace::saveTo(const fs::path& file) {

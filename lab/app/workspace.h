@@ -18,12 +18,14 @@
 #include "core/io/diagnostics.h"
 #include "core/io/image.h"
 #include "core/lighting/lighting.h"
+#include "core/scene/deck.h"
 #include "core/scene/view_mode.h"
 #include "ui/actions.h"
 
 #include <array>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -95,6 +97,10 @@ public:
     DisplaySettings view; // the per-term view and compare mode
 
     const std::vector<std::filesystem::path>& presetFiles() const { return presetFiles_; }
+    // The list the panel shows and Left/Right step through: a deck's slides' titles, else the
+    // preset list's file names; and the one open (-1 if none).
+    std::vector<std::string> slideNames() const;
+    int currentSlide() const { return deck_ ? currentDeckSlide_ : currentPreset_; }
     // The shipped exercises (the first preset folder's exercises/), for the panel's list.
     const std::vector<std::filesystem::path>& exerciseFiles() const { return exerciseFiles_; }
     int currentPreset() const { return currentPreset_; } // index in presetFiles, -1 if none
@@ -136,6 +142,24 @@ public:
         doc_.compare.camera = doc_.preset.camera;
         doc_.commit(gestureInProgress);
     }
+
+    //--- slides (workspace_slides.cpp) -------------------------------------------------------
+    // A deck's slides, or a folder's presets (the preset list), are slides: stepping through them
+    // never asks, each keeps its live edits, its undo history and its display for the session
+    // (going back shows them), and nothing is written unasked. A file opened by path that is not
+    // in the list is a document as before (its unsaved changes asked about).
+    const std::optional<Deck>& deck() const { return deck_; }
+    bool onSlide() const { return !slideKey_.empty(); }
+    // The speaker's notes of what is shown: the slide's, else the preset's own.
+    const std::string& notes() const;
+    // The next slide's title ("" at the last, or when not on a slide).
+    std::string nextSlideTitle() const;
+    void goToSlide(int index);
+    // The scene, set B and the display back to the file's (one undo step).
+    void resetSlide();
+    // The display the file asks for (its `display`, core/scene/preset.h), compare mode when it
+    // has `compare`; the defaults where it says nothing.
+    void showAsOpened();
 
     //--- exercises ----------------------------------------------------------------------
     const std::optional<ExerciseSession>& exercise() const { return exercise_; }
@@ -186,12 +210,26 @@ private:
     bool waitsFor(const Model& model, const std::filesystem::path& folder, std::string title, std::function<void()> again);
     bool runEdit(Command command);
     void stepPreset(int delta);
+    void openFile(const std::filesystem::path& file, bool asSlide);
+    void openDeck(const std::filesystem::path& file);
+    // The slide `key` becomes the scene: its kept edits, else `loaded` as opened.
+    void enterSlide(const std::string& key, const LoadedPreset& loaded, const OpeningDisplay& display,
+                    const std::filesystem::path& folder);
+    void keepSlide();
+    void stepTo(int index); // goToSlide once nothing would be lost
+    std::string slideKeyOf(const std::filesystem::path& file) const;
+    int slidesEdited() const; // the slides kept with unsaved edits, and the document if it is one
+    bool saveEverySlide();
     bool save(const std::string& saveAsField);
     bool isShipped(const std::filesystem::path& file) const;
     void download();
     void refreshPresetList();
-    void whenChangesAreSafe(std::string what, std::function<void()> action);
-    void adopt(Preset preset, std::filesystem::path file, std::filesystem::path folder);
+    // `action` now when nothing would be lost (a slide's edits are kept), else after the question.
+    // `replacesScene`: the action opens another scene (quitting does not).
+    void whenChangesAreSafe(std::string what, std::function<void()> action, bool replacesScene = true);
+    void adopt(Preset preset, std::filesystem::path file, std::filesystem::path folder,
+               std::optional<Preset> compare = {});
+    void adopt(const LoadedPreset& loaded);
     void problem(std::string title, Diagnostics diagnostics);
     void problem(std::string title, std::string message);
     std::filesystem::path bundledFolder() const;
@@ -210,6 +248,16 @@ private:
     // uploaded file into the same folder, and no one else's page has it).
     std::vector<std::filesystem::path> shipped_;
     int currentPreset_ = -1;
+    std::optional<Deck> deck_;
+    int currentDeckSlide_ = -1;
+    std::string slideKey_; // the slide the document is ("" when it is not one)
+    struct KeptSlide {
+        Document doc;
+        DisplaySettings view;
+        OpeningDisplay opened;
+    };
+    std::map<std::string, KeptSlide> slides_; // the slides left with their edits, by key
+    OpeningDisplay opened_;                   // the display the document was opened with
     std::optional<std::string> question_;
     std::function<void()> pending_;
     struct Waiting {

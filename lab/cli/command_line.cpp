@@ -468,8 +468,10 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     app.set_version_flag("--version", "lab " LAB_VERSION);
     app.require_subcommand(0, 1);
     CommandLine line;
-    std::string preset, layoutFile, screenshotFolder = ".", windowSize;
-    app.add_option("--preset", preset, "Open the lab with this preset");
+    std::string preset, deck, layoutFile, screenshotFolder = ".", windowSize;
+    app.add_option("--preset", preset, "Open the lab with this preset, or a folder of presets to step through in name order");
+    app.add_option("--deck", deck, "Open the lab with this deck: a lecture's slides with speaker notes (presets/decks/lecture.json)")
+        ->excludes("--preset");
     app.add_flag("--presenter", line.presenter, "Start in presenter mode (large UI for a projector)");
     app.add_flag("--fullscreen", line.fullscreen, "Start fullscreen");
     app.add_option("--size", windowSize, "Window size (default: 1600x900, or the screen's work area if smaller)")
@@ -520,8 +522,8 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     if (!theme.empty()) {
         line.theme = themeFrom(theme); // checked by kThemeName
     }
-    if (!preset.empty()) {
-        line.preset = preset;
+    if (!preset.empty() || !deck.empty()) {
+        line.preset = deck.empty() ? preset : deck; // a deck opens as a file: its format says what it is
     }
     if (!layoutFile.empty()) {
         line.layoutFile = layoutFile;

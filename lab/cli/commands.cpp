@@ -4,10 +4,12 @@
 #include "cli/command_kit.h"
 #include "cli/output.h"
 #include "core/exercise/exercise.h"
+#include "core/exercise/preset_fields.h"
 #include "core/gltf/model_loader.h"
 #include "core/io/file_io.h"
 #include "core/io/safe_text.h"
 #include "core/io/number_format.h"
+#include "core/plots/compare_image.h"
 #include "core/plots/energy.h"
 #include "core/plots/legend.h"
 #include "core/plots/plot_data.h"
@@ -174,6 +176,40 @@ Image finished(Rendered rendered, const RenderView& view, const fs::path& target
     return std::move(rendered.image);
 }
 
+// One render of `preset` as `lab render` writes it: a prepared comparison (preset.h `compare`) as
+// compare mode shows it (core/plots/compare_image.h), each half width/2 wide under its label.
+std::optional<Image> picture(Gpu& gpu, const LoadedPreset& preset, Size size, const RenderView& view, const fs::path& target) {
+    Diagnostics diagnostics;
+    std::vector<std::string> notes;
+    std::optional<LoadedPreset> b;
+    int width = size.width, height = size.height;
+    if (!preset.preset.compare.empty()) {
+        std::optional<Preset> compared = comparedPreset(preset.preset, preset.folder(), diagnostics);
+        if (!compared) {
+            printDiagnostics(diagnostics);
+            return std::nullopt;
+        }
+        b = LoadedPreset{*compared, preset.file, preset.omitted};
+        width = std::max(1, (size.width - 2) / 2);
+        height = std::max(1, size.height - compareLabelHeight(size.height));
+    }
+    std::optional<Rendered> rendered = gpu.renderer.renderView(preset, width, height, viewDrawOf(view), diagnostics, &notes);
+    std::optional<Rendered> second = b && rendered ? gpu.renderer.renderView(*b, width, height, viewDrawOf(view), diagnostics, &notes)
+                                                   : std::nullopt;
+    printNotes(preset.file, notes);
+    if (!rendered || (b && !second)) {
+        printDiagnostics(diagnostics);
+        return std::nullopt;
+    }
+    Image image = finished(std::move(*rendered), view, target);
+    if (b) {
+        const DifferenceLabels labels = differenceLabels(preset.preset, b->preset);
+        image = composeComparison(image, finished(std::move(*second), view, target),
+                                  labels.a.empty() ? "A" : "A: " + labels.a, labels.b.empty() ? "B" : "B: " + labels.b);
+    }
+    return image;
+}
+
 } // namespace
 
 int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size size, const RenderView& view) {
@@ -232,18 +268,12 @@ int runRender(const std::vector<fs::path>& presets, const fs::path& out, Size si
             anyBad = true;
             continue;
         }
-        Diagnostics diagnostics;
-        std::vector<std::string> notes;
-        std::optional<Rendered> rendered =
-            gpu.renderer.renderView(*preset, size.width, size.height, viewDrawOf(view), diagnostics, &notes);
-        printNotes(preset->file, notes);
-        if (!rendered) {
-            printDiagnostics(diagnostics);
+        fs::path target = toFolder ? out / (preset->file.stem().string() + ".png") : out;
+        std::optional<Image> image = picture(gpu, *preset, size, view, target);
+        if (!image) {
             anyBad = true;
             continue;
         }
-        fs::path target = toFolder ? out / (preset->file.stem().string() + ".png") : out;
-        std::optional<Image> image = finished(std::move(*rendered), view, target);
         std::string error;
         // Renewable: renamed into place without an fsync (about 10 ms a run here, sometimes 50,
         // while the file system commits its journal); a render is made again by running it again.

@@ -36,9 +36,9 @@ enum Modifier : unsigned { kNoModifier = 0, kCtrl = 1, kShift = 2, kAlt = 4 };
 
 enum class Command {
     // The scene and its files (the workspace carries these out)
-    PreviousPreset, NextPreset, OpenPresetAt, OpenPath, Save, SaveAs, Revert, Undo, Redo,
+    PreviousPreset, NextPreset, FirstSlide, LastSlide, ResetSlide, OpenPresetAt, OpenPath, Save, SaveAs, Revert, Undo, Redo,
     DownloadPreset, LoadModel, ShadingFlat, ShadingGouraud, ShadingPhong, NextBrdf,
-    ToggleNormalMatrix, NextViewMode, ToggleWireframe, ToggleVertexNormals, ToggleCompare, ResetCamera, FrameModel,
+    ToggleNormalMatrix, NextViewMode, PreviousViewMode, ToggleWireframe, ToggleVertexNormals, ToggleCompare, ResetCamera, FrameModel,
     // The camera in steps (the page's buttons: a keyboard's and a single pointer's way to orbit and zoom)
     OrbitLeft, OrbitRight, OrbitUp, OrbitDown, ZoomIn, ZoomOut,
     // Fitting (core/plots/fit.h): B becomes that model fitted to A's specular lobe, in compare mode
@@ -46,7 +46,7 @@ enum class Command {
     FitPhong, FitBlinnPhong, FitCookTorrance,
     // The window and its tools (the app carries these out)
     ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
-    ToggleLightShapes, ToggleLightMotion,
+    ToggleLightShapes, ToggleLightMotion, ToggleNotes,
     ToggleFrameTime,
     ToggleFullscreen, Screenshot, FocusOpenPath, PickFile, CopyLink, ToggleShaderEditor, CompileShaders,
     ExportFigures,

@@ -63,8 +63,14 @@ std::optional<UnsavedAnswer> unsavedChangesDialog(const std::string& documentNam
         return std::nullopt;
     }
     std::optional<UnsavedAnswer> answer;
+    // Wrapped at the dialog's widest, as the problem's: a long file name is never cut off.
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetIO().DisplaySize.x * 0.8f - 2.0f * ImGui::GetStyle().WindowPadding.x);
     ImGui::TextUnformatted((printable(documentName, true) + " has unsaved changes. Discard them to " + printable(what, true) + "?").c_str());
-    if (answered("Save first", "confirm.save")) {
+    ImGui::PopTextWrapPos();
+    // Enter is the default (keep the work: save first), Esc cancels; no mouse needed.
+    const bool enter = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+                       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter), false);
+    if (answered("Save first (Enter)", "confirm.save") || enter) {
         answer = UnsavedAnswer::SaveFirst;
     }
     ImGui::SameLine();
@@ -72,7 +78,7 @@ std::optional<UnsavedAnswer> unsavedChangesDialog(const std::string& documentNam
         answer = UnsavedAnswer::Discard;
     }
     ImGui::SameLine();
-    if (answered("Cancel", "confirm.cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+    if (answered("Cancel (Esc)", "confirm.cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
         answer = UnsavedAnswer::Cancel;
     }
     if (answer) {

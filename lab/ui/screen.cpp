@@ -146,6 +146,9 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
         const Rect& beside = layout.plots.w > 0.0f ? layout.plots : layout.panel.w > 0.0f ? layout.panel : layout.viewport;
         probeWindow(*m.probe, *m.a, *m.view, *m.probeOpen, beside.x + 10.0f, beside.y + ImGui::GetFontSize() * 2.0f);
     }
+    if (m.showNotes) {
+        notesWindow(m.notes, *m.showNotes, layout.view.x + 8.0f, layout.view.y + layout.view.h - 8.0f, std::max(layout.view.w * 0.6f, 200.0f));
+    }
     shaderEditorWindow(*m.shaderEditor, events.requests, m.lightingSource);
     if (m.shareCode) {
         shareCodeWindow(*m.shareCode, events.requests);

@@ -76,7 +76,7 @@ std::vector<std::string> changedFields(const PresetJson& a, const PresetJson& b)
 }
 
 bool alwaysFree(std::string_view path) {
-    for (std::string_view free : {"name", "description", "camera", "plot", "check", "sweep"}) {
+    for (std::string_view free : {"name", "description", "camera", "plot", "check", "sweep", "display", "notes", "compare"}) {
         if (covers(free, path)) {
             return true;
         }
@@ -192,6 +192,84 @@ PresetJson presetPatch(const PresetJson& base, const PresetJson& full) {
         }
     }
     return patch;
+}
+
+namespace {
+
+// A field's value as the label says it: a choice's label, a number as the file has it, a triplet
+// "(0.8, 0.8, 0.8)", a switch "on"/"off"; a light only one set has is "none" in the other.
+std::string valueText(const PresetJson* value, const FieldRow* row) {
+    if (!value) {
+        return "none";
+    }
+    if (row && row->kind == FieldKind::Choice && value->is_string()) {
+        for (const FieldChoice& c : row->choices) {
+            if (c.name == value->get<std::string>()) {
+                return c.label;
+            }
+        }
+    }
+    if (value->is_boolean()) {
+        return value->get<bool>() ? "on" : "off";
+    }
+    if (value->is_object()) { // a light only one set has
+        auto type = value->find("type");
+        return type != value->end() && type->is_string() ? type->get<std::string>() + " light" : "present";
+    }
+    if (value->is_array() && std::all_of(value->begin(), value->end(), [](const PresetJson& v) { return v.is_number(); })) {
+        std::string text;
+        for (const PresetJson& v : *value) {
+            text += (text.empty() ? "(" : ", ") + v.dump();
+        }
+        return text + ")";
+    }
+    return value->is_string() ? value->get<std::string>() : value->dump();
+}
+
+// "normal matrix", "light 2 position", "light 3".
+std::string fieldName(std::string_view path, const FieldRow* row) {
+    std::string name;
+    if (path.starts_with("lights[")) {
+        const std::size_t close = path.find(']');
+        name = "light " + std::to_string(std::stoi(std::string(path.substr(7, close - 7))) + 1);
+        if (!row) {
+            return name;
+        }
+        name += " ";
+    }
+    return name + std::string(row && !row->label.empty() ? row->label : path);
+}
+
+} // namespace
+
+DifferenceLabels differenceLabels(const Preset& a, const Preset& b, std::size_t most) {
+    auto scene = [](Preset p) {
+        p.camera = {};
+        p.name.clear();
+        p.description.clear();
+        p.display = {};
+        p.notes.clear();
+        p.compare.clear();
+        p.check = {};
+        p.sweep.clear();
+        return presetValue(p);
+    };
+    const PresetJson ja = scene(a), jb = scene(b);
+    const std::vector<std::string> changed = changedFields(ja, jb);
+    DifferenceLabels labels;
+    for (std::size_t i = 0; i < changed.size() && i < most; ++i) {
+        const FieldRow* row = fieldRow(changed[i]);
+        const std::string name = fieldName(changed[i], row);
+        const std::string sep = i == 0 ? "" : "; ";
+        labels.a += sep + name + ": " + valueText(fieldAt(ja, changed[i]), row);
+        labels.b += sep + name + ": " + valueText(fieldAt(jb, changed[i]), row);
+    }
+    if (changed.size() > most) {
+        const std::string more = " (+" + std::to_string(changed.size() - most) + " more)";
+        labels.a += more;
+        labels.b += more;
+    }
+    return labels;
 }
 
 } // namespace lab

@@ -45,6 +45,15 @@ const PresetJson* fieldAt(const PresetJson& json, std::string_view path);
 // built-in and the other way round.
 PresetJson mergePreset(PresetJson base, const PresetJson& patch);
 
+// What tells two sets apart, for compare mode's labels and `lab render`'s compare view: each
+// field of the scene that differs (the camera, the texts and the lecture's parts aside) as
+// "label: value" — "normal matrix: model-view (wrong)" for `a`, "normal matrix: inverse-transpose
+// (correct)" for `b` — at most `most` of them, then "+N more"; both empty when nothing differs.
+struct DifferenceLabels {
+    std::string a, b;
+};
+DifferenceLabels differenceLabels(const Preset& a, const Preset& b, std::size_t most = 3);
+
 // What `mergePreset(base, ·)` needs to turn `base` into `full`: only the keys that differ, null for
 // a key `full` lacks. Where `full` has fewer lights than `base` (a patch does not remove elements),
 // the whole of `full` with "format" and "version".

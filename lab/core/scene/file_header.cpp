@@ -16,7 +16,7 @@ std::optional<HeaderProblem> fileHeaderProblem(const nlohmann::ordered_json& obj
     if (!format->is_string() || format->get<std::string>() != expected.format) {
         std::string got = shortened(format->dump(), 80);
         std::string hint;
-        for (const FileFormat& other : {kPresetFile, kExerciseFile}) {
+        for (const FileFormat& other : {kPresetFile, kExerciseFile, kDeckFile}) {
             if (other.format != expected.format && format->is_string() && format->get<std::string>() == other.format) {
                 hint = " (this is " + std::string(other.what) + ", not " + std::string(expected.what) + ")";
             }

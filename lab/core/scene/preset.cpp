@@ -136,6 +136,27 @@ Json checkJson(const CheckSettings& c) {
     return check;
 }
 
+// `display`: what differs from the defaults.
+Json displayJson(const OpeningDisplay& d) {
+    Json display = Json::object();
+    if (!d.view.empty()) {
+        display["view"] = d.view;
+    }
+    if (d.light != 1) {
+        display["light"] = d.light;
+    }
+    if (d.compare) {
+        display["compare"] = *d.compare;
+    }
+    if (d.wipe) {
+        display["wipe"] = true;
+    }
+    if (d.wireframe) {
+        display["wireframe"] = true;
+    }
+    return display;
+}
+
 // A row's value as the file writes it.
 Json rowJson(const FieldRow& row, Preset& p, LightDesc* light) {
     switch (row.kind) {
@@ -195,6 +216,16 @@ Json presetJson(const Preset& preset) {
     }
     if (!p.sweep.empty()) {
         j["sweep"] = p.sweep;
+    }
+    // The lecture's parts likewise (core/scene/preset.h OpeningDisplay, notes, compare).
+    if (!p.display.empty()) {
+        j["display"] = displayJson(p.display);
+    }
+    if (!p.notes.empty()) {
+        j["notes"] = p.notes;
+    }
+    if (!p.compare.empty()) {
+        j["compare"] = Json::parse(p.compare, nullptr, false); // minified when read: valid JSON
     }
     return j;
 }

@@ -130,6 +130,21 @@ struct CheckSettings {
     bool operator==(const CheckSettings&) const = default;
 };
 
+// How the lab first shows the preset (its optional `display` block): the view, the factor view's
+// light, compare mode, the wipe and the wireframe. Opening the preset or a deck's slide sets the
+// lab's display to this; what it leaves out is the default (the lit model, no wipe, no wireframe;
+// compare mode when the preset has `compare`). `lab render` draws its view and compare mode. The
+// view's name is checked when read; whether it applies to the preset where it is shown.
+struct OpeningDisplay {
+    std::string view;             // a view_mode.h name; "" the lit model
+    int light = 1;                // the factor view's light, from 1
+    std::optional<bool> compare;  // none: compare mode when the preset has `compare`
+    bool wipe = false;
+    bool wireframe = false;
+    bool empty() const { return view.empty() && light == 1 && !compare && !wipe && !wireframe; }
+    bool operator==(const OpeningDisplay&) const = default;
+};
+
 struct Preset {
     std::string name = "Untitled";
     std::string description;
@@ -149,6 +164,13 @@ struct Preset {
     std::vector<std::string> sweep; // `sweep`: one or two `lab render --sweep` arguments as typed
                                     // ("material.shininess=10,20,50"), checked by core/scene/sweep.h;
                                     // `lab check` compares the grid with <name>.sweep.png
+    // For the lecture, each only when given (none of them changes set A's picture):
+    OpeningDisplay display; // `display`: how the lab first shows it
+    std::string notes;      // `notes`: the speaker's notes (the notes window, a deck's slide)
+    // `compare`: a prepared comparison, set B as a patch of this preset's fields (the share link's
+    // grammar, core/exercise/preset_fields.h mergePreset: objects key by key, lights element by
+    // element), kept as its minified JSON text ("" none); comparedPreset() makes B of it.
+    std::string compare;
     bool operator==(const Preset&) const = default;
 };
 
@@ -187,6 +209,12 @@ std::optional<Preset> parsePreset(std::string_view text, const std::string& disp
 std::optional<Preset> parseInlinePreset(std::string_view objectText, const std::string& displayName,
                                         const std::string& where, const std::optional<std::filesystem::path>& folder,
                                         Diagnostics& diagnostics, OmittedKeys* omitted = nullptr);
+
+// Set B of a preset with `compare`: `preset` (its display, notes and compare left out) with the
+// patch applied, validated as the file was when it was read (a glTF path against `folder`); the
+// preset itself when it has no `compare`. Diagnostics name "compare.<path>".
+std::optional<Preset> comparedPreset(const Preset& preset, const std::optional<std::filesystem::path>& folder,
+                                     Diagnostics& diagnostics);
 
 // Reads, parses and validates a preset file (at most kMaxPresetBytes).
 std::optional<LoadedPreset> loadPreset(const std::filesystem::path& file, Diagnostics& diagnostics);

@@ -37,4 +37,15 @@ constexpr E nextOf(const std::array<E, N>& all, E value) {
     return all[0];
 }
 
+// The value before `value` in `all`, wrapping around.
+template <typename E, std::size_t N>
+constexpr E previousOf(const std::array<E, N>& all, E value) {
+    for (std::size_t i = 0; i < N; ++i) {
+        if (all[i] == value) {
+            return all[(i + N - 1) % N];
+        }
+    }
+    return all[0];
+}
+
 } // namespace lab

@@ -95,6 +95,7 @@ constexpr std::string_view kCheckViewKeys[] = {"view", "light"};
 void readCheck(Reader& r, CheckSettings& check);
 void readSweep(Reader& top, std::vector<std::string>& sweep);
 
+
 // model.gltf: a .gltf or .glb file in or below the preset's folder.
 void readGltfPath(Reader& r, Model& model, const std::optional<fs::path>& folder) {
     std::string path;
@@ -127,8 +128,19 @@ void readGltfPath(Reader& r, Model& model, const std::optional<fs::path>& folder
 
 // The model's source, read together: a built-in with its subdivisions, or a glTF file (which
 // has none).
-void readModelSource(Reader& r, Model& model, const std::optional<fs::path>& folder) {
+void readModelSource(Reader& r, Model& model, const std::optional<fs::path>& folder, bool patch) {
     bool hasGltf = r.has("gltf");
+    if (patch && !hasGltf && !r.has("builtin")) { // a patch's model keeps the base's source
+        if (!model.gltf.empty() && r.has("subdivisions")) {
+            r.find("subdivisions");
+            r.error("subdivisions", "applies to built-in models only");
+        } else if (model.gltf.empty()) {
+            bool round = model.builtin == Builtin::Sphere || model.builtin == Builtin::Torus;
+            r.readInt2("subdivisions", model.subdivisions, round ? limits::kSubdivisionsRound : limits::kSubdivisions);
+        }
+        return;
+    }
+    model.gltf.clear();
     if (r.has("builtin") && hasGltf) {
         r.error("gltf", "a model has either \"builtin\" or \"gltf\", not both");
     }
@@ -151,9 +163,11 @@ void readModelSource(Reader& r, Model& model, const std::optional<fs::path>& fol
 struct Sections {
     Preset& preset;
     const std::optional<fs::path>& folder;
+    bool patch = false; // `compare`: the keys given change a copy of the preset, the rest stays
 };
 
 void readRows(Reader& r, std::string_view object, Sections& s, LightDesc* light);
+void readCompare(Reader& top, Sections& s);
 
 // One row's value, by its kind, then its rule.
 void readRow(Reader& r, const FieldRow& row, Preset& p, LightDesc* light) {
@@ -196,7 +210,11 @@ void readLights(Reader& top, Sections& s) {
         return;
     }
     std::vector<LightDesc>& lights = s.preset.lights;
-    lights.assign(json->size(), LightDesc{});
+    if (s.patch) { // element by element; a light the base lacks is added
+        lights.resize(std::max(lights.size(), json->size()));
+    } else {
+        lights.assign(json->size(), LightDesc{});
+    }
     for (std::size_t i = 0; i < json->size(); ++i) {
         const Json& light = (*json)[i];
         if (!light.is_object()) {
@@ -216,7 +234,7 @@ void readRows(Reader& r, std::string_view object, Sections& s, LightDesc* light)
         const FieldPlace place = fieldPlace(row, object);
         if (place.where == FieldPlace::Member) {
             if (row.custom && place.key == "builtin") {
-                readModelSource(r, s.preset.model, s.folder);
+                readModelSource(r, s.preset.model, s.folder, s.patch);
             } else if (!row.custom) {
                 readRow(r, row, s.preset, light);
             }
@@ -231,14 +249,49 @@ void readRows(Reader& r, std::string_view object, Sections& s, LightDesc* light)
             }
         }
     }
-    if (object.empty()) {
+    if (object.empty() && !s.patch) {
         r.readObject("check", kCheckKeys, [&](Reader& c) { readCheck(c, s.preset.check); });
         readSweep(r, s.preset.sweep);
+        preset_detail::readDisplay(r, s.preset.display);
+        r.readString("notes", s.preset.notes);
+        readCompare(r, s);
         seen.insert(seen.begin(), {"format", "version"});
-        seen.insert(seen.end(), {"check", "sweep"});
+        seen.insert(seen.end(), {"check", "sweep", "display", "notes", "compare"});
     }
     r.finish(seen);
 }
+
+// The base of a preset's set B: the preset without what only the lecture reads.
+Preset compareBase(const Preset& preset) {
+    Preset base = preset;
+    base.display = {};
+    base.notes.clear();
+    base.compare.clear();
+    return base;
+}
+
+// `compare`: set B as a patch of the preset's own fields, read onto a copy of it (so every value,
+// rule and glTF path is checked as the file's are); kept as its minified text.
+void readCompare(Reader& top, Sections& s) {
+    const Json* json = top.find("compare");
+    if (!json) {
+        return;
+    }
+    if (!json->is_object()) {
+        top.error("compare", "expected an object of the fields set B changes, such as {\"shading\": \"gouraud\"}, got " +
+                                 Reader::describe(*json));
+        return;
+    }
+    const std::size_t before = top.problems();
+    Preset b = compareBase(s.preset);
+    Sections sb{b, s.folder, true};
+    Reader r = top.child(*json, top.pathOf("compare"));
+    readRows(r, "", sb, nullptr);
+    if (top.problems() == before) {
+        s.preset.compare = json->dump();
+    }
+}
+
 
 // `check.views`: view names ("d"), or {"view": "spot", "light": 2}; each name a view of
 // view_mode.h (whether it applies is asked where it is checked).
@@ -419,6 +472,53 @@ std::optional<Preset> parseInlinePreset(std::string_view objectText, const std::
                                         const std::string& where, const std::optional<fs::path>& folder,
                                         Diagnostics& diagnostics, OmittedKeys* omitted) {
     return readPreset(objectText, displayName, where, true, folder, diagnostics, omitted);
+}
+
+namespace preset_detail {
+
+// `display`: how the lab first shows the preset.
+void readDisplayKeys(Reader& r, OpeningDisplay& display) {
+    r.readString("view", display.view);
+    if (!display.view.empty() && !viewFromName(display.view)) {
+        r.error("view", "no view " + inQuotes(display.view, 60) + suggestion(display.view, viewNameList()) +
+                            "; the views are " + viewNames());
+    }
+    r.readInt("light", display.light, limits::kLightNumber);
+    if (r.has("compare")) {
+        bool compare = false;
+        r.readBool("compare", compare);
+        display.compare = compare;
+    }
+    r.readBool("wipe", display.wipe);
+    r.readBool("wireframe", display.wireframe);
+}
+
+void readDisplay(Reader& parent, OpeningDisplay& display) {
+    static constexpr std::string_view kDisplayKeys[] = {"view", "light", "compare", "wipe", "wireframe"};
+    parent.readObject("display", kDisplayKeys, [&](Reader& r) { readDisplayKeys(r, display); });
+}
+
+} // namespace preset_detail
+
+std::optional<Preset> comparedPreset(const Preset& preset, const std::optional<fs::path>& folder,
+                                     Diagnostics& diagnostics) {
+    Preset b = compareBase(preset);
+    if (preset.compare.empty()) {
+        return b;
+    }
+    std::optional<Json> json = parseObject(preset.compare, preset.name, diagnostics);
+    if (!json) {
+        return std::nullopt;
+    }
+    Diagnostics out;
+    Reader r(*json, "compare", preset.name, out);
+    Sections sb{b, folder, true};
+    readRows(r, "", sb, nullptr);
+    if (!out.empty()) {
+        diagnostics.insert(diagnostics.end(), out.begin(), out.end());
+        return std::nullopt;
+    }
+    return b;
 }
 
 std::optional<LoadedPreset> loadPreset(const fs::path& file, Diagnostics& diagnostics) {

@@ -69,6 +69,7 @@ public:
     }
 
     std::size_t problems() const { return out_.size(); }
+    const std::string& path() const { return path_; }
 
     void errorAt(std::string where, std::string message) {
         out_.push_back({file_, std::move(where), std::move(message)});
@@ -239,5 +240,8 @@ private:
     Diagnostics& out_;
     std::set<std::string, std::less<>> consumed_;
 };
+
+// A preset's `display` object under `parent` (preset_read.cpp), read by a deck's slide the same way.
+void readDisplay(Reader& parent, OpeningDisplay& display);
 
 } // namespace lab::preset_detail

@@ -99,6 +99,8 @@ std::string notApplicable(ViewMode mode, const Preset& p, int light) {
                    : std::string(viewName(mode)) + " is a Cook-Torrance factor; " + brdf;
     case ViewMode::Distance:
         return l.type != LightType::Directional ? "" : which + " is directional: it has no distance";
+    case ViewMode::Spot: // 1 everywhere but for a spot light: nothing to see
+        return l.type == LightType::Spot ? "" : which + " is a " + std::string(toString(l.type)) + " light: only a spot light has a spot factor";
     default: return {};
     }
 }
@@ -117,9 +119,14 @@ Preset viewed(const Preset& p, ViewMode mode) {
 }
 
 ValueRange autoRange(float smallest, float largest) {
-    if (!(largest - smallest > 1e-6f * std::max(1.0f, std::abs(largest)))) {
-        float v = std::isfinite(largest) ? largest : 0.0f;
-        return {std::min(0.0f, v), std::max(1.0f, v)};
+    const float size = std::max(std::abs(smallest), std::abs(largest));
+    if (!(largest - smallest > 1e-6f) || !(largest - smallest >= 0.01f * size)) {
+        const bool finite = std::isfinite(smallest) && std::isfinite(largest);
+        const float v = finite ? 0.5f * (smallest + largest) : 0.0f;
+        ValueRange r{std::min(0.0f, v), std::max(1.0f, v)};
+        r.constant = v;
+        r.spread = finite ? std::max(0.0f, 0.5f * (largest - smallest)) : 0.0f;
+        return r;
     }
     return {smallest, largest};
 }

@@ -41,7 +41,14 @@ enum class ValuePalette { Viridis, Grey };
 
 // The values a value view spreads over its palette: lo is the palette's first colour, hi its last.
 struct ValueRange {
+    ValueRange() = default;
+    ValueRange(float low, float high) : lo(low), hi(high) {}
     float lo = 0.0f, hi = 1.0f;
+    // Set by autoRange when the model's values span less than 1% of their size: spread over a
+    // palette they would show a gradient that is not there, so the range is [min(0, v), max(1, v)]
+    // and the legend says "F = 0.0400 on the whole model, ± 0.00001".
+    std::optional<float> constant; // the middle of the values found
+    float spread = 0.0f;           // half their span
     bool operator==(const ValueRange&) const = default;
 };
 
@@ -84,7 +91,8 @@ std::string notApplicable(ViewMode mode, const Preset& preset, int light);
 Preset viewed(const Preset& preset, ViewMode mode);
 
 // The automatic range of a value view from the smallest and largest value on the model: those
-// two, or when they (nearly) agree, [min(0, v), max(1, v)], so a constant shows as what it is.
+// two, or when they span less than 1% of their size, [min(0, v), max(1, v)] with `constant`
+// and `spread` set, so a (nearly) constant shows as what it is.
 ValueRange autoRange(float smallest, float largest);
 
 // v's place in `range`, clamped to [0, 1]: what the palettes colour.

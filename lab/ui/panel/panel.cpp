@@ -101,7 +101,7 @@ void filesSection(const PanelInfo& info, PanelState& state, std::vector<Request>
 }
 
 void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
-    const std::vector<std::filesystem::path>& files = *info.presetFiles;
+    const std::vector<std::string>& files = info.presetNames;
     float height = std::min(8.0f, static_cast<float>(files.size()) + 0.5f) * ImGui::GetTextLineHeightWithSpacing();
     if (ImGui::BeginListBox("##presets", ImVec2(-1, height))) {
         for (std::size_t i = 0; i < files.size(); ++i) {
@@ -111,7 +111,7 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
             std::string id = "###preset" + std::to_string(i);
             ImVec2 at = ImGui::GetCursorScreenPos(); // where the Selectable puts a label's text
             bool clicked = ImGui::Selectable(id.c_str(), selected);
-            std::string name = printable(files[i].stem().string(), true);
+            std::string name = printable(files[i], true);
             ImGui::GetWindowDrawList()->AddText(at, ImGui::GetColorU32(ImGuiCol_Text), name.c_str());
             if (clicked) {
                 requests.push_back({Command::OpenPresetAt, {}, static_cast<int>(i)});
@@ -124,7 +124,7 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
         ImGui::EndListBox();
     }
     mark("presets.list");
-    ImGui::TextDisabled("Left/Right on the model: previous/next preset");
+    ImGui::TextDisabled("Left/Right on the model: previous/next; R: the file's again");
     if (info.exerciseFiles && !info.exerciseFiles->empty()) {
         exerciseList(*info.exerciseFiles, requests);
     }
@@ -475,8 +475,8 @@ void controlPanel(Preset& preset, DisplaySettings& view, const PanelInfo& info, 
     if (model && ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) {
         filesSection(info, state, requests);
     }
-    if (model && info.presetFiles && !info.presetFiles->empty() &&
-        ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const std::string listTitle = info.deckTitle.empty() ? "Presets" : "Deck: " + printable(info.deckTitle, true);
+    if (model && !info.presetNames.empty() && ImGui::CollapsingHeader((listTitle + "###presets").c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
         presetsSection(info, state, requests);
     }
     if (model) {

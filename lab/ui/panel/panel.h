@@ -21,8 +21,9 @@ namespace lab::ui {
 
 // What the panel shows about the workspace (read-only for the panel).
 struct PanelInfo {
-    const std::vector<std::filesystem::path>* presetFiles = nullptr; // the preset list
-    int currentPreset = -1;                                           // index in presetFiles, -1 if none
+    std::vector<std::string> presetNames; // the list: a deck's slides, else the preset list's files
+    int currentPreset = -1;               // index in presetNames, -1 if none
+    std::string deckTitle;                // the deck's, when the list is a deck's
     std::string documentName;
     bool dirty = false;
     bool canUndo = false, canRedo = false;

@@ -22,6 +22,10 @@ struct LegendModel {
     std::string note;                // why the view does not apply (the lit model is shown)
 };
 
+// What a (nearly) constant view says (core/scene/view_mode.h ValueRange::constant): "F = 0.0400 on
+// the whole model, ± 1e-05"; "" for a range that is not.
+std::string constantWords(const LegendModel& legend);
+
 // The legend strip's height: two lines.
 float legendStripHeight();
 

@@ -328,6 +328,9 @@ std::string headerText(const CaptionStrips& m, float width) {
     if (m.viewMode != ViewMode::Lit) {
         rest += std::string("  |  view ") + toString(m.viewMode);
     }
+    if (!m.edited.empty()) { // what differs from the file: the description and the goldens are of the file's
+        rest += "  |  edited: " + m.edited;
+    }
     std::string dirty = m.dirty ? " *" : "";
     float restWidth = ImGui::CalcTextSize((dirty + rest).c_str()).x;
     return fitText(m.documentName, width - restWidth) + dirty + fitText(rest, width - ImGui::CalcTextSize("...").x * 1.5f);
@@ -363,27 +366,28 @@ struct Clip {
 };
 
 // The preset's name (larger) and description, wrapped: the lecture's story. Its size at `width`.
-ImVec2 captionSize(const Preset& p, float width) {
+// A scene that differs from its file says so after its name: the description may no longer hold.
+ImVec2 captionSize(const Preset& p, bool edited, float width) {
     float size = ImGui::GetFontSize(), pad = inset();
-    const std::string name = printable(p.name, true), description = printable(p.description); // from the file
+    const std::string name = printable(p.name, true) + (edited ? " (edited)" : ""), description = printable(p.description); // from the file
     float inner = std::max(width - 2 * pad, 1.0f);
     ImVec2 title = wrapped(name.c_str(), inner, size * 1.35f);
     ImVec2 text = description.empty() ? ImVec2(0, 0) : wrapped(description.c_str(), inner);
     return {std::max(title.x, text.x) + 2 * pad, title.y + (description.empty() ? 0.0f : text.y + 0.3f * size) + 2 * pad};
 }
 
-void caption(const Preset& p, const Rect& r, ImDrawList* dl) {
+void caption(const Preset& p, bool edited, const Rect& r, ImDrawList* dl) {
     Clip clip(dl, r);
     ImFont* font = ImGui::GetFont();
     float size = ImGui::GetFontSize(), pad = inset(), inner = std::max(r.w - 2 * pad, 1.0f);
-    const std::string name = printable(p.name, true), description = printable(p.description);
+    const std::string name = printable(p.name, true) + (edited ? " (edited)" : ""), description = printable(p.description);
     ImVec2 title = wrapped(name.c_str(), inner, size * 1.35f);
     dl->AddText(font, size * 1.35f, ImVec2(r.x + pad, r.y + pad), IM_COL32(255, 255, 255, 255), name.c_str(), nullptr, inner);
     if (!description.empty()) {
         dl->AddText(font, size, ImVec2(r.x + pad, r.y + pad + title.y + 0.3f * size), IM_COL32(225, 225, 225, 255),
                     description.c_str(), nullptr, inner);
     }
-    ImVec2 used = captionSize(p, r.w);
+    ImVec2 used = captionSize(p, edited, r.w);
     textWidget("view.caption", {r.x, r.y, used.x, used.y}, r);
 }
 
@@ -435,10 +439,14 @@ void compareLabels(const CaptionStrips& m, const Layout& layout, ImDrawList* dl)
         strip(r, dl);
         float pad = inset();
         // "A: shading Gouraud  |  BRDF Phong", or where that is too wide "A: Gouraud, Phong".
-        std::string text = m.exercise ? (i == 0 ? "Your attempt" : "Target") : setSummary(i == 0 ? "A: " : "B: ", *sets[i]);
+        // Where the sets differ in other fields too, those: "A: normal matrix: model-view (wrong)".
+        const std::string& differs = i == 0 ? m.labelA : m.labelB;
+        std::string text = m.exercise ? (i == 0 ? "Your attempt" : "Target")
+                           : differs.empty() ? setSummary(i == 0 ? "A: " : "B: ", *sets[i])
+                                             : std::string(i == 0 ? "A: " : "B: ") + differs;
         if (!m.exercise && i == 1 && !m.fitNote.empty()) { // what the fit found, its error first
             text = "B: " + m.fitNote;
-        } else if (!m.exercise && ImGui::CalcTextSize(text.c_str()).x > r.w - 2 * pad) {
+        } else if (!m.exercise && differs.empty() && ImGui::CalcTextSize(text.c_str()).x > r.w - 2 * pad) {
             text = std::string(i == 0 ? "A: " : "B: ") + label(sets[i]->shading) + ", " + label(sets[i]->brdf);
         }
         text = fitText(text, r.w - 2 * pad);
@@ -479,7 +487,7 @@ TextRoom measureText(const CaptionStrips& m, const Rect& view) {
     room.legend = m.legend ? legendStripHeight() : 0.0f;
     if (m.caption) {
         const Preset* p = m.a;
-        room.captionHeight = [p](float width) { return captionSize(*p, width).y; };
+        room.captionHeight = [p, edited = !m.edited.empty()](float width) { return captionSize(*p, edited, width).y; };
         room.captionWidth = line * 36.0f;
         room.sideWidth = line * 18.0f;
     }
@@ -502,7 +510,7 @@ void captionStrips(const CaptionStrips& m, const Layout& layout) {
     }
     header(m, layout.header, dl);
     if (m.caption && layout.caption.w > 0.0f) {
-        caption(*m.a, layout.caption, dl);
+        caption(*m.a, !m.edited.empty(), layout.caption, dl);
     }
     footer(m, layout.footer, dl);
     if (m.probePoint) {

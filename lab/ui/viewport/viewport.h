@@ -76,6 +76,9 @@ struct CaptionStrips {
     bool exercise = false;                     // compare mode's halves are an exercise's attempt and target: their labels say so, not the target's settings
     bool wipeDragged = false;
     std::string fitNote;                       // B is a fit of A (app/workspace.h fitNote): B's label says so
+    std::string labelA, labelB;                // compare mode: the fields that differ, each set's value
+                                               // (core/exercise/preset_fields.h differenceLabels); empty: the summary
+    std::string edited;                        // the caption's "(edited: shininess n, shading)"; empty when as opened
 };
 
 // What the caption strips' text needs, measured with the current font: placeText (ui/layout.h) gives
