@@ -55,6 +55,7 @@ void App::Impl::carryOut(const Request& r) {
     case Command::ToggleLightShapes: lightShapes = !lightShapes; break;
     case Command::ToggleLightMotion: orbits.togglePaused(); break;
     case Command::ToggleNotes: showNotes = !showNotes; break;
+    case Command::TogglePointer: pointer = !pointer; break;
     case Command::ToggleFrameTime: frameTimeShown() = !frameTimeShown(); break;
     case Command::PresenterLarger:
         if (!presenter) {
@@ -199,7 +200,7 @@ bool App::Impl::updateReadout(const FrameInput& in, const ui::ScreenEvents& even
 }
 
 // The model's viewport alone, at the window's pixel density, to a PNG (a download in the browser).
-void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
+void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in, const ui::ScreenEvents& events) {
     const ui::Rect& v = layout.viewport;
     float toPixels = static_cast<float>(in.framebufferWidth) / in.windowWidth;
     int w = std::max(1, static_cast<int>(v.w * toPixels)), h = std::max(1, static_cast<int>(v.h * toPixels));
@@ -213,6 +214,9 @@ void App::Impl::screenshot(const ui::Layout& layout, const FrameInput& in) {
     drawViewports(layout, toPixels, static_cast<float>(h) / toPixels, -v.x, -v.y);
     Image image = target.readRgb();
     bindFramebuffer(in.targetFramebuffer);
+    if (pointer && v.contains(events.pointerX, events.pointerY)) { // what the room saw
+        ui::pointerRing(image, (events.pointerX - v.x) * toPixels, (events.pointerY - v.y) * toPixels, ui::pointerRadius() * toPixels);
+    }
     workspace.saveScreenshot(image);
 }
 
@@ -338,7 +342,7 @@ FrameOutput App::frame(const FrameInput& in) {
 
     //--- the renderer draws what the workspace holds ---------------------------------------
     if (std::exchange(m.screenshotRequested, false)) {
-        m.screenshot(layout, in);
+        m.screenshot(layout, in, events);
     }
     // A moving light is drawn within the frame budget as a drag is (ViewportResolution).
     float scale = m.resolution.update(events.dragging || orbiting, in.lastFrameSeconds, m.options.frameBudgetSeconds);

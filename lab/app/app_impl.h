@@ -22,6 +22,7 @@
 #include "render/renderer.h"
 #include "render/shader.h"
 #include "ui/screen.h"
+#include "ui/viewport/overlay.h"
 #include "ui/widget_map.h"
 
 #include <algorithm>
@@ -55,7 +56,7 @@ struct App::Impl {
     SweepImage sweepImage; // the sweep view's grid, rendered only while it is open
     ui::ViewportControls viewportControls;
     enum class Panels { All, PlotsOnly, None } panels = Panels::All; // Tab cycles
-    bool showHelp = false, presenter = false, caption = false, lightShapes = true, showNotes = false;
+    bool showHelp = false, presenter = false, caption = false, lightShapes = true, showNotes = false, pointer = false;
     Theme theme = Theme::Dark; // the last frame's (the panel's radio buttons change panel.theme)
     bool themeChosen = false;  // by the user, in the panel
     // The frame time while the model changes, outside and in presenter mode (T toggles the one in use):
@@ -138,7 +139,7 @@ struct App::Impl {
     void drawViewports(const ui::Layout& layout, float toPixels, float windowHeight, float dx, float dy);
     bool updateViewports(const ui::Layout& layout, const FrameInput& in, float scale);
     std::vector<std::pair<const CachedViewport*, Viewport>> shown; // this frame's renders and where they go
-    void screenshot(const ui::Layout& layout, const FrameInput& in);
+    void screenshot(const ui::Layout& layout, const FrameInput& in, const ui::ScreenEvents& events);
     bool updateReadout(const FrameInput& in, const ui::ScreenEvents& events, const std::optional<ui::LegendModel>& shownLegend);
     void timeLastFrame(const FrameInput& in);
     std::map<int, float> captionHeights; // the caption's tallest strip at each width, while the view keeps its size

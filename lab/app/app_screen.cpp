@@ -76,6 +76,8 @@ ui::ScreenModel App::Impl::screenModel() {
         m.captions.edited = changed.b.empty() ? std::string("set B") : printable(changed.b, true);
     }
     m.showNotes = &showNotes;
+    m.equation = presenter; // the room reads the equation over the model
+    m.pointer = pointer;
     if (showNotes) {
         m.notes = notesModel(workspace);
     }

@@ -463,20 +463,22 @@ void shareLine(const ShareArguments& a, CommandLine& line) {
 
 } // namespace
 
-std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* argv) {
-    CLI::App app{"Lighting Lab: an interactive lab for local illumination (Phong, Blinn-Phong, Cook-Torrance)", "lab"};
-    app.set_version_flag("--version", "lab " LAB_VERSION);
-    app.require_subcommand(0, 1);
-    CommandLine line;
-    std::string preset, deck, layoutFile, screenshotFolder = ".", windowSize;
-    app.add_option("--preset", preset, "Open the lab with this preset, or a folder of presets to step through in name order");
-    app.add_option("--deck", deck, "Open the lab with this deck: a lecture's slides with speaker notes (presets/decks/lecture.json)")
+namespace {
+
+// The interactive lab's own options (no subcommand), as typed.
+struct LabArguments {
+    std::string preset, deck, layoutFile, screenshotFolder = ".", windowSize, theme;
+};
+
+void addLabOptions(CLI::App& app, CommandLine& line, LabArguments& a) {
+    app.add_option("--preset", a.preset, "Open the lab with this preset, or a folder of presets to step through in name order");
+    app.add_option("--deck", a.deck, "Open the lab with this deck: a lecture's slides with speaker notes (presets/decks/lecture.json)")
         ->excludes("--preset");
     app.add_flag("--presenter", line.presenter, "Start in presenter mode (large UI for a projector)");
     app.add_flag("--fullscreen", line.fullscreen, "Start fullscreen");
-    app.add_option("--size", windowSize, "Window size (default: 1600x900, or the screen's work area if smaller)")
+    app.add_option("--size", a.windowSize, "Window size (default: 1600x900, or the screen's work area if smaller)")
         ->check(SizeValidator());
-    app.add_option("--screenshot-dir", screenshotFolder, "Folder for screenshots (F12)")->capture_default_str();
+    app.add_option("--screenshot-dir", a.screenshotFolder, "Folder for screenshots (F12)")->capture_default_str();
     app.add_option("--frame-budget", line.frameBudgetMs,
                    "While dragging or while a light moves, draw the 3D view at a lower resolution when a frame takes "
                    "longer than this many milliseconds (0: always full resolution)")
@@ -487,11 +489,22 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
                    "The course page's address (https://.../lab/): the QR code (Q) opens the scene there. Remembered in "
                    "$XDG_CONFIG_HOME/lighting-lab/settings.json")
         ->check(CLI::Validator([](std::string& text) { return shareBaseProblem(text); }, "URL"));
-    std::string theme;
-    app.add_option("--theme", theme, "The lab's colours, dark or light (a projector in a lit room), the plots' and the "
+    app.add_option("--theme", a.theme, "The lab's colours, dark or light (a projector in a lit room), the plots' and the "
                                      "exported figures' too. Remembered as --share-base is")->check(kThemeName);
     // For GUI tests: the screen rectangles of the main widgets, rewritten every frame.
-    app.add_option("--layout-file", layoutFile, "")->group("");
+    app.add_option("--layout-file", a.layoutFile, "")->group("");
+
+}
+
+} // namespace
+
+std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* argv) {
+    CLI::App app{"Lighting Lab: an interactive lab for local illumination (Phong, Blinn-Phong, Cook-Torrance)", "lab"};
+    app.set_version_flag("--version", "lab " LAB_VERSION);
+    app.require_subcommand(0, 1);
+    CommandLine line;
+    LabArguments lab;
+    addLabOptions(app, line, lab);
 
     RenderArguments renderArguments;
     CLI::App* render = addRenderCommand(app, renderArguments);
@@ -519,18 +532,18 @@ std::variant<CommandLine, int> parseCommandLine(int argc, const char* const* arg
     }
 
     std::string error;
-    if (!theme.empty()) {
-        line.theme = themeFrom(theme); // checked by kThemeName
+    if (!lab.theme.empty()) {
+        line.theme = themeFrom(lab.theme); // checked by kThemeName
     }
-    if (!preset.empty() || !deck.empty()) {
-        line.preset = deck.empty() ? preset : deck; // a deck opens as a file: its format says what it is
+    if (!lab.preset.empty() || !lab.deck.empty()) {
+        line.preset = lab.deck.empty() ? lab.preset : lab.deck; // a deck opens as a file: its format says what it is
     }
-    if (!layoutFile.empty()) {
-        line.layoutFile = layoutFile;
+    if (!lab.layoutFile.empty()) {
+        line.layoutFile = lab.layoutFile;
     }
-    line.screenshotFolder = screenshotFolder;
-    if (!windowSize.empty()) {
-        line.windowSize = *parseSize(windowSize, error); // validated by SizeValidator
+    line.screenshotFolder = lab.screenshotFolder;
+    if (!lab.windowSize.empty()) {
+        line.windowSize = *parseSize(lab.windowSize, error); // validated by SizeValidator
     }
     if ((*render && !renderLine(renderArguments, line)) || (*plot && !plotLine(plotArguments, line)) ||
         (*fit && !fitLine(fitArguments, line))) {

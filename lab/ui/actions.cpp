@@ -22,6 +22,7 @@ constexpr std::array kRows = {
     CommandRow{C::FirstSlide,         keys::Home,          kNoModifier,   "First",            "first slide"},
     CommandRow{C::LastSlide,          keys::End,           kNoModifier,   "Last",             "last slide"},
     CommandRow{C::ResetSlide,         'R',                 kNoModifier,   "Reset slide (R)",  "reset the slide: the scene, set B and the view as the file has them (Ctrl+Z brings the edits back)"},
+    CommandRow{C::TogglePointer,      'X',                 kNoModifier,   "Pointer (X)",      "a large pointer over the model that the back row sees (in screenshots too)"},
     CommandRow{C::ToggleNotes,        'S',                 kNoModifier,   "Notes (S)",        "speaker notes: the slide's notes, the next slide and the time"},
     CommandRow{C::ShadingFlat,        '1',                 kNoModifier,   "flat",             "flat shading"},
     CommandRow{C::ShadingGouraud,     '2',                 kNoModifier,   "Gouraud",          "Gouraud shading"},

@@ -1,6 +1,8 @@
 // screen.cpp — the fixed windows of the lab and everything drawn over them.
 #include "ui/screen.h"
 
+#include "ui/viewport/overlay.h"
+
 #include "ui/dialogs.h"
 #include "ui/keyboard.h"
 #include "ui/theme_style.h"
@@ -147,7 +149,8 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
         probeWindow(*m.probe, *m.a, *m.view, *m.probeOpen, beside.x + 10.0f, beside.y + ImGui::GetFontSize() * 2.0f);
     }
     if (m.showNotes) {
-        notesWindow(m.notes, *m.showNotes, layout.view.x + 8.0f, layout.view.y + layout.view.h - 8.0f, std::max(layout.view.w * 0.6f, 200.0f));
+        notesWindow(m.notes, *m.showNotes, layout.viewport.x + 8.0f, layout.viewport.y + layout.viewport.h - 8.0f,
+                    std::max(layout.viewport.w * 0.6f, 200.0f));
     }
     shaderEditorWindow(*m.shaderEditor, events.requests, m.lightingSource);
     if (m.shareCode) {
@@ -164,6 +167,12 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     m.captions.wipeDragged = m.viewportControls->drag == ViewportControls::Drag::Wipe;
     lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewportControls->light, m.lightShapes);
     captionStrips(m.captions, layout);
+    if (m.equation && !m.captions.exercise) {
+        equationOverlay(*m.a, m.b ? layout.halves[0] : layout.viewport);
+    }
+    if (m.pointer) {
+        roomPointer(events.pointerX, events.pointerY, layout.viewport);
+    }
     markKeyboardFocus();
     events.gesture = ImGui::IsAnyItemActive() || events.viewport.gesture;
     events.dragging = events.gesture && ImGui::IsAnyMouseDown();

@@ -49,6 +49,8 @@ struct ScreenModel {
     const std::string* unsavedQuestion = nullptr; // "open x.json": discard unsaved changes to do it?
     CaptionStrips captions; // the caption strips around the model: header, footer, legend, probe mark
     const ShareCodeModel* shareCode = nullptr; // the scene's link as a QR code, while shown (Q)
+    bool equation = false;                     // the BRDF's equation over the model (presenter mode)
+    bool pointer = false;                      // the room's pointer over the model (X)
     NotesModel notes;                          // the speaker's notes, shown while *showNotes
     bool* showNotes = nullptr;
 };

@@ -42,7 +42,8 @@ Image withLegend(const Image& render, const LegendSpec& spec) {
     const TextFont& font = sharedTextFont();
     const TextColor white{235, 235, 235};
     const float top = static_cast<float>(render.height);
-    font.draw(out, font.fitted(spec.title, text, static_cast<float>(w) - 2 * pad), pad, top + 0.5f * pad, text, white);
+    const std::string said = constantWords(spec.title, spec.range); // what a constant is, in place of its name
+    font.draw(out, font.fitted(said.empty() ? spec.title : said, text, static_cast<float>(w) - 2 * pad), pad, top + 0.5f * pad, text, white);
     // The bar: each column the palette's colour at its place between lo and hi.
     const int x0 = static_cast<int>(pad), x1 = std::max(x0 + 1, w - static_cast<int>(pad));
     const int y0 = static_cast<int>(top + 0.5f * pad + 1.15f * text), y1 = y0 + static_cast<int>(0.55f * text) + 1;
@@ -65,6 +66,25 @@ Image withLegend(const Image& render, const LegendSpec& spec) {
         font.draw(out, label, x, static_cast<float>(y1) + 0.15f * text, text, white);
     }
     return out;
+}
+
+std::string constantWords(const std::string& title, const ValueRange& range) {
+    if (!range.constant) {
+        return {};
+    }
+    const std::string symbol = title.substr(0, title.find(':'));
+    const std::size_t light = title.rfind(", light ");
+    const std::string which = light == std::string::npos ? "" : " (" + title.substr(light + 2) + ")";
+    char text[160];
+    if (range.spread > 0.0f) { // one significant digit, written out: "± 0.000005"
+        const int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(range.spread))), 0, 9);
+        std::snprintf(text, sizeof text, "%s = %.4f on the whole model, \u00b1 %.*f%s", symbol.c_str(),
+                      static_cast<double>(*range.constant), decimals, static_cast<double>(range.spread), which.c_str());
+    } else {
+        std::snprintf(text, sizeof text, "%s = %.4f on the whole model%s", symbol.c_str(), static_cast<double>(*range.constant),
+                      which.c_str());
+    }
+    return text;
 }
 
 } // namespace lab

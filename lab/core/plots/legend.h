@@ -17,6 +17,11 @@ struct LegendSpec {
     ValuePalette palette = ValuePalette::Viridis;
 };
 
+// What a (nearly) constant view's legend says (core/scene/view_mode.h ValueRange::constant), after
+// its title "F: Fresnel term, light 1": "F = 0.0400 on the whole model, ± 5e-06"; "" for a range
+// that is not constant.
+std::string constantWords(const std::string& title, const ValueRange& range);
+
 // A value as a legend writes it: `digits` significant digits ("0.0412", "12.5", "1.2e+03").
 std::string legendNumber(float value, int digits = 3);
 // The significant digits that tell `range`'s ends apart: 3, or more (up to 7) for a narrow range

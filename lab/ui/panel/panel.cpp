@@ -111,7 +111,8 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
             std::string id = "###preset" + std::to_string(i);
             ImVec2 at = ImGui::GetCursorScreenPos(); // where the Selectable puts a label's text
             bool clicked = ImGui::Selectable(id.c_str(), selected);
-            std::string name = printable(files[i], true);
+            // A deck's slides are numbered: the notes say "Slide 6 of 28".
+            std::string name = (info.deckTitle.empty() ? "" : std::to_string(i + 1) + "  ") + printable(files[i], true);
             ImGui::GetWindowDrawList()->AddText(at, ImGui::GetColorU32(ImGuiCol_Text), name.c_str());
             if (clicked) {
                 requests.push_back({Command::OpenPresetAt, {}, static_cast<int>(i)});

@@ -39,20 +39,7 @@ void paletteBar(ValuePalette palette, float x0, float y0, float x1, float y1, Im
 
 } // namespace
 
-std::string constantWords(const LegendModel& m) {
-    if (!m.range || !m.range->constant) {
-        return {};
-    }
-    const std::string symbol = m.title.substr(0, m.title.find(':'));
-    char text[160];
-    if (m.range->spread > 0.0f) {
-        std::snprintf(text, sizeof text, "%s = %.4f on the whole model, \u00b1 %.2g", symbol.c_str(),
-                      static_cast<double>(*m.range->constant), static_cast<double>(m.range->spread));
-    } else {
-        std::snprintf(text, sizeof text, "%s = %.4f on the whole model", symbol.c_str(), static_cast<double>(*m.range->constant));
-    }
-    return text;
-}
+std::string constantWords(const LegendModel& m) { return m.range ? lab::constantWords(m.title, *m.range) : std::string(); }
 
 float legendStripHeight() { return 2.0f * ImGui::GetFontSize() + 3.0f * pad(); }
 
@@ -70,7 +57,7 @@ void legendStrip(const LegendModel& m, const Rect& r, ImDrawList* dl) {
     }
     float rightW = right.empty() ? 0.0f : ImGui::CalcTextSize(right.c_str()).x;
     dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.w - rightW - 2 * p, r.y + r.h), true);
-    const std::string title = m.title + (m.range && m.range->constant ? "  —  " + constantWords(m) : "");
+    const std::string said = constantWords(m), title = said.empty() ? m.title : said; // a constant: what it is
     dl->AddText(ImVec2(r.x + p, y), kText, title.c_str());
     dl->PopClipRect();
     if (!right.empty()) {

@@ -1,0 +1,115 @@
+// lecture_test.cpp — a lecture run as an instructor runs it, in a real window under Xvfb: the
+// shipped deck stepped with the keys a presentation clicker sends, a live edit on every slide and
+// no dialog, the speaker's notes, a prepared comparison with its labels, the equation over the
+// model in presenter mode, and the pointer the back row sees, in the screenshot too.
+// With LAB_GUI_SHOTS=<folder> the captures are written there to be looked at.
+#include "gui_harness.h"
+
+#include <cstdlib>
+
+namespace lab::test {
+namespace {
+
+const std::string kDeck = std::string(LAB_SOURCE_DIR) + "/presets/decks/lecture.json";
+
+void keep(const Image& image, const std::string& name) {
+    if (const char* folder = std::getenv("LAB_GUI_SHOTS")) {
+        std::string error;
+        fs::create_directories(folder);
+        writePng(image, fs::path(folder) / (name + ".png"), error);
+    }
+}
+
+Image window(Lab& lab) { return lab.capture(lab.widget("window")); }
+
+TEST(GuiLecture, TheDeckStepsWithAClickersKeysAndAnEditOnEverySlideAsksNothing) {
+    START_LAB(lab, "--deck", kDeck);
+    Rect view = lab.widget("view");
+    lab.moveTo(view.cx(), view.cy());
+    ASSERT_TRUE(lab.has("view.header"));
+    std::set<int> widths;
+    for (const char* key : {"Right", "Next", "space", "Right", "Right", "Prior", "Right"}) {
+        lab.press("2");   // a live edit: Gouraud shading
+        lab.press("bracketright"); // (no binding: a key the lab ignores)
+        lab.press(key);
+        lab.settle();
+        EXPECT_FALSE(lab.has("confirm.discard")) << "stepping with " << key << " asked about unsaved changes";
+        widths.insert(lab.widget("view.header").w);
+    }
+    EXPECT_GE(widths.size(), 3u) << "the header should follow the slides";
+    lab.press("s"); // the speaker's notes
+    lab.settle();
+    ASSERT_TRUE(lab.has("notes"));
+    EXPECT_GT(brightest(lab.capture(lab.widget("notes"))), 150);
+    keep(window(lab), "lecture-notes");
+    lab.press("Home");
+    lab.settle();
+    lab.press("2");
+    lab.settle();
+    Image edited = lab.capture(lab.widget("view.header"));
+    lab.press("r"); // Reset slide: the file's again
+    lab.settle();
+    EXPECT_GT(changedShare(edited, lab.capture(lab.widget("view.header"))), 0.001) << "R should drop the edit from the header";
+}
+
+TEST(GuiLecture, APreparedComparisonOpensWithLabelsNamingWhatDiffers) {
+    START_LAB(lab, "--deck", kDeck, "--size", "1280x800");
+    Rect view = lab.widget("view");
+    lab.moveTo(view.cx(), view.cy());
+    for (int i = 0; i < 12 && !lab.has("view.label-b"); ++i) { // to "10. Gouraud against Phong"
+        lab.press("Right");
+        lab.settle();
+    }
+    ASSERT_TRUE(lab.has("view.label-a") && lab.has("view.label-b")) << "the slide should open in compare mode";
+    Image a = lab.capture(lab.widget("view.label-a")), b = lab.capture(lab.widget("view.label-b"));
+    EXPECT_GT(brightest(a), 150);
+    EXPECT_GT(changedShare(a, b), 0.0) << "A's and B's labels should differ";
+    keep(window(lab), "lecture-compare");
+}
+
+TEST(GuiLecture, PresenterModeShowsTheEquationAndThePointerIsInTheScreenshot) {
+    START_LAB(lab, "--preset", preset("13-cook-torrance-beckmann-schlick"), "--presenter", "--size", "1024x768");
+    ASSERT_TRUE(lab.has("view.equation")) << "presenter mode shows the BRDF's equation over the model";
+    Rect eq = lab.widget("view.equation"), view = lab.widget("view");
+    EXPECT_GE(eq.x, view.x);
+    EXPECT_LE(eq.x + eq.w, view.x + view.w) << "the equation is never cut";
+    EXPECT_LE(eq.y + eq.h, view.y + view.h / 3) << "it leaves the model to be seen";
+    lab.moveTo(view.cx(), view.cy());
+    lab.press("x");
+    lab.settle();
+    ASSERT_TRUE(lab.has("view.pointer"));
+    keep(window(lab), "lecture-presenter-1024");
+    Image shot = lab.viewShot();
+    ASSERT_GT(shot.width, 0);
+    // The ring's yellow somewhere on a circle around the centre of the view.
+    int yellow = 0;
+    for (std::size_t i = 0; i + 2 < shot.rgb.size(); i += 3) {
+        yellow += shot.rgb[i] > 230 && shot.rgb[i + 1] > 210 && shot.rgb[i + 2] < 40;
+    }
+    EXPECT_GT(yellow, 200) << "the screenshot should show the pointer the room saw";
+    keep(shot, "lecture-pointer-screenshot");
+}
+
+TEST(GuiLecture, AViewThatIsConstantOnTheModelSaysSo) {
+    TempFolder dir;
+    std::string text = readText(preset("13-cook-torrance-beckmann-schlick"));
+    text.insert(text.rfind('}'), R"(, "display": {"view": "f"})");
+    writeText(dir.path() / "f.json", text);
+    START_LAB(lab, "--preset", (dir.path() / "f.json").string(), "--size", "1280x800");
+    ASSERT_TRUE(lab.has("view.legend")) << "the preset's display opens the F view";
+    Rect legend = lab.widget("view.legend");
+    EXPECT_GT(legend.w, 0);
+    keep(window(lab), "lecture-f-view");
+    // The model is one colour (F = 0.04 on a 0-1 palette), not a gradient over 0.04 ... 0.04001.
+    Image model = lab.capture(lab.widget("view"));
+    int lo = 255, hi = 0;
+    for (int y = model.height / 2 - 20; y < model.height / 2 + 20; ++y) {
+        const std::uint8_t* p = &model.rgb[(static_cast<std::size_t>(y) * model.width + model.width / 2) * 3];
+        lo = std::min<int>(lo, p[1]);
+        hi = std::max<int>(hi, p[1]);
+    }
+    EXPECT_LE(hi - lo, 3) << "F spread over the palette would show a gradient that is 1e-5";
+}
+
+} // namespace
+} // namespace lab::test
