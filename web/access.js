@@ -296,11 +296,39 @@
     document.getElementById('lab-legend').textContent = m.readouts.legend || 'The lit model is shown.';
   }
 
+  // The dialog the canvas shows (an error, unsaved changes), as an alertdialog with its buttons:
+  // the focus goes into it, to its first (default) button, and back where it was once answered.
+  const box = document.getElementById('lab-dialog');
+  let dialogReturn = null;
+  box.addEventListener('keydown', (e) => {
+    if (e.key !== 'Escape') return;
+    const last = box.querySelector('button:last-of-type'); // Cancel, or OK
+    if (last) last.click();
+    e.preventDefault();
+  });
+  function dialog(d) {
+    const key = d ? JSON.stringify(d) : '';
+    if (key === (box.dataset.shown || '')) return;
+    box.dataset.shown = key;
+    if (!d) {
+      box.hidden = true;
+      box.replaceChildren();
+      if (dialogReturn && document.contains(dialogReturn)) dialogReturn.focus();
+      dialogReturn = null;
+      return;
+    }
+    if (!dialogReturn && !box.contains(document.activeElement)) dialogReturn = document.activeElement;
+    box.replaceChildren(el('h2', { id: 'lab-dialog-title', text: d.title }), el('p', { id: 'lab-dialog-text', text: d.text }),
+      ...d.buttons.map(button));
+    box.hidden = false;
+    box.querySelector('button').focus();
+  }
+
   // A description from the lab (every frame it changed).
   Module.labPage = (text) => {
     const m = JSON.parse(text);
     window.labPageModel = m; // the browser tests read it
-    const { title, pictures, messages: said, readouts, ...structure } = m;
+    const { title, pictures, messages: said, readouts, dialog: asked, ...structure } = m;
     const s = JSON.stringify(structure, (k, v) => (k === 'value' || k === 'current' || k === 'score' || k === 'solved') ? undefined : v);
     if (s !== shape) {
       shape = s;
@@ -318,6 +346,7 @@
     const theme = document.getElementById('lab-theme');
     if (theme && theme !== document.activeElement) theme.value = m.theme;
     messages(m);
+    dialog(asked);
     // The pictures' words once a change has settled (a second without one), not every frame.
     const p = JSON.stringify(m.pictures);
     if (!model || p !== JSON.stringify(model.pictures)) {

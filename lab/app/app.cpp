@@ -56,6 +56,10 @@ void App::Impl::carryOut(const Request& r) {
     case Command::ToggleLightMotion: orbits.togglePaused(); break;
     case Command::ToggleNotes: showNotes = !showNotes; break;
     case Command::TogglePointer: pointer = !pointer; break;
+    case Command::AnswerSaveFirst: workspace.answer(UnsavedAnswer::SaveFirst); break;
+    case Command::AnswerDiscard: workspace.answer(UnsavedAnswer::Discard); break;
+    case Command::AnswerCancel: workspace.answer(UnsavedAnswer::Cancel); break;
+    case Command::CloseProblem: problem.reset(); break;
     case Command::ToggleFrameTime: frameTimeShown() = !frameTimeShown(); break;
     case Command::PresenterLarger:
         if (!presenter) {
@@ -389,7 +393,9 @@ FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool des
     out.pageDescribed = describe;
     if (describe) {
         PageFacts tools = pageTools();
+        const std::optional<std::string>& q = workspace.question();
         out.page = page.json(workspace, {workspace.exercise() ? &exerciseView : nullptr, out.problem,
+                                         q ? ui::unsavedQuestionText(drawn.captions.documentName, *q) : std::string(),
                                          probeWords(probe.shown() ? probe.result() : nullptr),
                                          legendWords(drawn.captions.legend), out.movingLights, toString(theme),
                                          drawn.shareCode, tools.shader, tools.sweep, std::exchange(news, {})});

@@ -21,6 +21,7 @@
 #include "core/scene/light_orbit.h"
 #include "render/renderer.h"
 #include "render/shader.h"
+#include "ui/dialogs.h"
 #include "ui/screen.h"
 #include "ui/viewport/overlay.h"
 #include "ui/widget_map.h"

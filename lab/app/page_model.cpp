@@ -372,6 +372,18 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
         buttons(w, {Command::ExerciseHint, Command::ExerciseReset, Command::ExerciseLeave});
         w.close('}');
     }
+    // The dialog the canvas shows, as the page's alertdialog with its buttons (web/access.js dialog).
+    if (!facts.problem.empty() || !facts.question.empty()) {
+        const bool problem = !facts.problem.empty();
+        w.key("dialog").open('{').key("title").str(problem ? "Error" : "Unsaved changes");
+        w.key("text").str(problem ? facts.problem : facts.question);
+        if (problem) {
+            buttons(w, {Command::CloseProblem});
+        } else {
+            buttons(w, {Command::AnswerSaveFirst, Command::AnswerDiscard, Command::AnswerCancel});
+        }
+        w.close('}');
+    }
     w.key("readouts").open('{').key("probe").str(facts.probe).key("legend").str(facts.legend);
     w.close('}').key("theme").str(facts.theme);
     w.key("messages").open('{').key("problem").str(facts.problem).key("said").open('[');

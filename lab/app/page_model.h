@@ -48,6 +48,7 @@ struct PageNews {
 struct PageFacts {
     const ui::ExercisePanelModel* exercise = nullptr; // while one is solved
     std::string problem; // the error dialog's text while it is shown
+    std::string question; // the unsaved-changes dialog's sentence while it is shown
     std::string probe;   // the pixel probe's readout, "" when none
     std::string legend;  // the factor view's legend, "" when the lit model is shown
     MovingLights motion = MovingLights::None; // a light moves by itself: the Pause button, pressed while paused

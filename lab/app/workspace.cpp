@@ -110,6 +110,9 @@ void Workspace::whenChangesAreSafe(std::string what, std::function<void()> actio
 }
 
 void Workspace::answer(UnsavedAnswer answer) {
+    if (!question_) {
+        return; // answered already (the canvas's dialog and the page's buttons answer the same question)
+    }
     std::function<void()> action = std::exchange(pending_, nullptr);
     const bool quitting = question_ == "quit";
     question_.reset();
@@ -459,6 +462,18 @@ void Workspace::saveFiles(const std::vector<Download>& files, const std::string&
 
 void Workspace::openLink(const std::string& fragment, bool saved) {
     waiting_.reset();
+    const std::string_view deck = std::string_view(fragment).substr(fragment.starts_with('#') ? 1 : 0);
+    if (deck.starts_with("deck=")) { // a bundled deck by name (presets/decks/): the lecture, to step through again
+        const std::string name(deck.substr(5));
+        std::error_code ec;
+        const fs::path file = bundledFolder() / "decks" / (name + ".json");
+        if (name.empty() || safeStem(name) != name || !fs::is_regular_file(file, ec)) {
+            problem("Cannot open the link (nothing was changed)", "there is no bundled deck " + inQuotes(name, 60));
+            return;
+        }
+        open(file);
+        return;
+    }
     Diagnostics d;
     OmittedKeys omitted;
     auto parsed = parseLink(fragment, bundledFolder(), d, &omitted, saved ? kMaxSavedLinkChars : kMaxLinkChars);

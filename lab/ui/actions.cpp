@@ -83,6 +83,10 @@ constexpr std::array kRows = {
     CommandRow{C::FitBlinnPhong,      0,                   kNoModifier,   "Fit Blinn-Phong",  ""},
     CommandRow{C::FitCookTorrance,    0,                   kNoModifier,   "Fit Cook-Torrance", ""},
     CommandRow{C::ToggleLightMotion,  0,                   kNoModifier,   "Pause moving lights", ""},
+    CommandRow{C::AnswerSaveFirst,    0,                   kNoModifier,   "Save first",       ""},
+    CommandRow{C::AnswerDiscard,      0,                   kNoModifier,   "Discard",          ""},
+    CommandRow{C::AnswerCancel,       0,                   kNoModifier,   "Cancel",           ""},
+    CommandRow{C::CloseProblem,       0,                   kNoModifier,   "OK",               ""},
 };
 // clang-format on
 

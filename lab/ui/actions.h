@@ -52,7 +52,10 @@ enum class Command {
     ExportFigures,
     RevertShaders, ToggleSweep, SaveSweep,
     // Exercises (core/exercise/exercise.h): the workspace carries these out, the QR code the app
-    ExerciseReset, ExerciseHint, ExerciseLeave, MakeExercise, SaveExercise, ToggleShareCode,
+    ExerciseReset, ExerciseHint, ExerciseLeave, MakeExercise, SaveExercise,
+    // The dialogs' answers as buttons (the page's parallel DOM answers them so)
+    AnswerSaveFirst, AnswerDiscard, AnswerCancel, CloseProblem,
+    ToggleShareCode,
 };
 inline constexpr Command kLastCommand = Command::ToggleShareCode; // a new command goes before it, or becomes it
 

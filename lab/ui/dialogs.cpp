@@ -6,6 +6,7 @@
 #include "ui/widgets.h"
 
 #include <imgui.h>
+#include <imgui_internal.h> // the open popups, to close one answered elsewhere
 
 namespace lab::ui {
 
@@ -29,6 +30,23 @@ bool answered(const char* label, const char* widget) {
 }
 
 } // namespace
+
+std::string unsavedQuestionText(const std::string& documentName, const std::string& what) {
+    return printable(documentName, true) + " has unsaved changes. Discard them to " + printable(what, true) + "?";
+}
+
+void closeAnsweredDialogs(bool problemShown, bool questionShown) {
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    for (auto [name, shown] : {std::pair{"Error", problemShown}, std::pair{"Unsaved changes", questionShown}}) {
+        const ImGuiID id = ImGui::GetID(name);
+        for (int i = 0; i < g.OpenPopupStack.Size && !shown; ++i) {
+            if (g.OpenPopupStack[i].PopupId == id) {
+                ImGui::ClosePopupToLevel(i, true);
+                break;
+            }
+        }
+    }
+}
 
 bool problemDialog(const Problem& problem) {
     if (!beginModal("Error")) {
@@ -65,7 +83,7 @@ std::optional<UnsavedAnswer> unsavedChangesDialog(const std::string& documentNam
     std::optional<UnsavedAnswer> answer;
     // Wrapped at the dialog's widest, as the problem's: a long file name is never cut off.
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetIO().DisplaySize.x * 0.8f - 2.0f * ImGui::GetStyle().WindowPadding.x);
-    ImGui::TextUnformatted((printable(documentName, true) + " has unsaved changes. Discard them to " + printable(what, true) + "?").c_str());
+    ImGui::TextUnformatted(unsavedQuestionText(documentName, what).c_str());
     ImGui::PopTextWrapPos();
     // Enter is the default (keep the work: save first), Esc cancels; no mouse needed.
     const bool enter = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||

@@ -117,6 +117,7 @@ void panels(const Layout& layout, ScreenModel& m, ScreenEvents& events) {
 }
 
 void dialogs(ScreenModel& m, ScreenEvents& events) {
+    closeAnsweredDialogs(m.problem != nullptr, m.problem == nullptr && m.unsavedQuestion != nullptr);
     if (m.problem) {
         events.problemClosed = problemDialog(*m.problem);
     } else if (m.unsavedQuestion) {
