@@ -4,6 +4,7 @@
 
 #include "core/exercise/preset_fields.h"
 
+#include <cstdio>
 #include <ctime>
 
 namespace lab {
@@ -24,8 +25,8 @@ ui::NotesModel notesModel(const Workspace& ws) {
     m.next = ws.nextSlideTitle();
     std::time_t now = std::time(nullptr);
     char clock[16] = "";
-    if (std::tm local{}; localtime_r(&now, &local)) {
-        std::strftime(clock, sizeof clock, "%H:%M", &local);
+    if (std::tm local{}; localtime_r(&now, &local)) { // (not strftime: its locale tables weigh on the page)
+        std::snprintf(clock, sizeof clock, "%02d:%02d", local.tm_hour, local.tm_min);
     }
     m.clock = clock;
     return m;

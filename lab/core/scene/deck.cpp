@@ -97,7 +97,7 @@ std::optional<Slide> readSlide(Reader& r, const std::string& displayName, const 
     slide.compare = slide.preset.preset.compare;
     if (const Json* compare = r.find("compare"); compare && inner.empty() && r.problems() == before) {
         // Read as the preset's own `compare` would be: on the slide's preset, at this slide's path.
-        Json withCompare = Json::parse(presetToJson(slide.preset.preset));
+        Json withCompare = Json::parse(std::string_view(presetToJson(slide.preset.preset))); // (one parser instantiation)
         withCompare["compare"] = *compare;
         if (std::optional<Preset> p = parseInlinePreset(withCompare.dump(), displayName, r.path(), slide.folder, inner)) {
             slide.compare = p->compare;

@@ -225,7 +225,7 @@ Json presetJson(const Preset& preset) {
         j["notes"] = p.notes;
     }
     if (!p.compare.empty()) {
-        j["compare"] = Json::parse(p.compare, nullptr, false); // minified when read: valid JSON
+        j["compare"] = Json::parse(std::string_view(p.compare)); // minified when read: valid JSON (a string_view: one parser instantiation)
     }
     return j;
 }
