@@ -321,7 +321,7 @@
     box.replaceChildren(el('h2', { id: 'lab-dialog-title', text: d.title }), el('p', { id: 'lab-dialog-text', text: d.text }),
       ...d.buttons.map(button));
     box.hidden = false;
-    box.querySelector('button').focus();
+    // (the focus stays where it is: the canvas's own dialog answers Enter and Esc there)
   }
 
   // A description from the lab (every frame it changed).
