@@ -21,6 +21,9 @@ void App::Impl::carryOut(const FrameInput& in, const ui::ScreenEvents& events) {
     if (in.closeRequested) {
         workspace.requestQuit();
     }
+    if (in.notesWindowClosed) {
+        notesWindow = false;
+    }
     for (const Request& r : events.requests) {
         carryOut(r);
     }
@@ -55,6 +58,14 @@ void App::Impl::carryOut(const Request& r) {
     case Command::ToggleLightShapes: lightShapes = !lightShapes; break;
     case Command::ToggleLightMotion: orbits.togglePaused(); break;
     case Command::ToggleNotes: showNotes = !showNotes; break;
+    case Command::NotesWindow:
+        if (options.notesWindows) {
+            notesWindow = !notesWindow;
+            showNotes = showNotes && !notesWindow; // not twice: the room sees the strip
+        } else {
+            showNotes = !showNotes;
+        }
+        break;
     case Command::TogglePointer: pointer = !pointer; break;
     case Command::AnswerSaveFirst: workspace.answer(UnsavedAnswer::SaveFirst); break;
     case Command::AnswerDiscard: workspace.answer(UnsavedAnswer::Discard); break;
@@ -391,6 +402,9 @@ FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool des
     out.copyLink = std::exchange(copyLink, false);
     out.viewportDrawn = viewportDrawn;
     out.pageDescribed = describe;
+    if (notesWindow) {
+        out.notesWindow = drawn.notes;
+    }
     if (describe) {
         PageFacts tools = pageTools();
         const std::optional<std::string>& q = workspace.question();

@@ -24,6 +24,7 @@
 #include "core/io/diagnostics.h"
 #include "core/plots/theme.h"
 #include "ui/actions.h"
+#include "ui/tools/notes.h"
 
 #include <filesystem>
 #include <functional>
@@ -45,6 +46,7 @@ struct FrameInput {
     int framesDue = 0;                  // frames the platform will draw after this one anyway (FramePacer::dueAfterThis)
     bool repaint = false;               // the window's picture was lost (uncovered, resized): draw it even if unchanged
     bool closeRequested = false; // the user closed the window
+    bool notesWindowClosed = false; // the user closed the notes' own window (FrameOutput::notesWindow)
     bool touch = false;          // the pointer is a finger (app/touch.h): touch-sized widgets
     std::optional<std::string> openLink; // a link to open ("preset=name", "z=...": core/share/share_link.h)
     bool openLinkSaved = false;          // it is the page's own saved state (kMaxSavedLinkChars), not an address
@@ -85,6 +87,9 @@ struct FrameOutput {
     bool pageDescribed = false;  // `page` was made: asked for, and no value is being dragged (the description waits)
     KeyOwner keys = KeyOwner::Canvas; // who this frame's keys went to (the page: Tab is the browser's only on the model)
     float viewportScale = 1.0f;  // the fraction of the view's width and height drawn (< 1 while dragging on a slow machine)
+    // The speaker's notes for a window of their own (Command::NotesWindow, AppOptions::notesWindows): the
+    // platform opens one while this is set, draws it with ui::notesScreen, and closes it when it is not.
+    std::optional<ui::NotesModel> notesWindow;
 };
 
 struct AppOptions {
@@ -115,6 +120,9 @@ struct AppOptions {
     // The user asked for less motion (the page: the prefers-reduced-motion media query): a scene whose
     // light orbits opens with the motion paused (app/orbit_clock.h); Command::ToggleLightMotion resumes it.
     bool reducedMotion = false;
+    // The platform can open a second window for the speaker's notes (the desktop): Shift+S asks for it.
+    // Without one, Shift+S shows the notes' strip as S does.
+    bool notesWindows = false;
 };
 
 // Owns the workspace, the renderer and the UI state (not copyable: impl_ is unique).

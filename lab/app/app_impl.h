@@ -58,6 +58,7 @@ struct App::Impl {
     ui::ViewportControls viewportControls;
     enum class Panels { All, PlotsOnly, None } panels = Panels::All; // Tab cycles
     bool showHelp = false, presenter = false, caption = false, lightShapes = true, showNotes = false, pointer = false;
+    bool notesWindow = false; // the speaker's notes in a window of their own (AppOptions::notesWindows)
     Theme theme = Theme::Dark; // the last frame's (the panel's radio buttons change panel.theme)
     bool themeChosen = false;  // by the user, in the panel
     // The frame time while the model changes, outside and in presenter mode (T toggles the one in use):

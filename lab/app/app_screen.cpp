@@ -4,14 +4,12 @@
 
 #include "core/exercise/preset_fields.h"
 
-#include <cstdio>
-#include <ctime>
 
 namespace lab {
 
 namespace {
 
-// What the notes window says of where the lecture is (ui/tools/small_windows.h).
+// What the speaker's notes say of where the lecture is (ui/tools/notes.h).
 ui::NotesModel notesModel(const Workspace& ws) {
     ui::NotesModel m;
     const std::vector<std::string> names = ws.slideNames();
@@ -23,12 +21,7 @@ ui::NotesModel notesModel(const Workspace& ws) {
     }
     m.notes = ws.notes();
     m.next = ws.nextSlideTitle();
-    std::time_t now = std::time(nullptr);
-    char clock[16] = "";
-    if (std::tm local{}; localtime_r(&now, &local)) { // (not strftime: its locale tables weigh on the page)
-        std::snprintf(clock, sizeof clock, "%02d:%02d", local.tm_hour, local.tm_min);
-    }
-    m.clock = clock;
+    m.clock = ui::wallClock();
     return m;
 }
 
@@ -79,7 +72,7 @@ ui::ScreenModel App::Impl::screenModel() {
     m.showNotes = &showNotes;
     m.equation = presenter; // the room reads the equation over the model
     m.pointer = pointer;
-    if (showNotes) {
+    if (showNotes || notesWindow) {
         m.notes = notesModel(workspace);
     }
     m.lightShapes = lightShapes;

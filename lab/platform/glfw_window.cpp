@@ -11,7 +11,8 @@
 //     ImGui's built-in font otherwise) and the style scaled, instead of blurry stretching;
 //   * the window fits the screen it opens on: 1600x900 or --size, shrunk to the monitor's work
 //     area and centred in it;
-//   * fullscreen on the primary monitor and back.
+//   * fullscreen on the primary monitor and back;
+//   * the speaker's notes in a second window when the app asks (notes_window.h).
 // Not here: anything about presets, rendering or the UI's content (lab/app, lab/render, lab/ui).
 // Debian's ImGui 1.86 OpenGL3 backend loads desktop GL entry points; on an ES context it raises
 // one harmless GL_INVALID_ENUM per frame (it asks for GL_POLYGON_MODE). The lab never reads
@@ -21,6 +22,7 @@
 #include "app/frame_pacer.h"
 #include "platform/imgui_glfw.h"
 #include "platform/imgui_host.h"
+#include "platform/notes_window.h"
 
 #include "render/gl.h"
 
@@ -118,10 +120,13 @@ FrameInput nextInput(GLFWwindow* window, WindowState& state, double& last, float
     return in;
 }
 
-// Sleeps in GLFW as long as the pacer allows (until an event, or the app's timer), then takes
-// the events that came.
-void waitForEvents(GLFWwindow* window, WindowState& state, const FramePacer& pacer) {
+// Sleeps in GLFW as long as the pacer allows (until an event, or the app's timer, or the notes'
+// clock's next minute), then takes the events that came.
+void waitForEvents(GLFWwindow* window, WindowState& state, const FramePacer& pacer, double notesWakeIn) {
     double sleep = pacer.sleepFor(glfwGetTime(), !state.queue.empty());
+    if (notesWakeIn >= 0.0) {
+        sleep = sleep < 0.0 ? notesWakeIn : std::min(sleep, notesWakeIn);
+    }
     if (glfwGetWindowAttrib(window, GLFW_ICONIFIED) || sleep < 0.0) {
         glfwWaitEvents();
     } else if (sleep > 0.0) {
@@ -132,12 +137,13 @@ void waitForEvents(GLFWwindow* window, WindowState& state, const FramePacer& pac
 }
 
 // The loop: a frame when one is due (app/frame_pacer.h), asleep otherwise.
-void loop(GLFWwindow* window, WindowState& state, ImGuiHost& host) {
+void loop(GLFWwindow* window, WindowState& state, ImGuiHost& host, NotesWindow& notes) {
     FramePacer pacer;
     double last = glfwGetTime();
     float lastCost = 0.0f;
     for (bool quit = false; !quit;) {
-        waitForEvents(window, state, pacer);
+        waitForEvents(window, state, pacer, notes.wakeIn());
+        notes.refresh();
         if (std::exchange(state.changed, false)) {
             pacer.input();
         }
@@ -155,6 +161,7 @@ void loop(GLFWwindow* window, WindowState& state, ImGuiHost& host) {
         }
         lastCost = static_cast<float>(glfwGetTime() - start);
         pacer.drawn(glfwGetTime(), out.redrawIn, !state.queue.empty());
+        notes.update(out.notesWindow);
         glfwSetWindowTitle(window, out.title.c_str());
         if (out.toggleFullscreen) {
             toggleFullscreen(window, state);
@@ -174,10 +181,12 @@ WindowResult runWindow(const AppOptions& appOptions, const WindowOptions& option
     {
         AppOptions withSamples = appOptions;
         withSamples.viewportSamples = 4;
+        withSamples.notesWindows = true;
         App app(withSamples); // its GL objects go before the context does
         WindowState state;
         ImGuiHost host(kFonts);
         GlfwBackend backend(window, &state);
+        NotesWindow notes(window, &state, kFonts); // closed before the host's context goes
         glfwSetWindowCloseCallback(window, [](GLFWwindow* w) { static_cast<PlatformInput*>(glfwGetWindowUserPointer(w))->changed = true; });
         if (!host.start(app, error)) {
             result = WindowResult::Failed;
@@ -185,7 +194,7 @@ WindowResult runWindow(const AppOptions& appOptions, const WindowOptions& option
             if (options.fullscreen) {
                 toggleFullscreen(window, state);
             }
-            loop(window, state, host);
+            loop(window, state, host, notes);
         }
     }
     glfwDestroyWindow(window);

@@ -95,7 +95,26 @@ GlfwBackend::GlfwBackend(GLFWwindow* window, PlatformInput* input) {
 
 GlfwBackend::~GlfwBackend() { ImGui_ImplGlfw_Shutdown(); }
 
+void queueKeysOf(GLFWwindow* window, PlatformInput* input) {
+    glfwSetWindowUserPointer(window, input);
+    glfwSetKeyCallback(window, onKey);
+    glfwSetWindowCloseCallback(window, [](GLFWwindow* w) {
+        inputOf(w).notesClosed = true;
+        inputOf(w).changed = true;
+    });
+    auto repaint = [](GLFWwindow* w) {
+        inputOf(w).notesRepaint = true;
+        inputOf(w).changed = true;
+    };
+    glfwSetWindowRefreshCallback(window, repaint);
+    glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) {
+        inputOf(w).notesRepaint = true;
+        inputOf(w).changed = true;
+    });
+}
+
 void takeQueuedInput(PlatformInput& input, FrameInput& in) {
+    in.notesWindowClosed = std::exchange(input.notesClosed, false);
     in.events = input.queue.takeFrame();
     in.repaint = std::exchange(input.repaint, false);
     in.droppedFiles = input.queue.takeDropped();

@@ -17,6 +17,8 @@ struct PlatformInput {
     float cursorScale = 1.0f; // GLFW's cursor units to window units (the browser: 1 / device pixel ratio)
     bool changed = false;     // anything happened, input or not (a resize, an uncovered window, focus)
     bool repaint = false;     // the window's picture was lost or resized: draw it whatever changed
+    bool notesClosed = false;  // the notes' own window (platform/notes_window.h): its close button
+    bool notesRepaint = false; // ... its picture was lost or resized
 };
 
 // ImGui's GLFW backend on `window` for as long as it lives, without its input callbacks: the
@@ -29,6 +31,11 @@ public:
     GlfwBackend(const GlfwBackend&) = delete;
     GlfwBackend& operator=(const GlfwBackend&) = delete;
 };
+
+// A second window of the lab's (the speaker's notes): its keys go into `input`'s queue as the main
+// window's do, so a clicker or the arrows step the slides from either; its close button and a lost
+// picture are input.notesClosed and input.notesRepaint. No ImGui backend on it.
+void queueKeysOf(GLFWwindow* window, PlatformInput* input);
 
 // Moves one frame's share of the queued input (and every dropped file) into the frame's input.
 void takeQueuedInput(PlatformInput& input, FrameInput& in);

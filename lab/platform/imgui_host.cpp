@@ -150,6 +150,20 @@ const ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0391, 0x03A9, 0x03B1, 0x03C9, 
 
 } // namespace
 
+void loadUiFont(const std::vector<std::string>& fontFiles, FallbackFont fallback, float pixels) {
+    ImGuiIO& io = ImGui::GetIO();
+    bool loaded = false;
+    for (const std::string& f : fontFiles) {
+        std::error_code ec;
+        if (!loaded && std::filesystem::is_regular_file(f, ec)) {
+            loaded = io.Fonts->AddFontFromFileTTF(f.c_str(), pixels, nullptr, kGlyphRanges) != nullptr;
+        }
+    }
+    if (!loaded && fallback) {
+        fallback(pixels * 13.0f / 15.0f); // ProggyClean is drawn for 13 pixels
+    }
+}
+
 void imguiBuiltinFont(float pixels) {
     ImFontConfig config;
     config.SizePixels = pixels;
@@ -174,18 +188,8 @@ struct ImGuiHost::Impl {
     void applyScale(float s, bool t) {
         scale = s;
         touch = t;
-        ImGuiIO& io = ImGui::GetIO();
-        io.Fonts->Clear();
-        bool loaded = false;
-        for (const std::string& f : fontFiles) {
-            std::error_code ec;
-            if (!loaded && std::filesystem::is_regular_file(f, ec)) {
-                loaded = io.Fonts->AddFontFromFileTTF(f.c_str(), 15.0f * s, nullptr, kGlyphRanges) != nullptr;
-            }
-        }
-        if (!loaded && fallback) {
-            fallback(13.0f * s);
-        }
+        ImGui::GetIO().Fonts->Clear();
+        loadUiFont(fontFiles, fallback, 15.0f * s);
         ImGui_ImplOpenGL3_DestroyFontsTexture();
         ImGui_ImplOpenGL3_CreateFontsTexture();
         ImGuiStyle& style = ImGui::GetStyle();

@@ -19,6 +19,9 @@ namespace lab {
 // ImGui's built-in font (ProggyClean) at `pixels`: the desktop's font when none of its files loads.
 void imguiBuiltinFont(float pixels);
 using FallbackFont = void (*)(float pixels);
+// The first of `fontFiles` that loads, at `pixels`, into the current ImGui context's atlas, else
+// `fallback`'s font (the atlas's texture is the renderer backend's to make).
+void loadUiFont(const std::vector<std::string>& fontFiles, FallbackFont fallback, float pixels);
 
 // Owns the ImGui context and its renderer backend (not copyable: impl_ is unique).
 class ImGuiHost {

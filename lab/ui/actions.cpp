@@ -24,6 +24,7 @@ constexpr std::array kRows = {
     CommandRow{C::ResetSlide,         'R',                 kNoModifier,   "Reset slide (R)",  "reset the slide: the scene, set B and the view as the file has them (Ctrl+Z brings the edits back)"},
     CommandRow{C::TogglePointer,      'X',                 kNoModifier,   "Pointer (X)",      "a large pointer over the model that the back row sees (in screenshots too)"},
     CommandRow{C::ToggleNotes,        'S',                 kNoModifier,   "Notes (S)",        "speaker notes: the slide's notes, the next slide and the time"},
+    CommandRow{C::NotesWindow,        'S',                 kShift,        "Notes window (Shift+S)", "speaker notes in a window of their own, for the laptop's screen while the lab fills the projector (the page: as S)"},
     CommandRow{C::ShadingFlat,        '1',                 kNoModifier,   "flat",             "flat shading"},
     CommandRow{C::ShadingGouraud,     '2',                 kNoModifier,   "Gouraud",          "Gouraud shading"},
     CommandRow{C::ShadingPhong,       '3',                 kNoModifier,   "Phong",            "Phong shading"},

@@ -46,7 +46,7 @@ enum class Command {
     FitPhong, FitBlinnPhong, FitCookTorrance,
     // The window and its tools (the app carries these out)
     ToggleHelp, CloseHelp, TogglePanels, TogglePresenter, PresenterLarger, PresenterSmaller, ToggleCaption,
-    ToggleLightShapes, ToggleLightMotion, ToggleNotes, TogglePointer,
+    ToggleLightShapes, ToggleLightMotion, ToggleNotes, NotesWindow, TogglePointer,
     ToggleFrameTime,
     ToggleFullscreen, Screenshot, FocusOpenPath, PickFile, CopyLink, ToggleShaderEditor, CompileShaders,
     ExportFigures,

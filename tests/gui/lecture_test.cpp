@@ -52,6 +52,56 @@ TEST(GuiLecture, TheDeckStepsWithAClickersKeysAndAnEditOnEverySlideAsksNothing) 
     EXPECT_GT(changedShare(edited, lab.capture(lab.widget("view.header"))), 0.001) << "R should drop the edit from the header";
 }
 
+// The window the lab opened for the notes, on the screen, once it shows text (it draws after the
+// lab's frame); an empty image when it never did within 10 s.
+Image notesPicture(Lab& lab, unsigned long notes, const Image* differentFrom = nullptr) {
+    auto end = Clock::now() + std::chrono::seconds(10);
+    Image image;
+    int x = 0, y = 0, w = 0, h = 0;
+    while (Clock::now() < end && lab.x().screenRect(notes, x, y, w, h)) {
+        image = lab.x().capture(x, y, w, h);
+        if (brightest(image) > 150 && (!differentFrom || changedShare(*differentFrom, image) > 0.001)) {
+            return image;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return Image{};
+}
+
+TEST(GuiLecture, TheNotesHaveAWindowOfTheirOwnAndItsKeysStepTheSlides) {
+    START_LAB(lab, "--deck", kDeck, "--size", "1024x768");
+    Rect view = lab.widget("view");
+    lab.moveTo(view.cx(), view.cy());
+    lab.press("s", "Shift_L");
+    lab.settle();
+    const unsigned long notes = lab.x().findWindow("Speaker notes", 10.0);
+    ASSERT_NE(notes, 0u) << "Shift+S should open the speaker notes' own window";
+    EXPECT_FALSE(lab.has("notes")) << "not the strip too: the room would read it";
+    Image first = notesPicture(lab, notes);
+    ASSERT_GT(first.width, 200) << "the notes' window should show its text";
+    keep(first, "lecture-notes-window");
+    // The instructor's keys on the laptop's screen: the pointer over the notes (no window manager
+    // here: the keys go to the window under the pointer), and Right steps the lab.
+    int x = 0, y = 0, w = 0, h = 0;
+    ASSERT_TRUE(lab.x().screenRect(notes, x, y, w, h));
+    int lx = 0, ly = 0;
+    lab.x().toScreen(lab.window(), lx, ly);
+    ASSERT_LT(x + 20, lx) << "the test needs a place on the notes that the lab's window does not cover";
+    const std::string before = lab.x().title(lab.window());
+    lab.x().moveMouse(x + 10, y + h / 2);
+    lab.press("Right");
+    lab.settle();
+    EXPECT_NE(lab.x().title(lab.window()), before) << "Right in the notes' window should step the lab (its title names the slide's file)";
+    Image second = notesPicture(lab, notes, &first);
+    EXPECT_GT(second.width, 0) << "the notes should follow the slide";
+    lab.press("s", "Shift_L"); // from the notes' window too: closes it
+    lab.settle();
+    auto end = Clock::now() + std::chrono::seconds(10);
+    while (lab.x().findWindow("Speaker notes", 0.1) != 0 && Clock::now() < end) {
+    }
+    EXPECT_EQ(lab.x().findWindow("Speaker notes", 0.1), 0u) << "Shift+S again should close the notes' window";
+}
+
 TEST(GuiLecture, APreparedComparisonOpensWithLabelsNamingWhatDiffers) {
     START_LAB(lab, "--deck", kDeck, "--size", "1280x800");
     Rect view = lab.widget("view");

@@ -95,6 +95,21 @@ void X11Driver::toScreen(unsigned long window, int& x, int& y) {
     y = sy;
 }
 
+std::string X11Driver::title(unsigned long window) { return windowTitle(display_, window); }
+
+bool X11Driver::screenRect(unsigned long window, int& x, int& y, int& width, int& height) {
+    XWindowAttributes a;
+    if (!XGetWindowAttributes(display_, window, &a)) {
+        return false;
+    }
+    x = 0;
+    y = 0;
+    toScreen(window, x, y);
+    width = a.width;
+    height = a.height;
+    return true;
+}
+
 void X11Driver::moveMouse(int x, int y) {
     XTestFakeMotionEvent(display_, DefaultScreen(display_), x, y, CurrentTime);
     flush();

@@ -24,6 +24,10 @@ public:
     unsigned long findWindow(const std::string& prefix, double seconds);
     // Window coordinates to screen coordinates.
     void toScreen(unsigned long window, int& x, int& y);
+    // A window's title ("" for none).
+    std::string title(unsigned long window);
+    // A window's rectangle on the screen; false when there is no such window (any more).
+    bool screenRect(unsigned long window, int& x, int& y, int& width, int& height);
 
     void moveMouse(int x, int y);
     void button(int button, bool down);

@@ -44,33 +44,6 @@ void helpWindow(bool& open) {
     ImGui::End();
 }
 
-void notesWindow(const NotesModel& m, bool& open, float x, float y, float width) {
-    if (!open) {
-        return;
-    }
-    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing, ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowSizeConstraints(ImVec2(width * 0.3f, 0.0f), ImVec2(width, ImGui::GetIO().DisplaySize.y * 0.6f));
-    ImGui::SetNextWindowBgAlpha(0.9f);
-    if (ImGui::Begin("Speaker notes (S)###notes", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
-                                                           ImGuiWindowFlags_NoFocusOnAppearing)) {
-        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width - 2.0f * ImGui::GetStyle().WindowPadding.x);
-        ImGui::TextDisabled("%s   %s", printable(m.position, true).c_str(), m.clock.c_str());
-        ImGui::Separator();
-        if (m.notes.empty()) {
-            ImGui::TextDisabled("No notes for this slide (a deck's \"notes\", or the preset's).");
-        } else {
-            ImGui::TextUnformatted(printable(m.notes).c_str());
-        }
-        if (!m.next.empty()) {
-            ImGui::Separator();
-            ImGui::TextDisabled("Next: %s", printable(m.next, true).c_str());
-        }
-        ImGui::PopTextWrapPos();
-    }
-    mark("notes");
-    ImGui::End();
-}
-
 namespace {
 
 void vec(const char* name, const glm::vec3& v) { ImGui::Text("%-3s (%+.3f, %+.3f, %+.3f)", name, v.x, v.y, v.z); }

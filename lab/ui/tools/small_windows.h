@@ -1,27 +1,18 @@
 // small_windows.h — the lab's smaller windows: pixel probe and help overlay (the shader editor has its
-// own file, shader_editor.h).
+// own file, shader_editor.h; the speaker's notes are notes.h's).
 // ImGui only; what they ask for comes back as requests (ui/actions.h) for the app.
 #pragma once
 
 #include "core/lighting/probe.h"
 #include "core/scene/view_mode.h"
 #include "ui/actions.h"
+#include "ui/tools/notes.h"
 
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace lab::ui {
-
-// The speaker's notes (S): where the lecture is, what to say, what comes next and the time — a
-// strip over the model's lower left for a single screen (the room sees it too: keep it short).
-struct NotesModel {
-    std::string position; // "Slide 5 of 12: Full Phong"; "05-full-phong.json" off a deck
-    std::string notes;    // the slide's notes, else the preset's own; empty: none
-    std::string next;     // the next slide's title; empty at the last
-    std::string clock;    // "14:05"
-};
-void notesWindow(const NotesModel& notes, bool& open, float x, float y, float width);
 
 // The shortcuts, from the command table (ui/actions.h helpRows()).
 void helpWindow(bool& open);
