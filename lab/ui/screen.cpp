@@ -94,13 +94,16 @@ void panels(const Layout& layout, ScreenModel& m, ScreenEvents& events) {
     }
     if (layout.panel.w > 0.0f) {
         beginFixed("Lighting Lab###panel", layout.panel, extra);
-        if (layout.compact) {
-            // Fields to the width less a label's and a help marker's room (ImGui's default, 65% of
-            // the window, leaves a phone's labels too little).
-            ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.0f);
+        // Fields to the width less a label's and a help marker's room where ImGui's default (65% of
+        // the window) leaves the labels too little: a phone's panel, and presenter mode's large
+        // font in a projector's narrow panel, which would cut them at the side.
+        const float labelRoom = ImGui::GetFontSize() * 9.0f;
+        const bool narrow = layout.compact || ImGui::GetContentRegionAvail().x * 0.35f < labelRoom;
+        if (narrow) {
+            ImGui::PushItemWidth(-labelRoom);
         }
         controlPanel(*m.edited, *m.view, m.panelInfo, *m.panel, events.requests, partOf(layout));
-        if (layout.compact) {
+        if (narrow) {
             ImGui::PopItemWidth();
         }
         dragToScroll();
@@ -175,6 +178,7 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
         roomPointer(events.pointerX, events.pointerY, layout.viewport);
     }
     markKeyboardFocus();
+    markClippedWindows();
     events.gesture = ImGui::IsAnyItemActive() || events.viewport.gesture;
     events.dragging = events.gesture && ImGui::IsAnyMouseDown();
     return events;

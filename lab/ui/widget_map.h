@@ -39,4 +39,9 @@ private:
 WidgetMap& widgets();
 inline void mark(const std::string& name) { widgets().mark(name); }
 
+// After every window of the frame: each one whose contents are wider than it shows and that cannot
+// scroll sideways (some text or widget in it is cut) goes into the map as "clipped:<its name>" (its
+// rectangle), for the GUI tests that find no cut text in presenter mode on a projector.
+void markClippedWindows();
+
 } // namespace lab::ui

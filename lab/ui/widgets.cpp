@@ -23,6 +23,10 @@ WidgetMap& widgets() {
 void WidgetMap::mark(const std::string& name) {
     ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
     rects_[name] = Rect{min.x, min.y, max.x - min.x, max.y - min.y};
+    if (const ImGuiWindow* w = ImGui::GetCurrentWindowRead(); w && !(w->Flags & ImGuiWindowFlags_HorizontalScrollbar) &&
+                                                             (max.x > w->InnerClipRect.Max.x + 1.0f || min.x < w->InnerClipRect.Min.x - 1.0f)) {
+        rects_["clipped:" + name] = rects_[name]; // cut at the window's side (markClippedWindows())
+    }
     if (!focus_.empty() && name == focus_) {
         if (std::exchange(scroll_, false)) {
             ImGui::SetScrollHereY(0.5f);
@@ -30,6 +34,25 @@ void WidgetMap::mark(const std::string& name) {
         const float pad = 3.0f;
         ImGui::GetForegroundDrawList()->AddRect(ImVec2(min.x - pad, min.y - pad), ImVec2(max.x + pad, max.y + pad),
                                                 ImGui::GetColorU32(ImGuiCol_NavHighlight), 3.0f, 0, 3.0f);
+    }
+}
+
+void markClippedWindows() {
+    for (ImGuiWindow* w : GImGui->Windows) {
+        const bool sideways = (w->Flags & (ImGuiWindowFlags_HorizontalScrollbar | ImGuiWindowFlags_AlwaysHorizontalScrollbar)) != 0;
+        if (!w->Active || w->Hidden || sideways || (w->Flags & ImGuiWindowFlags_Tooltip)) {
+            continue;
+        }
+        const float shown = w->InnerRect.GetWidth() - 2.0f * w->WindowPadding.x;
+        // (an auto-resized window's ideal size is what it would take; another's, what it has)
+        const float content = (w->Flags & ImGuiWindowFlags_AlwaysAutoResize) ? std::max(w->ContentSize.x, w->ContentSizeIdeal.x) : w->ContentSize.x;
+        if (content > shown + 1.0f) {
+            std::string name = w->Name;
+            for (char& c : name) {
+                c = c == ' ' ? '_' : c; // one word in the map's line
+            }
+            widgets().set("clipped:" + name, Rect{w->Pos.x, w->Pos.y, w->Size.x, w->Size.y});
+        }
     }
 }
 
@@ -115,6 +138,16 @@ void disabledWrapped(const char* text) {
     ImGui::PopStyleColor();
 }
 
+bool wrappedSelectable(const char* id, const std::string& text, bool selected) {
+    const float room = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize());
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, room);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const bool clicked = ImGui::Selectable(id, selected, 0, ImVec2(room, size.y));
+    ImGui::GetWindowDrawList()->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, ImGui::GetColorU32(ImGuiCol_Text),
+                                        text.c_str(), nullptr, room);
+    return clicked;
+}
+
 void helpMarker(const char* text) {
     sameLineIfFits(ImGui::CalcTextSize("(?)").x);
     ImGui::TextDisabled("(?)");
@@ -143,7 +176,7 @@ void helpMarker(const char* text) {
 
 void sameLineIfFits(float width) {
     float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width;
-    if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) {
+    if (right <= ImGui::GetCurrentWindowRead()->WorkRect.Max.x) { // (less a vertical scrollbar)
         ImGui::SameLine();
     }
 }

@@ -39,6 +39,10 @@ void sameLineIfFits(const char* buttonLabel);
 void sameLineIfFitsRadio(const char* label);
 // Greyed text wrapped at the window's edge (a phone's panel is narrow).
 void disabledWrapped(const char* text);
+// A Selectable as wide as the window's room whose `text` (drawn as it is: no "##" in it) wraps
+// onto more lines where it is wider than that room (a long file name in presenter mode), so none
+// of it is cut. `id` is its ImGui label ("###preset3"). True when clicked.
+bool wrappedSelectable(const char* id, const std::string& text, bool selected);
 // A "(?)" marker with a tooltip (ui/tooltip.h), reachable by the keyboard; a tap, a click or Space
 // opens it as a popup that stays.
 void helpMarker(const char* text);

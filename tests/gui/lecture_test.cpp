@@ -140,6 +140,52 @@ TEST(GuiLecture, PresenterModeShowsTheEquationAndThePointerIsInTheScreenshot) {
     keep(shot, "lecture-pointer-screenshot");
 }
 
+// What is cut at a side of its window in this frame (the lab marks it "clipped:...", ui/widget_map.h).
+std::vector<std::string> clipped(Lab& lab, const std::string& when) {
+    std::vector<std::string> cut;
+    for (const auto& [name, rect] : lab.layout()) {
+        if (name.rfind("clipped:", 0) == 0 && rect.w > 0) {
+            cut.push_back(when + ": " + name.substr(8));
+        }
+    }
+    return cut;
+}
+
+// A projector's screen in presenter mode with every panel shown (H until the panel is there): no
+// window and no widget is cut at a side, on any tab of the plots, nor in the help. (1280x800; at
+// 1024x768 the panel's BRDF rows and the plots' tab names are still cut: issue 50's note.)
+TEST(GuiLecture, PresenterModeOnAProjectorCutsNoText) {
+    for (const std::string size : {"1280x800"}) {
+        for (const std::string name : {"13-cook-torrance-beckmann-schlick", "23-spot-light"}) {
+            START_LAB(lab, "--preset", preset(name), "--presenter", "--size", size);
+            lab.moveTo(lab.widget("view").cx(), lab.widget("view").cy());
+            for (int i = 0; i < 3 && !lab.has("panel"); ++i) {
+                lab.press("h");
+                lab.settle();
+            }
+            ASSERT_TRUE(lab.has("panel")) << size << ": H should show the panel";
+            std::vector<std::string> cut = clipped(lab, size + " " + name);
+            for (const char* tab : {"plot.view.plane", "plot.view.lobe3d", "plot.view.energy", "plot.view.slice"}) {
+                if (lab.has(tab) && lab.widget(tab).w > 0) {
+                    lab.click(lab.widget(tab).cx(), lab.widget(tab).cy());
+                    lab.settle();
+                    for (std::string& c : clipped(lab, size + " " + name + " " + tab)) {
+                        cut.push_back(std::move(c));
+                    }
+                }
+            }
+            lab.moveTo(lab.widget("view").cx(), lab.widget("view").cy());
+            lab.press("F1");
+            lab.settle();
+            for (std::string& c : clipped(lab, size + " " + name + " help")) {
+                cut.push_back(std::move(c));
+            }
+            keep(window(lab), "presenter-" + size + "-" + name);
+            EXPECT_TRUE(cut.empty()) << ::testing::PrintToString(cut);
+        }
+    }
+}
+
 TEST(GuiLecture, AViewThatIsConstantOnTheModelSaysSo) {
     TempFolder dir;
     std::string text = readText(preset("13-cook-torrance-beckmann-schlick"));

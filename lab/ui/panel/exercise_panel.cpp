@@ -106,10 +106,13 @@ void exerciseList(const std::vector<std::filesystem::path>& files, std::vector<R
     ImGui::TextDisabled("Exercises: match a target");
     for (std::size_t i = 0; i < files.size(); ++i) {
         std::string name = files[i].stem().string();
+        const float width = ImGui::CalcTextSize(name.c_str()).x + ImGui::GetStyle().FramePadding.x * 2.0f;
         if (i > 0) {
-            sameLineIfFits(ImGui::CalcTextSize(name.c_str()).x + ImGui::GetStyle().FramePadding.x * 2.0f);
+            sameLineIfFits(width);
         }
-        if (ImGui::SmallButton(name.c_str())) {
+        // A name wider than the panel (presenter mode's font) wraps in a row of its own instead of being cut.
+        const bool fits = width <= ImGui::GetContentRegionAvail().x;
+        if (fits ? ImGui::SmallButton(name.c_str()) : wrappedSelectable(("###exercise" + std::to_string(i)).c_str(), name, false)) {
             requests.push_back({Command::OpenPath, files[i].string()});
         }
         mark("exercises." + name);

@@ -80,7 +80,7 @@ void browserFilesSection(const PanelInfo& info, std::vector<Request>& requests) 
 }
 
 void filesSection(const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
-    ImGui::Text("%s%s", info.documentName.c_str(), info.dirty ? "  (modified)" : "");
+    ImGui::TextWrapped("%s%s", info.documentName.c_str(), info.dirty ? "  (modified)" : ""); // a long name: never cut
     if (info.browser) {
         browserFilesSection(info, requests);
         return;
@@ -109,12 +109,9 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
             // The row's place is its ID; the file's name (escaped: dropped files land in this list) is
             // drawn as it is, not as a label, where "##" would hide the rest of it.
             std::string id = "###preset" + std::to_string(i);
-            ImVec2 at = ImGui::GetCursorScreenPos(); // where the Selectable puts a label's text
-            bool clicked = ImGui::Selectable(id.c_str(), selected);
             // A deck's slides are numbered: the notes say "Slide 6 of 28".
             std::string name = (info.deckTitle.empty() ? "" : std::to_string(i + 1) + "  ") + printable(files[i], true);
-            ImGui::GetWindowDrawList()->AddText(at, ImGui::GetColorU32(ImGuiCol_Text), name.c_str());
-            if (clicked) {
+            if (wrappedSelectable(id.c_str(), name, selected)) {
                 requests.push_back({Command::OpenPresetAt, {}, static_cast<int>(i)});
             }
             if (selected && (ImGui::IsWindowAppearing() || state.listScrolledTo != info.currentPreset)) {
@@ -125,7 +122,7 @@ void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Reques
         ImGui::EndListBox();
     }
     mark("presets.list");
-    ImGui::TextDisabled("Left/Right on the model: previous/next; R: the file's again");
+    disabledWrapped("Left/Right on the model: previous/next; R: the file's again");
     if (info.exerciseFiles && !info.exerciseFiles->empty()) {
         exerciseList(*info.exerciseFiles, requests);
     }
@@ -156,9 +153,11 @@ void nothingAfter(const FieldRow&, const std::string&) {}
 void fitRow(PanelState& state, std::vector<Request>& requests) {
     disabledWrapped("Fit a model to this specular lobe (least squares over the incident angles; the fit goes into B):");
     for (Command c : {Command::FitPhong, Command::FitBlinnPhong}) {
+        if (c != Command::FitPhong) {
+            sameLineIfFits(commandRow(c).label);
+        }
         commandButton(c, requests);
         mark(c == Command::FitPhong ? "brdf.fit-phong" : "brdf.fit-blinn-phong");
-        ImGui::SameLine();
     }
     const char* ct = commandRow(Command::FitCookTorrance).label;
     sameLineIfFits(ct);
@@ -191,8 +190,10 @@ void brdfSection(Preset& p, const FieldGate& gate) {
     }
     fieldRowsOf("cook_torrance", p, nullptr, 0, gate, [&](const FieldRow& row, const std::string&) {
         if (fieldKey(row) == "ior") {
-            ImGui::SameLine();
-            ImGui::TextDisabled("F0 = %.3f", glsl::fresnelF0(p.cookTorrance.ior));
+            char f0[32];
+            std::snprintf(f0, sizeof f0, "F0 = %.3f", glsl::fresnelF0(p.cookTorrance.ior));
+            sameLineIfFits(ImGui::CalcTextSize(f0).x);
+            ImGui::TextDisabled("%s", f0);
         }
     });
 }

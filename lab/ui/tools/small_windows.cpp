@@ -18,13 +18,19 @@ void helpWindow(bool& open) {
     ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowBgAlpha(0.92f);
-    // Never taller than the screen (a projector's 768 lines): the rows scroll instead.
-    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(io.DisplaySize.x, io.DisplaySize.y * 0.95f));
+    // Never taller than the screen (a projector's 768 lines): the rows scroll instead; never wider
+    // either (presenter mode's font on 1024 columns): the text wraps.
+    const float width = std::min(io.DisplaySize.x * 0.95f, ImGui::GetFontSize() * 64.0f);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, io.DisplaySize.y * 0.95f));
     if (ImGui::Begin("Keyboard shortcuts (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+        ImGui::PushTextWrapPos(0.0f);
         ImGui::TextUnformatted("Letters, digits and the arrows act on the model. Tab or Enter takes the keyboard into the panel (a ring "
                                "marks the widget that has it); Esc or a click gives it back.\nWhile a field is being typed "
                                "in, only the function keys and the Ctrl shortcuts that do not edit text work.");
+        ImGui::PopTextWrapPos();
         if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+            ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 11.0f);
+            ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
             const std::vector<HelpRow> rows = helpRows();
             for (std::size_t i = 0; i < rows.size(); ++i) {
                 ImGui::TableNextRow();
@@ -35,7 +41,9 @@ void helpWindow(bool& open) {
                 ImGui::Selectable(rows[i].keys.c_str(), false, ImGuiSelectableFlags_SpanAllColumns);
                 ImGui::PopID();
                 ImGui::TableNextColumn();
+                ImGui::PushTextWrapPos(0.0f);
                 ImGui::TextUnformatted(rows[i].help.c_str());
+                ImGui::PopTextWrapPos();
             }
             ImGui::EndTable();
         }
