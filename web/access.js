@@ -298,14 +298,16 @@
 
   // The dialog the canvas shows (an error, unsaved changes), as an alertdialog with its buttons:
   // the focus goes into it, to its first (default) button, and back where it was once answered.
+  // (Its keys never reach the canvas: index.html stops them, and hands them to labAccessKey.)
   const box = document.getElementById('lab-dialog');
   let dialogReturn = null;
-  box.addEventListener('keydown', (e) => {
-    if (e.key !== 'Escape') return;
-    const last = box.querySelector('button:last-of-type'); // Cancel, or OK
+  // Esc in it answers its last button (Cancel, or OK), as on the canvas; Enter is its focused button's.
+  const dialogKey = (e) => {
+    if (e.key !== 'Escape' || !box.contains(e.target)) return false;
+    const last = box.querySelector('button:last-of-type');
     if (last) last.click();
-    e.preventDefault();
-  });
+    return true;
+  };
   function dialog(d) {
     const key = d ? JSON.stringify(d) : '';
     if (key === (box.dataset.shown || '')) return;
@@ -321,7 +323,9 @@
     box.replaceChildren(el('h2', { id: 'lab-dialog-title', text: d.title }), el('p', { id: 'lab-dialog-text', text: d.text }),
       ...d.buttons.map(button));
     box.hidden = false;
-    // (the focus stays where it is: the canvas's own dialog answers Enter and Esc there)
+    // The focus goes to its default button: Enter answers it, Esc the last (dialogKey), as on the canvas.
+    const first = box.querySelector('button');
+    if (first) first.focus();
   }
 
   // A description from the lab (every frame it changed).
@@ -365,5 +369,5 @@
   });
   root.addEventListener('focusout', (e) => { if (!root.contains(e.relatedTarget)) focusPath(''); });
   Module.labAccessKey = (e) => e.type === 'keydown' && ((e.target.getAttribute('role') === 'tab' && tabKey(e)) ||
-    (e.target.getAttribute('role') === 'spinbutton' && spinKey(e))) && (e.preventDefault(), true);
+    (e.target.getAttribute('role') === 'spinbutton' && spinKey(e)) || dialogKey(e)) && (e.preventDefault(), true);
 })();
