@@ -14,6 +14,7 @@
 #include "app/sweep_image.h"
 #include "app/value_readout.h"
 #include "app/viewport_cache.h"
+#include "core/exercise/preset_fields.h"
 #include "core/gltf/model_loader.h"
 #include "core/io/file_io.h"
 #include "core/io/paths.h"
@@ -44,6 +45,25 @@ const glm::vec3 kScreenshotBackground(0.09f, 0.09f, 0.11f); // between compare's
 } // namespace app_detail
 using namespace app_detail;
 
+// differenceLabels() of the last two scenes it was asked about: the captions' labels are the same
+// through the frames of a drag that changes neither field (a camera's, a light's marker).
+struct LabelMemo {
+    const DifferenceLabels& of(const Preset& a, const Preset& b, std::size_t most) {
+        if (!valid || most != mostShown || !(a == sceneA) || !(b == sceneB)) {
+            labels = differenceLabels(a, b, most);
+            sceneA = a;
+            sceneB = b;
+            mostShown = most;
+            valid = true;
+        }
+        return labels;
+    }
+    Preset sceneA, sceneB;
+    std::size_t mostShown = 0;
+    DifferenceLabels labels;
+    bool valid = false;
+};
+
 struct App::Impl {
     AppOptions options;
     Workspace workspace;
@@ -58,7 +78,8 @@ struct App::Impl {
     ui::ViewportControls viewportControls;
     enum class Panels { All, PlotsOnly, None } panels = Panels::All; // Tab cycles
     bool showHelp = false, presenter = false, caption = false, lightShapes = true, showNotes = false, pointer = false;
-    bool notesWindow = false; // the speaker's notes in a window of their own (AppOptions::notesWindows)
+    bool notesWindow = false;
+    LabelMemo compareLabels, editedLabels; // the captions' A and B labels, the header's "edited: ..." // the speaker's notes in a window of their own (AppOptions::notesWindows)
     Theme theme = Theme::Dark; // the last frame's (the panel's radio buttons change panel.theme)
     bool themeChosen = false;  // by the user, in the panel
     // The frame time while the model changes, outside and in presenter mode (T toggles the one in use):

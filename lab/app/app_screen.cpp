@@ -61,12 +61,12 @@ ui::ScreenModel App::Impl::screenModel() {
                  readout.legend(workspace.view, workspace.a(), renders[0].range()), std::nullopt, false, false,
                  workspace.fitNote(), {}, {}, {}};
     if (m.b && !workspace.exercise()) {
-        DifferenceLabels labels = differenceLabels(*m.a, *m.b);
+        const DifferenceLabels& labels = compareLabels.of(*m.a, *m.b, 3);
         m.captions.labelA = printable(labels.a, true);
         m.captions.labelB = printable(labels.b, true);
     }
     if (doc.edited() && !workspace.exercise()) {
-        const DifferenceLabels changed = differenceLabels(doc.saved(), doc.preset, 2);
+        const DifferenceLabels& changed = editedLabels.of(doc.saved(), doc.preset, 2);
         m.captions.edited = changed.b.empty() ? std::string("set B") : printable(changed.b, true);
     }
     m.showNotes = &showNotes;
