@@ -171,7 +171,7 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
     m.captions.wipeDragged = m.viewportControls->drag == ViewportControls::Drag::Wipe;
     lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewportControls->light, m.lightShapes);
     captionStrips(m.captions, layout);
-    if (m.equation && !m.captions.exercise) {
+    if (m.equation && !m.captions.exercise && !*m.showHelp) { // (over the model, not over the help)
         equationOverlay(*m.a, m.b ? layout.halves[0] : layout.viewport);
     }
     if (m.pointer) {

@@ -29,7 +29,7 @@ void helpWindow(bool& open) {
                                "in, only the function keys and the Ctrl shortcuts that do not edit text work.");
         ImGui::PopTextWrapPos();
         if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-            ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 11.0f);
+            ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed); // as wide as its widest keys
             ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
             const std::vector<HelpRow> rows = helpRows();
             for (std::size_t i = 0; i < rows.size(); ++i) {
