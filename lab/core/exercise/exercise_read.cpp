@@ -8,6 +8,7 @@
 #include "core/io/suggest.h"
 #include "core/scene/file_header.h"
 #include "core/scene/limits.h"
+#include "core/scene/preset_reader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,27 +40,6 @@ struct Reading {
     Diagnostics& out;
     void error(std::string where, std::string message) { out.push_back({file, std::move(where), std::move(message)}); }
 };
-
-std::optional<PresetJson> parseJson(std::string_view text, const std::string& file, Diagnostics& diagnostics) {
-    if (std::optional<Diagnostic> problem = jsonTextProblem(text, file, kMaxJsonDepth)) {
-        diagnostics.push_back(std::move(*problem));
-        return std::nullopt;
-    }
-    try {
-        PresetJson json = PresetJson::parse(text);
-        if (!json.is_object()) {
-            diagnostics.push_back({file, "", "an exercise is a JSON object, got " + describe(json)});
-            return std::nullopt;
-        }
-        return json;
-    } catch (const PresetJson::parse_error& e) {
-        diagnostics.push_back({file, lineColumn(text, e.byte == 0 ? 0 : e.byte - 1),
-                               "invalid JSON: " + shortened(parseErrorDetail(e.what()), 200)});
-    } catch (const PresetJson::exception& e) {
-        diagnostics.push_back({file, "", "invalid JSON: " + shortened(e.what(), 200)});
-    }
-    return std::nullopt;
-}
 
 bool readHeader(const PresetJson& json, Reading& r) {
     if (std::optional<HeaderProblem> problem = fileHeaderProblem(json, kExerciseFile)) {
@@ -299,7 +279,7 @@ void readHints(const PresetJson& hints, Exercise& e, Reading& r) {
 
 std::optional<Exercise> parseExercise(std::string_view text, const std::string& displayName,
                                       const std::optional<fs::path>& folder, Diagnostics& diagnostics) {
-    std::optional<PresetJson> json = parseJson(text, displayName, diagnostics);
+    std::optional<PresetJson> json = preset_detail::parseJsonObject(text, displayName, kMaxJsonDepth, "an exercise", diagnostics);
     if (!json) {
         return std::nullopt;
     }

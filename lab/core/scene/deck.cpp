@@ -124,22 +124,11 @@ bool isDeckText(std::string_view text) {
 
 std::optional<Deck> parseDeck(std::string_view text, const std::string& displayName, const fs::path& folder,
                               Diagnostics& diagnostics) {
-    if (std::optional<Diagnostic> problem = jsonTextProblem(text, displayName, kMaxDeckDepth)) {
-        diagnostics.push_back(std::move(*problem));
+    std::optional<Json> parsed = preset_detail::parseJsonObject(text, displayName, kMaxDeckDepth, "a deck", diagnostics);
+    if (!parsed) {
         return std::nullopt;
     }
-    Json json;
-    try {
-        json = Json::parse(text);
-    } catch (const Json::exception& e) {
-        const std::size_t at = e.id >= 101 && e.id <= 199 ? static_cast<const Json::parse_error&>(e).byte : 0;
-        diagnostics.push_back({displayName, at == 0 ? "" : lineColumn(text, at - 1), "invalid JSON: " + shortened(parseErrorDetail(e.what()), 200)});
-        return std::nullopt;
-    }
-    if (!json.is_object()) {
-        diagnostics.push_back({displayName, "", "a deck is a JSON object, got " + Reader::describe(json)});
-        return std::nullopt;
-    }
+    const Json& json = *parsed;
     if (std::optional<HeaderProblem> header = fileHeaderProblem(json, kDeckFile)) {
         diagnostics.push_back({displayName, header->key, header->message});
         return std::nullopt;

@@ -41,19 +41,13 @@ using Json = nlohmann::ordered_json;
 using preset_detail::Keys;
 using preset_detail::Reader;
 
-namespace {
-
 //----------------------------------------------------------------------------------------
 // Text to JSON
 //----------------------------------------------------------------------------------------
 
-// Deep nesting would recurse deeply in the JSON parser; no valid preset nests past 4.
-constexpr int kMaxJsonDepth = 32;
-
-// The JSON object `text` holds, or nullopt after one diagnostic: nested too deep, not JSON, a
-// number beyond a double, or not an object.
-std::optional<Json> parseObject(std::string_view text, const std::string& file, Diagnostics& diagnostics) {
-    if (std::optional<Diagnostic> problem = jsonTextProblem(text, file, kMaxJsonDepth)) {
+std::optional<Json> preset_detail::parseJsonObject(std::string_view text, const std::string& file, int maxDepth,
+                                                  std::string_view kind, Diagnostics& diagnostics) {
+    if (std::optional<Diagnostic> problem = jsonTextProblem(text, file, maxDepth)) {
         diagnostics.push_back(std::move(*problem));
         return std::nullopt;
     }
@@ -78,11 +72,16 @@ std::optional<Json> parseObject(std::string_view text, const std::string& file, 
         return std::nullopt;
     }
     if (!json.is_object()) {
-        diagnostics.push_back({file, "", "a preset is a JSON object, got " + Reader::describe(json)});
+        diagnostics.push_back({file, "", std::string(kind) + " is a JSON object, got " + Reader::describe(json)});
         return std::nullopt;
     }
     return json;
 }
+
+namespace {
+
+// Deep nesting would recurse deeply in the JSON parser; no valid preset nests past 4.
+constexpr int kMaxJsonDepth = 32;
 
 //----------------------------------------------------------------------------------------
 // The preset's sections
@@ -94,7 +93,6 @@ constexpr std::string_view kCheckViewKeys[] = {"view", "light"};
 
 void readCheck(Reader& r, CheckSettings& check);
 void readSweep(Reader& top, std::vector<std::string>& sweep);
-
 
 // model.gltf: a .gltf or .glb file in or below the preset's folder.
 void readGltfPath(Reader& r, Model& model, const std::optional<fs::path>& folder) {
@@ -261,13 +259,16 @@ void readRows(Reader& r, std::string_view object, Sections& s, LightDesc* light)
     r.finish(seen);
 }
 
-// The base of a preset's set B: the preset without what only the lecture reads.
-Preset compareBase(const Preset& preset) {
-    Preset base = preset;
-    base.display = {};
-    base.notes.clear();
-    base.compare.clear();
-    return base;
+// Set B: `patch` (the object `compare` holds, under r) read onto a copy of the preset without
+// what only the lecture reads, with the patch's rules (Sections::patch).
+Preset patchedCopy(Reader& r, const Preset& preset, const std::optional<fs::path>& folder) {
+    Preset b = preset;
+    b.display = {};
+    b.notes.clear();
+    b.compare.clear();
+    Sections sb{b, folder, true};
+    readRows(r, "", sb, nullptr);
+    return b;
 }
 
 // `compare`: set B as a patch of the preset's own fields, read onto a copy of it (so every value,
@@ -283,15 +284,12 @@ void readCompare(Reader& top, Sections& s) {
         return;
     }
     const std::size_t before = top.problems();
-    Preset b = compareBase(s.preset);
-    Sections sb{b, s.folder, true};
     Reader r = top.child(*json, top.pathOf("compare"));
-    readRows(r, "", sb, nullptr);
+    patchedCopy(r, s.preset, s.folder); // read for its problems; comparedPreset() makes B when it is wanted
     if (top.problems() == before) {
         s.preset.compare = json->dump();
     }
 }
-
 
 // `check.views`: view names ("d"), or {"view": "spot", "light": 2}; each name a view of
 // view_mode.h (whether it applies is asked where it is checked).
@@ -431,7 +429,7 @@ namespace {
 std::optional<Preset> readPreset(std::string_view text, const std::string& displayName, const std::string& where,
                                  bool inlined, const std::optional<fs::path>& folder, Diagnostics& diagnostics,
                                  OmittedKeys* omitted) {
-    std::optional<Json> json = parseObject(text, displayName, diagnostics);
+    std::optional<Json> json = preset_detail::parseJsonObject(text, displayName, kMaxJsonDepth, "a preset", diagnostics);
     if (!json) {
         return std::nullopt;
     }
@@ -502,18 +500,14 @@ void readDisplay(Reader& parent, OpeningDisplay& display) {
 
 std::optional<Preset> comparedPreset(const Preset& preset, const std::optional<fs::path>& folder,
                                      Diagnostics& diagnostics) {
-    Preset b = compareBase(preset);
-    if (preset.compare.empty()) {
-        return b;
-    }
-    std::optional<Json> json = parseObject(preset.compare, preset.name, diagnostics);
+    std::optional<Json> json = preset_detail::parseJsonObject(preset.compare.empty() ? "{}" : preset.compare, preset.name,
+                                                              kMaxJsonDepth, "a preset", diagnostics);
     if (!json) {
         return std::nullopt;
     }
     Diagnostics out;
     Reader r(*json, "compare", preset.name, out);
-    Sections sb{b, folder, true};
-    readRows(r, "", sb, nullptr);
+    Preset b = patchedCopy(r, preset, folder);
     if (!out.empty()) {
         diagnostics.insert(diagnostics.end(), out.begin(), out.end());
         return std::nullopt;

@@ -26,6 +26,14 @@ namespace lab::preset_detail {
 
 using Json = nlohmann::ordered_json;
 
+// The JSON object `text` holds, as `file`'s, or nullopt after one diagnostic: nested deeper than
+// `maxDepth` or holding a NUL (jsonTextProblem), not JSON (with its line and column), a number
+// beyond a double ("number out of range: 1e999"), or not an object ("<kind> is a JSON object, got
+// an array of 2"; `kind` is "a preset", "an exercise", "a deck"). The one way every file of the
+// lab's own formats becomes JSON (preset_read.cpp).
+std::optional<Json> parseJsonObject(std::string_view text, const std::string& file, int maxDepth, std::string_view kind,
+                                    Diagnostics& diagnostics);
+
 // What is wrong with `value`, read as `written`, for a float field within `range`; "" when nothing
 // is. The preset reader's check, which the page's field edits make too (field_edit.cpp), so that
 // both say the same of the same number: "number out of range: 1e39" (finite as a double, not as
