@@ -4,7 +4,6 @@
 
 #include "core/exercise/preset_fields.h"
 
-
 namespace lab {
 
 namespace {
@@ -12,10 +11,9 @@ namespace {
 // What the speaker's notes say of where the lecture is (ui/tools/notes.h).
 ui::NotesModel notesModel(const Workspace& ws) {
     ui::NotesModel m;
-    const std::vector<std::string> names = ws.slideNames();
     const int at = ws.currentSlide();
-    if (at >= 0 && at < static_cast<int>(names.size())) {
-        m.position = "Slide " + std::to_string(at + 1) + " of " + std::to_string(names.size()) + ": " + names[static_cast<std::size_t>(at)];
+    if (at >= 0 && at < ws.slideCount()) {
+        m.position = "Slide " + std::to_string(at + 1) + " of " + std::to_string(ws.slideCount()) + ": " + ws.slideName(at);
     } else {
         m.position = ws.document().displayName();
     }

@@ -136,7 +136,7 @@ bool Workspace::run(const Request& r) {
     case Command::NextPreset: stepPreset(+1); return true;
     case Command::OpenPresetAt: goToSlide(r.index); return true;
     case Command::FirstSlide: goToSlide(0); return true;
-    case Command::LastSlide: goToSlide(static_cast<int>(slideNames().size()) - 1); return true;
+    case Command::LastSlide: goToSlide(slideCount() - 1); return true;
     case Command::ResetSlide: resetSlide(); return true;
     case Command::OpenPath: open(r.path); return true;
     case Command::Save: save(r.path); return true;

@@ -100,6 +100,8 @@ public:
     // The list the panel shows and Left/Right step through: a deck's slides' titles, else the
     // preset list's file names; and the one open (-1 if none).
     std::vector<std::string> slideNames() const;
+    int slideCount() const;
+    std::string slideName(int index) const; // 0 <= index < slideCount()
     int currentSlide() const { return deck_ ? currentDeckSlide_ : currentPreset_; }
     // The shipped exercises (the first preset folder's exercises/), for the panel's list.
     const std::vector<std::filesystem::path>& exerciseFiles() const { return exerciseFiles_; }

@@ -10,16 +10,17 @@ namespace lab {
 
 namespace fs = std::filesystem;
 
+int Workspace::slideCount() const { return static_cast<int>(deck_ ? deck_->slides.size() : presetFiles_.size()); }
+
+std::string Workspace::slideName(int index) const {
+    const std::size_t i = static_cast<std::size_t>(index);
+    return deck_ ? slideTitle(deck_->slides[i]) : presetFiles_[i].stem().string();
+}
+
 std::vector<std::string> Workspace::slideNames() const {
     std::vector<std::string> names;
-    if (deck_) {
-        for (const Slide& slide : deck_->slides) {
-            names.push_back(slideTitle(slide));
-        }
-        return names;
-    }
-    for (const fs::path& file : presetFiles_) {
-        names.push_back(file.stem().string());
+    for (int i = 0; i < slideCount(); ++i) {
+        names.push_back(slideName(i));
     }
     return names;
 }
@@ -32,9 +33,8 @@ const std::string& Workspace::notes() const {
 }
 
 std::string Workspace::nextSlideTitle() const {
-    const std::vector<std::string> names = slideNames();
     const int next = currentSlide() + 1;
-    return onSlide() && next > 0 && next < static_cast<int>(names.size()) ? names[static_cast<std::size_t>(next)] : "";
+    return onSlide() && next > 0 && next < slideCount() ? slideName(next) : "";
 }
 
 std::string Workspace::slideKeyOf(const fs::path& file) const {
@@ -44,7 +44,7 @@ std::string Workspace::slideKeyOf(const fs::path& file) const {
 }
 
 void Workspace::stepPreset(int delta) {
-    const int n = static_cast<int>(deck_ ? deck_->slides.size() : presetFiles_.size());
+    const int n = slideCount();
     if (n == 0) {
         return;
     }
@@ -62,8 +62,7 @@ void Workspace::stepPreset(int delta) {
 }
 
 void Workspace::goToSlide(int index) {
-    const std::vector<std::string> names = slideNames();
-    if (index < 0 || index >= static_cast<int>(names.size())) {
+    if (index < 0 || index >= slideCount()) {
         return;
     }
     doc_.commit(false);
@@ -76,7 +75,7 @@ void Workspace::goToSlide(int index) {
     }
     // Off the list (an untitled scene, a file from elsewhere): nothing would keep its edits.
     pending_ = [this, index] { stepTo(index); };
-    question_ = "open " + names[static_cast<std::size_t>(index)];
+    question_ = "open " + slideName(index);
 }
 
 void Workspace::stepTo(int index) {
