@@ -247,19 +247,9 @@ std::string fieldName(std::string_view path, const FieldRow* row) {
 } // namespace
 
 DifferenceLabels differenceLabels(const Preset& a, const Preset& b, std::size_t most) {
-    auto scene = [](Preset p) {
-        p.camera = {};
-        p.name.clear();
-        p.description.clear();
-        p.display = {};
-        p.notes.clear();
-        p.compare.clear();
-        p.check = {};
-        p.sweep.clear();
-        return presetValue(p);
-    };
-    const PresetJson ja = scene(a), jb = scene(b);
-    const std::vector<std::string> changed = changedFields(ja, jb);
+    const PresetJson ja = presetValue(a), jb = presetValue(b);
+    std::vector<std::string> changed = changedFields(ja, jb);
+    std::erase_if(changed, [](const std::string& path) { return alwaysFree(path); }); // not the picture's
     DifferenceLabels labels;
     for (std::size_t i = 0; i < changed.size() && i < most; ++i) {
         const FieldRow* row = fieldRow(changed[i]);

@@ -46,7 +46,8 @@ const PresetJson* fieldAt(const PresetJson& json, std::string_view path);
 PresetJson mergePreset(PresetJson base, const PresetJson& patch);
 
 // What tells two sets apart, for compare mode's labels and `lab render`'s compare view: each
-// field of the scene that differs (the camera, the texts and the lecture's parts aside) as
+// field of the scene that differs (what alwaysFree() names aside: the camera, the texts, the plots,
+// the check and the lecture's parts) as
 // "label: value" — "normal matrix: model-view (wrong)" for `a`, "normal matrix: inverse-transpose
 // (correct)" for `b` — at most `most` of them, then "+N more"; both empty when nothing differs.
 struct DifferenceLabels {
