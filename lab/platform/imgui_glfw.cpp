@@ -67,6 +67,11 @@ void onRepaint(GLFWwindow* window) {
     inputOf(window).repaint = true;
 }
 
+void onNotesRepaint(GLFWwindow* window) {
+    inputOf(window).notesRepaint = true;
+    inputOf(window).changed = true;
+}
+
 void onDrop(GLFWwindow* window, int count, const char** paths) {
     for (int i = 0; i < count; ++i) {
         inputOf(window).queue.drop(paths[i]);
@@ -102,15 +107,8 @@ void queueKeysOf(GLFWwindow* window, PlatformInput* input) {
         inputOf(w).notesClosed = true;
         inputOf(w).changed = true;
     });
-    auto repaint = [](GLFWwindow* w) {
-        inputOf(w).notesRepaint = true;
-        inputOf(w).changed = true;
-    };
-    glfwSetWindowRefreshCallback(window, repaint);
-    glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) {
-        inputOf(w).notesRepaint = true;
-        inputOf(w).changed = true;
-    });
+    glfwSetWindowRefreshCallback(window, onNotesRepaint);
+    glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { onNotesRepaint(w); });
 }
 
 void takeQueuedInput(PlatformInput& input, FrameInput& in) {

@@ -15,6 +15,15 @@
 
 namespace lab::ui {
 
+namespace {
+
+// A window whose contents may be wider than it: what runs past its side is scrolled to, not cut.
+bool scrollsSideways(const ImGuiWindow& w) {
+    return (w.Flags & (ImGuiWindowFlags_HorizontalScrollbar | ImGuiWindowFlags_AlwaysHorizontalScrollbar)) != 0;
+}
+
+} // namespace
+
 WidgetMap& widgets() {
     static WidgetMap map;
     return map;
@@ -23,7 +32,7 @@ WidgetMap& widgets() {
 void WidgetMap::mark(const std::string& name) {
     ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
     rects_[name] = Rect{min.x, min.y, max.x - min.x, max.y - min.y};
-    if (const ImGuiWindow* w = ImGui::GetCurrentWindowRead(); w && !(w->Flags & ImGuiWindowFlags_HorizontalScrollbar) &&
+    if (const ImGuiWindow* w = ImGui::GetCurrentWindowRead(); w && !scrollsSideways(*w) &&
                                                              (max.x > w->InnerClipRect.Max.x + 1.0f || min.x < w->InnerClipRect.Min.x - 1.0f)) {
         rects_["clipped:" + name] = rects_[name]; // cut at the window's side (markClippedWindows())
     }
@@ -39,8 +48,7 @@ void WidgetMap::mark(const std::string& name) {
 
 void markClippedWindows() {
     for (ImGuiWindow* w : GImGui->Windows) {
-        const bool sideways = (w->Flags & (ImGuiWindowFlags_HorizontalScrollbar | ImGuiWindowFlags_AlwaysHorizontalScrollbar)) != 0;
-        if (!w->Active || w->Hidden || sideways || (w->Flags & ImGuiWindowFlags_Tooltip)) {
+        if (!w->Active || w->Hidden || scrollsSideways(*w) || (w->Flags & ImGuiWindowFlags_Tooltip)) {
             continue;
         }
         const float shown = w->InnerRect.GetWidth() - 2.0f * w->WindowPadding.x;

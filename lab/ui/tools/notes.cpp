@@ -11,6 +11,12 @@
 
 namespace lab::ui {
 
+namespace {
+
+constexpr const char* kNoNotes = "No notes for this slide (a deck's \"notes\", or the preset's).";
+
+} // namespace
+
 std::string wallClock() {
     std::time_t now = std::time(nullptr);
     char clock[16] = "";
@@ -33,7 +39,7 @@ void notesWindow(const NotesModel& m, bool& open, float x, float y, float width)
         ImGui::TextDisabled("%s   %s", printable(m.position, true).c_str(), m.clock.c_str());
         ImGui::Separator();
         if (m.notes.empty()) {
-            ImGui::TextDisabled("No notes for this slide (a deck's \"notes\", or the preset's).");
+            ImGui::TextDisabled("%s", kNoNotes);
         } else {
             ImGui::TextUnformatted(printable(m.notes).c_str());
         }
@@ -81,8 +87,7 @@ void notesScreen(const NotesModel& m) {
     const std::string next = m.next.empty() ? std::string("Last slide") : "Next: " + printable(m.next, true);
     const float foot = ImGui::GetTextLineHeightWithSpacing() * 2.0f + ImGui::GetStyle().ItemSpacing.y;
     const float height = std::max(ImGui::GetContentRegionAvail().y - foot, ImGui::GetTextLineHeight());
-    const std::string notes = m.notes.empty() ? std::string("No notes for this slide (a deck's \"notes\", or the preset's).")
-                                              : printable(m.notes);
+    const std::string notes = m.notes.empty() ? std::string(kNoNotes) : printable(m.notes);
     ImGui::BeginChild("notes-text", ImVec2(width, height));
     const float scrollbar = ImGui::GetStyle().ScrollbarSize;
     ImGui::SetWindowFontScale(fittingScale(notes, width - scrollbar, height));
