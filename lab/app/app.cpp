@@ -89,7 +89,20 @@ void App::Impl::carryOut(const Request& r) {
     case Command::FocusOpenPath: panel.focusOpenPath = true; break;
     case Command::PickFile: pickFile = true; break;
     case Command::CopyLink: copyLink = workspace.linkShareable(); break; // the page says whether the browser allowed it
-    case Command::ToggleShareCode: shareCode.shown = !shareCode.shown; break;
+    case Command::ToggleShareCode:
+        shareCode.shown = !shareCode.shown;
+        shareCode.address = options.shareBase;
+        shareCode.addressProblem.clear();
+        break;
+    case Command::SetShareBase:
+        shareCode.addressProblem = shareBaseProblem(r.path);
+        if (shareCode.addressProblem.empty() && r.path != options.shareBase) {
+            options.shareBase = r.path; // the code is made again for it (ShareCode::update)
+            if (options.shareBaseChosen) {
+                options.shareBaseChosen(r.path);
+            }
+        }
+        break;
     case Command::ToggleShaderEditor: shaderEditor.open = !shaderEditor.open; break;
     case Command::CompileShaders:
         if (shaderEditor.open) {

@@ -110,6 +110,10 @@ struct AppOptions {
     // The course page's address (https://.../lab/): the QR code (Q) opens the scene's link there.
     // The page gives its own; the desktop --share-base (remembered in the settings file).
     std::string shareBase;
+    // Called when the user gives the course page's address in the QR code's window (Command::SetShareBase,
+    // checked by shareBaseProblem): the desktop remembers it as --share-base. Without it the address
+    // is not editable there (the page's is its own).
+    std::function<void(const std::string&)> shareBaseChosen;
     // The theme at start (core/plots/theme.h): the UI's, the plots' and the exported figures'
     // colours; dark when none. The desktop's --theme (remembered), the page's prefers-color-scheme
     // or the visitor's earlier choice.

@@ -20,6 +20,7 @@
 #include "core/io/paths.h"
 #include "core/io/safe_text.h"
 #include "core/scene/light_orbit.h"
+#include "core/share/share_link.h"
 #include "render/renderer.h"
 #include "render/shader.h"
 #include "ui/dialogs.h"

@@ -84,7 +84,7 @@ ui::ScreenModel App::Impl::screenModel() {
         m.panelInfo.draft = &draftView;
     }
     if (shareCode.shown) {
-        m.shareCode = &shareCode.update(options.shareBase, workspace);
+        m.shareCode = &shareCode.update(options.shareBase, workspace, static_cast<bool>(options.shareBaseChosen));
         if (std::string why = shareCode.newProblem(); !why.empty()) {
             news.say(std::move(why)); // in the page's message log too
         }

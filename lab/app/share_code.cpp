@@ -7,7 +7,9 @@
 
 namespace lab {
 
-const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& workspace) {
+const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& workspace, bool editable) {
+    model_.address = editable ? &address : nullptr;
+    model_.addressProblem = addressProblem;
     const std::optional<ExerciseSession>& exercise = workspace.exercise();
     model_.title = exercise ? "Exercise: " + printable(exercise->exercise.title, true)
                             : printable(workspace.document().displayName(), true) +
@@ -24,9 +26,11 @@ const ui::ShareCodeModel& ShareCode::update(const std::string& base, Workspace& 
     model_.problem.clear();
     model_.waiting = false;
     if (url.empty()) {
-        model_.problem = "The QR code needs the course page's address. Start the lab once with\n"
-                         "  lab --share-base https://your-course.example.org/lab/\n"
-                         "(it is remembered), or use the page's Copy link.";
+        model_.problem = editable ? "The QR code needs the course page's address: type it below (it is remembered), or "
+                                    "start the lab once with\n  lab --share-base https://your-course.example.org/lab/"
+                                  : "The QR code needs the course page's address. Start the lab once with\n"
+                                    "  lab --share-base https://your-course.example.org/lab/\n"
+                                    "(it is remembered), or use the page's Copy link.";
         return model_;
     }
     // The page fetches the QR encoder the first time it is needed (core/share/qr_encoder.h): the link

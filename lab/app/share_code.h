@@ -19,7 +19,9 @@ namespace lab {
 class ShareCode {
 public:
     bool shown = false;
-    const ui::ShareCodeModel& update(const std::string& base, Workspace& workspace);
+    // The window's address field (the desktop: `editable`), and why the last address given was refused.
+    std::string address, addressProblem;
+    const ui::ShareCodeModel& update(const std::string& base, Workspace& workspace, bool editable);
     // Why there is no code, the first time it is so (then "" until the reason changes): for the
     // page's message log, since a screen reader does not read the window on the canvas. A wait (the
     // page fetching the QR encoder) is no reason.

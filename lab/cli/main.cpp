@@ -85,6 +85,12 @@ int runInteractive(const lab::CommandLine& line) {
         remember(settings, "--theme");
     }
     options.theme = settings.theme;
+    options.shareBaseChosen = [](const std::string& base) {
+        std::string ignored;
+        lab::Settings kept = remembered(ignored); // as it is now, the theme kept
+        kept.shareBase = base;
+        remember(kept, "the course page's address");
+    };
     options.themeChosen = [](lab::Theme theme) {
         std::string ignored;
         lab::Settings kept = remembered(ignored); // as it is now, share_base kept

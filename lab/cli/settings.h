@@ -8,6 +8,7 @@
 #pragma once
 
 #include "core/plots/theme.h"
+#include "core/share/share_link.h" // shareBaseProblem, which the settings check
 
 #include <filesystem>
 #include <optional>
@@ -28,10 +29,5 @@ std::optional<std::filesystem::path> settingsFile();
 Settings readSettings(const std::filesystem::path& file, std::string& warning);
 bool writeSettings(const Settings& settings, const std::filesystem::path& file, std::string& error);
 
-// Empty when `url` can be a course page's address, else why not: an http:// or https:// URL with
-// a host (no user name before it), in printable ASCII (0x21 to 0x7E) only, without the characters
-// a URL never holds raw (" < > \ ^ ` { | }), at most 2000 characters. A byte refused is named with
-// its offset; nothing is percent-encoded on the quiet, so the link printed is the one in the QR code.
-std::string shareBaseProblem(const std::string& url);
 
 } // namespace lab

@@ -88,6 +88,7 @@ constexpr std::array kRows = {
     CommandRow{C::AnswerDiscard,      0,                   kNoModifier,   "Discard",          ""},
     CommandRow{C::AnswerCancel,       0,                   kNoModifier,   "Cancel",           ""},
     CommandRow{C::CloseProblem,       0,                   kNoModifier,   "OK",               ""},
+    CommandRow{C::SetShareBase,       0,                   kNoModifier,   "Use",              ""},
 };
 // clang-format on
 

@@ -55,6 +55,8 @@ enum class Command {
     ExerciseReset, ExerciseHint, ExerciseLeave, MakeExercise, SaveExercise,
     // The dialogs' answers as buttons (the page's parallel DOM answers them so)
     AnswerSaveFirst, AnswerDiscard, AnswerCancel, CloseProblem,
+    // The QR code window's course address (Request::path), remembered where the platform can (AppOptions::shareBaseChosen)
+    SetShareBase,
     ToggleShareCode,
 };
 inline constexpr Command kLastCommand = Command::ToggleShareCode; // a new command goes before it, or becomes it
@@ -72,7 +74,7 @@ struct CommandRow {
 struct Request {
     Request(Command c, std::string p = {}, int i = -1) : command(c), path(std::move(p)), index(i) {}
     Command command;
-    std::string path; // OpenPath, SaveAs, LoadModel, SaveExercise; Save: the "Save as" field, for an untitled scene
+    std::string path; // OpenPath, SaveAs, LoadModel, SaveExercise, SetShareBase; Save: the "Save as" field, for an untitled scene
     int index = -1;   // OpenPresetAt
 };
 

@@ -207,11 +207,15 @@ void nextToolWindow(float columns, float lines, float share) {
 }
 
 // A path field with a button after it; Enter in the field or the button sends `command`.
-void pathField(const char* id, const char* hint, std::string& text, Command command, std::vector<Request>& requests) {
+void pathField(const char* id, const char* hint, std::string& text, Command command, std::vector<Request>& requests,
+               const char* fieldName) {
     const char* label = commandRow(command).label;
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize(label).x - ImGui::GetStyle().FramePadding.x * 2 -
                             ImGui::GetStyle().ItemSpacing.x);
     bool enter = ImGui::InputTextWithHint(id, hint, &text, ImGuiInputTextFlags_EnterReturnsTrue);
+    if (fieldName) {
+        mark(fieldName);
+    }
     ImGui::SameLine();
     if ((ImGui::Button(label) || enter) && !text.empty()) {
         requests.push_back({command, text});

@@ -29,8 +29,10 @@ bool sliderPageKeys(float& value, float min, float max, bool logarithmic);
 // a click appends the command to `requests`. Disabled (greyed) when `enabled` is false.
 bool commandButton(Command command, std::vector<Request>& requests, bool enabled = true);
 // A path field with a button after it (`command`'s label); Enter in the field or the button asks
-// for `command` with the field's text.
-void pathField(const char* id, const char* hint, std::string& text, Command command, std::vector<Request>& requests);
+// for `command` with the field's text. `fieldName`: the field's name in the widget map (mark()); the
+// last item, for a mark() after it, is the button.
+void pathField(const char* id, const char* hint, std::string& text, Command command, std::vector<Request>& requests,
+               const char* fieldName = nullptr);
 // SameLine() when an item `width` wide (a button labelled `label`) still fits on this line, so
 // rows of buttons wrap in a narrow panel (a phone) instead of running off its edge.
 void sameLineIfFits(float width);

@@ -286,6 +286,23 @@ TEST(GuiClassroom, PlotsAtTheProbeFollowTheDraggedMarkerAndLeaveThePreset) {
     EXPECT_TRUE(saved->preset == original->preset) << "plots at the probe changed the preset";
 }
 
+// What a real decoder (zbarimg) reads in `code`, written as a PNG into `folder`; "" when nothing.
+std::string decodedQr(const Image& code, const fs::path& folder) {
+    fs::path png = folder / "qr.png";
+    std::string error;
+    EXPECT_TRUE(writePng(code, png, error)) << error;
+    std::string command = std::string(LAB_ZBARIMG) + " --raw -q '" + png.string() + "' 2>/dev/null";
+    std::string decoded;
+    if (FILE* pipe = ::popen(command.c_str(), "r")) {
+        char buffer[1024];
+        while (std::fgets(buffer, sizeof buffer, pipe)) {
+            decoded += buffer;
+        }
+        ::pclose(pipe);
+    }
+    return decoded;
+}
+
 // Q: the scene's link on the course page (--share-base, remembered in the settings file) as a QR
 // code a phone reads: the code captured from the screen decodes, with a real decoder, to the link.
 TEST(GuiClassroom, TheQrCodeOnTheScreenDecodesToTheExercisesLinkOnTheCoursePage) {
@@ -299,20 +316,7 @@ TEST(GuiClassroom, TheQrCodeOnTheScreenDecodesToTheExercisesLinkOnTheCoursePage)
         lab.moveTo(view.cx(), view.cy());
         lab.press("q");
         ASSERT_TRUE(lab.has("share.qr"));
-        Image code = lab.capture(lab.widget("share.qr"));
-        fs::path png = config.path() / "qr.png";
-        std::string error;
-        ASSERT_TRUE(writePng(code, png, error)) << error;
-        std::string command = std::string(LAB_ZBARIMG) + " --raw -q '" + png.string() + "' 2>/dev/null";
-        std::string decoded;
-        if (FILE* pipe = ::popen(command.c_str(), "r")) {
-            char buffer[1024];
-            while (std::fgets(buffer, sizeof buffer, pipe)) {
-                decoded += buffer;
-            }
-            ::pclose(pipe);
-        }
-        EXPECT_EQ(decoded, "https://course.example.org/lab/#exercise=02-shininess\n");
+        EXPECT_EQ(decodedQr(lab.capture(lab.widget("share.qr")), config.path()), "https://course.example.org/lab/#exercise=02-shininess\n");
         lab.press("q");
         EXPECT_FALSE(lab.has("share.qr")) << "Q closes it again";
     }
@@ -320,6 +324,40 @@ TEST(GuiClassroom, TheQrCodeOnTheScreenDecodesToTheExercisesLinkOnTheCoursePage)
     EXPECT_NE(readText(config.path() / "lighting-lab" / "settings.json").find("https://course.example.org/lab/"),
               std::string::npos)
         << "--share-base is remembered";
+}
+
+// The course page's address typed in the QR code's window: one that is not an address is refused
+// there with the reason and no code; a good one makes the code at once and is remembered.
+TEST(GuiClassroom, TheCourseAddressIsGivenInTheQrWindowAndRemembered) {
+    TempFolder config;
+    ::setenv("XDG_CONFIG_HOME", config.path().c_str(), 1);
+    {
+        START_LAB(lab, "--preset", std::string(LAB_SOURCE_DIR "/presets/exercises/02-shininess.json"));
+        ::unsetenv("XDG_CONFIG_HOME");
+        Rect view = lab.widget("view");
+        lab.moveTo(view.cx(), view.cy());
+        lab.press("q");
+        ASSERT_TRUE(lab.has("share.problem") && lab.has("share.address")) << "no address yet: the window asks for one";
+        EXPECT_FALSE(lab.has("share.qr"));
+        Rect field = lab.widget("share.address");
+        lab.click(field.x + 10, field.cy());
+        lab.type("ftp://course.example.org/lab/");
+        lab.press("Return");
+        lab.settle();
+        EXPECT_TRUE(lab.has("share.address-problem")) << "an ftp:// address is refused, with its reason";
+        EXPECT_FALSE(lab.has("share.qr"));
+        lab.click(field.x + 10, field.cy());
+        lab.press("a", "Control_L"); // over the refused text
+        lab.type("https://course.example.org/lab/");
+        lab.press("Return");
+        lab.settle();
+        ASSERT_TRUE(lab.has("share.qr")) << "a good address makes the code";
+        EXPECT_FALSE(lab.has("share.address-problem"));
+        EXPECT_EQ(decodedQr(lab.capture(lab.widget("share.qr")), config.path()), "https://course.example.org/lab/#exercise=02-shininess\n");
+    }
+    EXPECT_NE(readText(config.path() / "lighting-lab" / "settings.json").find("https://course.example.org/lab/"),
+              std::string::npos)
+        << "the address given in the window is remembered";
 }
 
 // The themes: --theme light paints the UI in the light theme's colours (core/plots/theme.h), the

@@ -9,6 +9,9 @@
 #include <stb_image.h> // stbi_zlib_decode_buffer
 
 #include <cstdlib>
+#include <cstdio>
+#include <cctype>
+#include <algorithm>
 
 // stb_image_write's deflate, compiled into Debian's libstb (and the page's stb_impl.cpp) but not
 // declared in its header.
@@ -239,6 +242,52 @@ std::optional<Linked> parseLink(std::string_view fragment, const std::filesystem
     }
     diagnostics.push_back({file, "", "expected #preset=<name>, #exercise=<name>, #z=<scene>, #x=<exercise> or #p=<preset>"});
     return std::nullopt;
+}
+
+std::string shareBaseProblem(const std::string& url) {
+    // What the teacher reads is what the phone opens: printable ASCII only, nothing encoded on the
+    // quiet (a raw ESC was printed escaped but put into the QR code as the byte itself).
+    const std::string expected = "expected the course page's address, e.g. https://course.example.org/lab/";
+    if (url.size() > 2000) {
+        return expected + ", got " + std::to_string(url.size()) + " characters (at most 2000)";
+    }
+    for (std::size_t i = 0; i < url.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(url[i]);
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02X", c);
+        if (c < 0x21 || c > 0x7E) {
+            return "byte " + std::string(hex) + " at offset " + std::to_string(i) +
+                   " is not allowed: an address is printable ASCII (0x21 to 0x7E); percent-encode it where it "
+                   "belongs (%20 for a space)";
+        }
+        if (std::string_view("\"<>\\^`{|}").find(static_cast<char>(c)) != std::string_view::npos) {
+            return "'" + std::string(1, static_cast<char>(c)) + "' (" + hex + ") at offset " + std::to_string(i) +
+                   " is not allowed in an address; percent-encode it where it belongs";
+        }
+    }
+    std::string lower = url.substr(0, 8);
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::size_t schemeEnd = lower.starts_with("https://") ? 8 : lower.starts_with("http://") ? 7 : 0;
+    if (schemeEnd == 0) {
+        return expected + ", got " + inQuotes(url);
+    }
+    const std::string authority = url.substr(schemeEnd, url.find_first_of("/?#", schemeEnd) - schemeEnd);
+    if (authority.find('@') != std::string::npos) {
+        return "a user name in the address (before '@') is not allowed: it hides the host a student's phone opens";
+    }
+    std::size_t hostEnd = authority.starts_with("[") ? authority.find(']') + 1 : authority.find(':');
+    if (hostEnd == 0) { // "[" without "]"
+        return expected + ", got " + inQuotes(url) + ": '[' without ']'";
+    }
+    const std::string host = authority.substr(0, hostEnd), port = hostEnd < authority.size() ? authority.substr(hostEnd) : "";
+    if (host.empty()) {
+        return "no host after \"" + url.substr(0, schemeEnd) + "\": " + expected;
+    }
+    if (!port.empty() && (port.size() < 2 || port[0] != ':' ||
+                          !std::all_of(port.begin() + 1, port.end(), [](unsigned char c) { return std::isdigit(c); }))) {
+        return "the port " + inQuotes(port) + " is not a number: " + expected;
+    }
+    return {};
 }
 
 } // namespace lab

@@ -50,6 +50,12 @@ Exercise linkedExercise(Exercise exercise);
 // The address a link opens: `base` (its own fragment dropped) + "#" + fragment.
 std::string shareUrl(std::string_view base, std::string_view fragment);
 
+// Empty when `url` can be a course page's address, else why not: an http:// or https:// URL with
+// a host (no user name before it), in printable ASCII (0x21 to 0x7E) only, without the characters
+// a URL never holds raw (" < > \ ^ ` { | }), at most 2000 characters. A byte refused is named with
+// its offset; nothing is percent-encoded on the quiet, so the link printed is the one in the QR code.
+std::string shareBaseProblem(const std::string& url);
+
 struct LinkedPresetName {
     std::string name; // a bundled preset's file name without .json (letters, digits, '-', '_')
 };

@@ -94,10 +94,8 @@ void filesSection(const PanelInfo& info, PanelState& state, std::vector<Request>
     if (state.focusOpenPath) {
         ImGui::SetKeyboardFocusHere();
     }
-    pathField("##open", "path/to/preset.json", state.openPath, Command::OpenPath, requests);
-    mark("file.open-path");
-    pathField("##saveas", "path/to/new.json", state.saveAsPath, Command::SaveAs, requests);
-    mark("file.save-as-path");
+    pathField("##open", "path/to/preset.json", state.openPath, Command::OpenPath, requests, "file.open-path");
+    pathField("##saveas", "path/to/new.json", state.saveAsPath, Command::SaveAs, requests, "file.save-as-path");
 }
 
 void presetsSection(const PanelInfo& info, PanelState& state, std::vector<Request>& requests) {
@@ -260,8 +258,7 @@ void modelSource(Preset& p, const PanelInfo& info, PanelState& state, std::vecto
         }
     }
     if (!info.browser && !info.exercise) {
-        pathField("##model", "model.glb (or drop one on the window)", state.modelPath, Command::LoadModel, requests);
-        mark("model.path");
+        pathField("##model", "model.glb (or drop one on the window)", state.modelPath, Command::LoadModel, requests, "model.path");
     }
 }
 

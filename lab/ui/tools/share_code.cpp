@@ -24,7 +24,7 @@ void shareCodeWindow(const ShareCodeModel& m, std::vector<Request>& requests) {
     if (!m.title.empty()) {
         ImGui::TextUnformatted(m.title.c_str());
     }
-    const float lines = ImGui::GetTextLineHeightWithSpacing() * 4.0f;
+    const float lines = ImGui::GetTextLineHeightWithSpacing() * (m.address ? 7.0f : 4.0f);
     ImVec2 room = ImGui::GetContentRegionAvail();
     float codeSide = std::max(0.0f, std::min(room.x, room.y - lines));
     if (m.code && m.code->size > 0) {
@@ -54,6 +54,17 @@ void shareCodeWindow(const ShareCodeModel& m, std::vector<Request>& requests) {
         ImGui::TextUnformatted(m.problem.c_str());
         ImGui::PopTextWrapPos();
         mark("share.problem");
+    }
+    if (m.address) {
+        ImGui::TextDisabled("The course page's address (remembered):");
+        pathField("##share-address", "https://your-course.example.org/lab/", *m.address, Command::SetShareBase, requests,
+                  "share.address");
+        if (!m.addressProblem.empty()) {
+            ImGui::PushTextWrapPos(0.0f);
+            ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.45f, 1.0f), "%s", m.addressProblem.c_str());
+            ImGui::PopTextWrapPos();
+            mark("share.address-problem");
+        }
     }
     if (ImGui::Button("Close (Q)")) {
         requests.push_back({Command::ToggleShareCode});

@@ -19,9 +19,14 @@ struct ShareCodeModel {
     std::string problem;
     bool waiting = false; // `problem` says what is awaited (the page fetching the QR encoder), not a failure
     std::string title; // the scene's or the exercise's name
+    // The course page's address as the window's field edits it (the desktop); null where the address
+    // is the page's own. `addressProblem`: why the last one given was refused.
+    std::string* address = nullptr;
+    std::string addressProblem;
 };
 
-// A window over everything, centred; Q or its Close button asks to close it.
+// A window over everything, centred; Q or its Close button asks to close it. With an editable
+// address, a field for it under the code: Enter or Use asks for Command::SetShareBase.
 void shareCodeWindow(const ShareCodeModel& model, std::vector<Request>& requests);
 
 } // namespace lab::ui
