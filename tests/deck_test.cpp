@@ -22,12 +22,13 @@ std::optional<Preset> parse(const std::string& keys, Diagnostics& d) {
 
 TEST(PresetLecture, DisplayNotesAndCompareAreReadAndWrittenBack) {
     Diagnostics d;
-    std::optional<Preset> p = parse(R"("shading": "gouraud", "display": {"view": "n-dot-l", "light": 1, "wipe": true},
+    std::optional<Preset> p = parse(R"("shading": "gouraud", "display": {"view": "n-dot-l", "light": 1, "wipe": true, "plots": "energy"},
         "notes": "Say this.", "compare": {"shading": "phong", "material": {"shininess": 64}})", d);
     ASSERT_TRUE(p) << toString(d);
     EXPECT_EQ(p->display.view, "n-dot-l");
     EXPECT_TRUE(p->display.wipe);
     EXPECT_FALSE(p->display.compare);
+    EXPECT_EQ(p->display.plots, "energy");
     EXPECT_EQ(p->notes, "Say this.");
     std::optional<Preset> b = comparedPreset(*p, std::nullopt, d);
     ASSERT_TRUE(b) << toString(d);
@@ -43,6 +44,14 @@ TEST(PresetLecture, DisplayNotesAndCompareAreReadAndWrittenBack) {
     EXPECT_EQ(presetToJson(Preset{}).find("compare"), std::string::npos);
 }
 
+TEST(PresetLecture, AnUnknownPlotsTabIsNamedWithTheTabsThereAre) {
+    Diagnostics d;
+    EXPECT_FALSE(parse(R"("display": {"plots": "energie"})", d));
+    EXPECT_NE(toString(d).find("no plots tab \"energie\" (did you mean \"energy\"?); the tabs are plane, lobe3d, energy and slice"),
+              std::string::npos)
+        << toString(d);
+}
+
 TEST(PresetLecture, ACompareIsCheckedAsTheFileIsWithItsPath) {
     for (auto [keys, path] : {std::pair{R"("compare": {"shading": "gouroud"})", "compare.shading"},
                               std::pair{R"("compare": {"material": {"shininess": -1}})", "compare.material.shininess"},
@@ -53,7 +62,8 @@ TEST(PresetLecture, ACompareIsCheckedAsTheFileIsWithItsPath) {
                               std::pair{R"("compare": 3)", "compare"},
                               std::pair{R"("display": {"view": "n-dot-q"})", "display.view"},
                               std::pair{R"("display": {"light": 9})", "display.light"},
-                              std::pair{R"("display": {"colour": 1})", "display.colour"}}) {
+                              std::pair{R"("display": {"colour": 1})", "display.colour"},
+                              std::pair{R"("display": {"plots": "energie"})", "display.plots"}}) {
         Diagnostics d;
         EXPECT_FALSE(parse(keys, d)) << keys;
         EXPECT_NE(toString(d).find(path), std::string::npos) << keys << "\n" << toString(d);

@@ -43,6 +43,13 @@ void App::Impl::carryOut(const FrameInput& in, const ui::ScreenEvents& events) {
         exerciseShown = ex->opened;
         panel.tab = panel.tab == ui::PanelTab::Plots ? ui::PanelTab::Material : panel.tab;
     }
+    // A preset or a slide whose display names the plots' tab opens on it; one that names none leaves it.
+    if (workspace.scenesOpened() != plotsOpenedFor) {
+        plotsOpenedFor = workspace.scenesOpened();
+        if (std::optional<ui::PlotTab> tab = ui::plotTabNamed(workspace.openedDisplay().plots)) {
+            plots.view = *tab;
+        }
+    }
 }
 
 // The window's own commands; everything else goes to the workspace.

@@ -120,6 +120,7 @@ struct App::Impl {
     ui::DraftPanelModel draftView;
     ShareCode shareCode; // the scene's link as a QR code (Q)
     unsigned exerciseShown = 0; // the last exercise whose section the panel was turned to
+    unsigned plotsOpenedFor = 0; // the last scene opened (Workspace::scenesOpened) whose display.plots was applied
 
     // A side of the comparison as this frame shows it: A, and B in compare mode.
     struct ShownSide {

@@ -175,6 +175,8 @@ public:
     std::optional<Exercise> draftExercise(Diagnostics& diagnostics) const;
     // Counts the scenes opened (files, links): what belonged to the last scene can be dropped.
     unsigned scenesOpened() const { return scenesOpened_; }
+    // What the open document's file (or slide) says of its display (preset.h OpeningDisplay).
+    const OpeningDisplay& openedDisplay() const { return opened_; }
 
     //--- fitting (core/plots/fit.h, workspace_fit.cpp) -------------------------------------
     // What B is while it is the fit of A that a Fit command made and neither has changed since:

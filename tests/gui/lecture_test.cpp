@@ -186,6 +186,25 @@ TEST(GuiLecture, PresenterModeOnAProjectorCutsNoText) {
     }
 }
 
+// A preset's display.plots opens the plots window on that tab; the next preset (the shipped list's
+// first: none names a tab) leaves it.
+TEST(GuiLecture, ThePresetsDisplayOpensThePlotsOnItsTab) {
+    TempFolder dir;
+    std::string text = readText(preset("13-cook-torrance-beckmann-schlick"));
+    text.insert(text.rfind('}'), R"(, "display": {"plots": "energy"})");
+    writeText(dir.path() / "a.json", text);
+    START_LAB(lab, "--preset", (dir.path() / "a.json").string(), "--size", "1280x800");
+    EXPECT_TRUE(lab.has("plot.energy.readout")) << "the preset's display names the Energy tab";
+    Rect view = lab.widget("view");
+    lab.moveTo(view.cx(), view.cy());
+    lab.press("Right");
+    lab.settle();
+    EXPECT_TRUE(lab.has("plot.energy.readout")) << "a preset that names no tab leaves it as it was";
+    lab.click(lab.widget("plot.view.plane").cx(), lab.widget("plot.view.plane").cy());
+    lab.settle();
+    EXPECT_FALSE(lab.has("plot.energy.readout")) << "the tabs decide again once the preset is open";
+}
+
 TEST(GuiLecture, AViewThatIsConstantOnTheModelSaysSo) {
     TempFolder dir;
     std::string text = readText(preset("13-cook-torrance-beckmann-schlick"));

@@ -154,6 +154,9 @@ Json displayJson(const OpeningDisplay& d) {
     if (d.wireframe) {
         display["wireframe"] = true;
     }
+    if (!d.plots.empty()) {
+        display["plots"] = d.plots;
+    }
     return display;
 }
 

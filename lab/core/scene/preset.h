@@ -135,13 +135,17 @@ struct CheckSettings {
 // lab's display to this; what it leaves out is the default (the lit model, no wipe, no wireframe;
 // compare mode when the preset has `compare`). `lab render` draws its view and compare mode. The
 // view's name is checked when read; whether it applies to the preset where it is shown.
+// The plots window's tabs as `display.plots` names them, in the window's order (ui/plots/plots.h).
+inline constexpr std::string_view kPlotTabNames[] = {"plane", "lobe3d", "energy", "slice"};
+
 struct OpeningDisplay {
     std::string view;             // a view_mode.h name; "" the lit model
     int light = 1;                // the factor view's light, from 1
     std::optional<bool> compare;  // none: compare mode when the preset has `compare`
     bool wipe = false;
     bool wireframe = false;
-    bool empty() const { return view.empty() && light == 1 && !compare && !wipe && !wireframe; }
+    std::string plots;            // a kPlotTabNames name; "": the tab stays as it is
+    bool empty() const { return view.empty() && light == 1 && !compare && !wipe && !wireframe && plots.empty(); }
     bool operator==(const OpeningDisplay&) const = default;
 };
 

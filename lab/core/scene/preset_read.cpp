@@ -489,10 +489,15 @@ void readDisplayKeys(Reader& r, OpeningDisplay& display) {
     }
     r.readBool("wipe", display.wipe);
     r.readBool("wireframe", display.wireframe);
+    r.readString("plots", display.plots);
+    if (!display.plots.empty() && std::find(std::begin(kPlotTabNames), std::end(kPlotTabNames), display.plots) == std::end(kPlotTabNames)) {
+        r.error("plots", "no plots tab " + inQuotes(display.plots, 60) + suggestion(display.plots, kPlotTabNames) +
+                             "; the tabs are plane, lobe3d, energy and slice");
+    }
 }
 
 void readDisplay(Reader& parent, OpeningDisplay& display) {
-    static constexpr std::string_view kDisplayKeys[] = {"view", "light", "compare", "wipe", "wireframe"};
+    static constexpr std::string_view kDisplayKeys[] = {"view", "light", "compare", "wipe", "wireframe", "plots"};
     parent.readObject("display", kDisplayKeys, [&](Reader& r) { readDisplayKeys(r, display); });
 }
 

@@ -10,11 +10,14 @@
 
 #include <array>
 #include <optional>
+#include <string_view>
 
 namespace lab::ui {
 
-// The plots window's views, one tab each in this order (plots.cpp's table names and draws them).
+// The plots window's views, one tab each in this order (plots.cpp's table names and draws them; a
+// preset's display.plots names them as core/scene/preset.h's kPlotTabNames, in the same order).
 enum class PlotTab { Plane, Lobe3d, Energy, Slice };
+std::optional<PlotTab> plotTabNamed(std::string_view name);
 
 struct PlotSettings {
     PlotTab view = PlotTab::Plane;

@@ -32,7 +32,18 @@ const ViewEntry kViews[] = {
      [](Preset& a, const Preset* b, PlotSettings& s, const ProbeResult*, const ProbeLobe*) { slicePanel(a, b, s); }},
 };
 
+static_assert(std::size(kViews) == std::size(kPlotTabNames), "a plots tab without its name in display.plots, or one too many");
+
 } // namespace
+
+std::optional<PlotTab> plotTabNamed(std::string_view name) {
+    for (std::size_t i = 0; i < std::size(kPlotTabNames); ++i) {
+        if (kPlotTabNames[i] == name) {
+            return kViews[i].view;
+        }
+    }
+    return std::nullopt;
+}
 
 void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* probe, const ProbeLobe* point) {
     // A change in progress is not over while the pointer holds the widget making it (PlotCache).
