@@ -51,7 +51,9 @@ void markClippedWindows() {
         if (!w->Active || w->Hidden || scrollsSideways(*w) || (w->Flags & ImGuiWindowFlags_Tooltip)) {
             continue;
         }
-        const float shown = w->InnerRect.GetWidth() - 2.0f * w->WindowPadding.x;
+        // (plus a vertical scrollbar's width: a collapsing header's frame reaches under it, ImGui's own way;
+        // a marked widget cut there is still found by mark())
+        const float shown = w->InnerRect.GetWidth() - 2.0f * w->WindowPadding.x + w->ScrollbarSizes.x;
         // (an auto-resized window's ideal size is what it would take; another's, what it has)
         const float content = (w->Flags & ImGuiWindowFlags_AlwaysAutoResize) ? std::max(w->ContentSize.x, w->ContentSizeIdeal.x) : w->ContentSize.x;
         if (content > shown + 1.0f) {
@@ -182,10 +184,11 @@ void helpMarker(const char* text) {
     ImGui::PopID();
 }
 
-void sameLineIfFits(float width) {
-    float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width;
+void sameLineIfFits(float width, float spacing) {
+    const float gap = spacing < 0.0f ? ImGui::GetStyle().ItemSpacing.x : spacing;
+    float right = ImGui::GetItemRectMax().x + gap + width;
     if (right <= ImGui::GetCurrentWindowRead()->WorkRect.Max.x) { // (less a vertical scrollbar)
-        ImGui::SameLine();
+        ImGui::SameLine(0.0f, spacing);
     }
 }
 

@@ -35,7 +35,8 @@ void pathField(const char* id, const char* hint, std::string& text, Command comm
                const char* fieldName = nullptr);
 // SameLine() when an item `width` wide (a button labelled `label`) still fits on this line, so
 // rows of buttons wrap in a narrow panel (a phone) instead of running off its edge.
-void sameLineIfFits(float width);
+// `spacing`: the gap after the last item (< 0: the style's ItemSpacing).
+void sameLineIfFits(float width, float spacing = -1.0f);
 void sameLineIfFits(const char* buttonLabel);
 // ... for a radio button labelled `label`.
 void sameLineIfFitsRadio(const char* label);

@@ -152,10 +152,11 @@ std::vector<std::string> clipped(Lab& lab, const std::string& when) {
 }
 
 // A projector's screen in presenter mode with every panel shown (H until the panel is there): no
-// window and no widget is cut at a side, on any tab of the plots, nor in the help. (1280x800; at
-// 1024x768 the panel's BRDF rows and the plots' tab names are still cut: issue 50's note.)
+// window and no widget is cut at a side, on any tab of the plots, nor in the help. What this does not
+// see (issue 50's note): text the plots' readouts draw themselves (a token wider than the plots, as
+// the slice's at 1024x768), the tab names ImGui shortens, the header's own "...".
 TEST(GuiLecture, PresenterModeOnAProjectorCutsNoText) {
-    for (const std::string size : {"1280x800"}) {
+    for (const std::string size : {"1024x768", "1280x800"}) {
         for (const std::string name : {"13-cook-torrance-beckmann-schlick", "23-spot-light"}) {
             START_LAB(lab, "--preset", preset(name), "--presenter", "--size", size);
             lab.moveTo(lab.widget("view").cx(), lab.widget("view").cy());
@@ -174,13 +175,14 @@ TEST(GuiLecture, PresenterModeOnAProjectorCutsNoText) {
                     }
                 }
             }
+            keep(window(lab), "presenter-" + size + "-" + name);
             lab.moveTo(lab.widget("view").cx(), lab.widget("view").cy());
             lab.press("F1");
             lab.settle();
             for (std::string& c : clipped(lab, size + " " + name + " help")) {
                 cut.push_back(std::move(c));
             }
-            keep(window(lab), "presenter-" + size + "-" + name);
+            keep(window(lab), "presenter-" + size + "-" + name + "-help");
             EXPECT_TRUE(cut.empty()) << ::testing::PrintToString(cut);
         }
     }

@@ -8,16 +8,31 @@
 
 #include <algorithm>
 #include <string>
+#include <string_view>
 
 namespace lab::ui {
 
 namespace {
 
-// Text of the equation, on the line so far when it fits.
-void words(const char* text) {
-    sameLineIfFits(ImGui::CalcTextSize(text).x);
-    ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted(text);
+// Text of the equation, on the line so far while it fits, word by word (a space apart): a narrow
+// panel (presenter mode's font) wraps it instead of cutting it. `newLine`: it starts a line.
+void words(std::string_view text, bool newLine = false) {
+    const float space = ImGui::CalcTextSize(" ").x;
+    bool first = true;
+    while (!text.empty()) {
+        const std::size_t end = text.find(' ');
+        const std::string word(text.substr(0, end));
+        text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+        if (word.empty()) {
+            continue;
+        }
+        if (!(first && newLine)) {
+            sameLineIfFits(ImGui::CalcTextSize(word.c_str()).x, first ? -1.0f : space);
+        }
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextUnformatted(word.c_str());
+        first = false;
+    }
 }
 
 // A factor's button: shows its view (or the lit model again, when it is shown), highlighted while
@@ -95,7 +110,7 @@ void valueOptions(DisplaySettings& view) {
 void equationSection(const Preset& p, DisplaySettings& view) {
     lightChoice(p, view);
     // I = Ke + Ia Ka + sum over the lights of Ia_i Ka + Att spot (Id Kd N.L + Is Ks S)
-    words("I = Ke + Ia Ka + sum of  Ia Ka +");
+    words("I = Ke + Ia Ka + sum of  Ia Ka +", true);
     factor("Att", ViewMode::Attenuation, p, view);
     factor("spot", ViewMode::Spot, p, view);
     words("(Id Kd");

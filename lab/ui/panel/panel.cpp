@@ -343,14 +343,16 @@ void lightsSection(Preset& p, PanelState& state, const FieldGate& gate) {
             state.selectedLight = static_cast<int>(p.lights.size()) - 1;
         }
         mark("lights.add");
-        ImGui::SameLine();
+        sameLineIfFits("Remove");
         ImGui::BeginDisabled(p.lights.empty());
         if (ImGui::Button("Remove") && !p.lights.empty()) {
             p.lights.erase(p.lights.begin() + std::clamp(state.selectedLight, 0, static_cast<int>(p.lights.size()) - 1));
         }
         ImGui::EndDisabled();
-        ImGui::SameLine();
-        ImGui::TextDisabled("%zu of %d", p.lights.size(), limits::kMaxLights);
+        char count[32];
+        std::snprintf(count, sizeof count, "%zu of %d", p.lights.size(), limits::kMaxLights);
+        sameLineIfFits(ImGui::CalcTextSize(count).x);
+        ImGui::TextDisabled("%s", count);
     }
     if (p.lights.empty()) {
         disabledWrapped("No lights: only emissive and global ambient remain.");
