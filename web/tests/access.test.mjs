@@ -6,9 +6,8 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { createRequire } from 'node:module';
 import { PNG } from 'pngjs';
-import { withBrowser, newLabPage, settle, widgets, compare, frames, repo } from './page.mjs';
+import { withBrowser, newLabPage, settle, widgets, compare, frames, repo, axeViolations } from './page.mjs';
 
 const env = withBrowser();
 
@@ -18,7 +17,6 @@ async function openTab(page, name) {
   await page.keyboard.press('Enter');
 }
 
-const axePath = createRequire(import.meta.url).resolve('axe-core/axe.min.js');
 
 // The model's viewport as the page shows it.
 async function viewPixels(page) {
@@ -26,13 +24,6 @@ async function viewPixels(page) {
   return PNG.sync.read(await page.screenshot({ clip: { x: view.x, y: view.y, width: view.w, height: view.h } }));
 }
 
-// axe-core's WCAG 2.1 A and AA rules on the page as it is; the violations, one line each.
-async function axeViolations(page) {
-  await page.addScriptTag({ path: axePath });
-  const result = await page.evaluate(() => window.axe.run(document, {
-    runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'] } }));
-  return result.violations.map((v) => `${v.id} (${v.impact}): ${v.help} — ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(', ')}`);
-}
 
 // The controls the lab described, by path (a triplet's parts as path[i]).
 function describedControls(model) {

@@ -3,7 +3,7 @@
 // alertdialog in the parallel DOM that takes the focus, answers Enter and Esc, and gives it back.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withBrowser, newLabPage, settle, widgets, press, frames } from './page.mjs';
+import { withBrowser, newLabPage, settle, widgets, press, frames, axeViolations } from './page.mjs';
 
 const env = withBrowser();
 
@@ -51,6 +51,16 @@ test('a dialog the lab draws is an alertdialog in the page: the focus goes to it
     assert.ok(focused.inDialog, 'the focus went into the dialog');
     assert.equal(focused.text, 'OK', 'to its default button');
     assert.ok((await widgets(page)).error, 'the canvas shows the same dialog');
+    if (answer === 'Escape') { // once: the dialog as a screen reader meets it, and axe's WCAG 2.1 A/AA rules with it open
+      const tree = await page.accessibility.snapshot({ interestingOnly: false });
+      const find = (n) => n && (n.role === 'alertdialog' ? n : (n.children || []).map(find).find(Boolean));
+      const node = find(tree);
+      assert.ok(node, 'an alertdialog in the accessibility tree');
+      assert.equal(node.name, 'Error');
+      const has = (n, role, name) => n.role === role && n.name === name || (n.children || []).some((c) => has(c, role, name));
+      assert.ok(has(node, 'button', 'OK'), `its OK button: ${JSON.stringify(node)}`);
+      assert.deepEqual(await axeViolations(page), [], 'axe with the dialog open');
+    }
     await page.keyboard.press(answer);
     await settle(page);
     await page.waitForFunction(() => document.getElementById('lab-dialog').hidden, null, { timeout: 10000 });
