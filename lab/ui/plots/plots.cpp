@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lab::ui {
@@ -53,7 +54,16 @@ void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* 
     const ImVec2 padding = ImGui::GetStyle().FramePadding;
     const ImVec2 thin(padding.x, std::floor(padding.y * 0.35f));
     ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, thin);
+    // Tabs keep their whole names where the row is short of room (presenter mode on a projector):
+    // their text is drawn smaller (down to 0.7), not shortened to "3D l..." as ImGui would.
+    float names = 0.0f;
+    for (const ViewEntry& v : kViews) {
+        names += ImGui::CalcTextSize(v.name).x + 2.0f * thin.x + ImGui::GetStyle().ItemInnerSpacing.x;
+    }
+    const float tabScale = std::clamp(ImGui::GetContentRegionAvail().x / std::max(names * 1.05f, 1.0f), 0.7f, 1.0f);
+    ImGui::SetWindowFontScale(tabScale);
     if (!ImGui::BeginTabBar("plots.view")) {
+        ImGui::SetWindowFontScale(1.0f);
         ImGui::PopStyleVar();
         return;
     }
@@ -62,8 +72,14 @@ void plotsPanel(Preset& a, const Preset* b, PlotSettings& s, const ProbeResult* 
     const bool pending = s.shownView != static_cast<int>(s.view);
     for (const ViewEntry& v : kViews) {
         const bool select = pending && s.view == v.view;
+        ImGui::SetWindowFontScale(tabScale);
         const bool open = ImGui::BeginTabItem(v.name, nullptr, select ? ImGuiTabItemFlags_SetSelected : 0);
         mark(v.mark);
+        if (ImGui::GetItemRectSize().x + 1.0f < ImGui::CalcTextSize(v.name).x + 2.0f * thin.x) { // a name shortened: cut
+            widgets().set(std::string("clipped:") + v.mark, {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
+                                                             ImGui::GetItemRectSize().x, ImGui::GetItemRectSize().y});
+        }
+        ImGui::SetWindowFontScale(1.0f);
         if (open) {
             ImGui::PopStyleVar();
             if (!pending) {

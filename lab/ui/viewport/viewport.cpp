@@ -317,23 +317,49 @@ std::string fitText(const std::string& text, float width) {
     return text.substr(0, end) + "...";
 }
 
-// The header: which file and what the model shows (the view mode when it is not the lit image).
-// One line, whatever the window: the model's viewport keeps its size from preset to preset. Where
-// the line is too long the file's name gives way first ("13-cook-torr... *"), then the rest.
-std::string headerText(const CaptionStrips& m, float width) {
+// What the header says after the file's name: the set (outside compare mode, where each half's
+// label says it; `brief`: "Phong shading | Cook-Torrance"), the view when it is not the lit image,
+// what differs from the file.
+std::string headerRest(const CaptionStrips& m, bool brief) {
+    const std::string bar = brief ? " | " : "  |  ";
     std::string rest;
-    if (!m.b) { // in compare mode each half's label says it
-        rest += "  |  " + setSummary("", *m.a);
+    if (!m.b) {
+        rest += brief ? bar + label(m.a->shading) + " shading" + bar + label(m.a->brdf) : bar + setSummary("", *m.a);
     }
     if (m.viewMode != ViewMode::Lit) {
-        rest += std::string("  |  view ") + toString(m.viewMode);
+        rest += bar + (brief ? "" : "view ") + toString(m.viewMode);
     }
-    if (!m.edited.empty()) { // what differs from the file: the description and the goldens are of the file's
-        rest += "  |  edited: " + m.edited;
+    if (!m.edited.empty()) { // the description and the goldens are of the file's
+        rest += bar + "edited: " + m.edited;
     }
-    std::string dirty = m.dirty ? " *" : "";
-    float restWidth = ImGui::CalcTextSize((dirty + rest).c_str()).x;
-    return fitText(m.documentName, width - restWidth) + dirty + fitText(rest, width - ImGui::CalcTextSize("...").x * 1.5f);
+    return rest;
+}
+
+// The header: which file and what the model shows, on one line whatever the window, so that the
+// model's viewport keeps its size from preset to preset. Where the line is too long the file's name
+// gives way first ("13-cook-torr... *"), then the words ("Phong shading | Cook-Torrance"), then
+// the name altogether (presenter mode's caption says it), and last what the model shows, at its
+// end: `restCut` says so.
+std::string headerText(const CaptionStrips& m, float width, bool& restCut) {
+    const std::string dirty = m.dirty ? " *" : "";
+    const float dots = ImGui::CalcTextSize("...").x;
+    // Whether `rest` fits after the name given way to "..." (as fitText leaves it, a margin to spare).
+    auto fits = [&](const std::string& rest) { return ImGui::CalcTextSize((dirty + rest).c_str()).x + dots * 1.5f <= width; };
+    std::string rest = headerRest(m, false);
+    if (!fits(rest)) {
+        rest = headerRest(m, true);
+    }
+    restCut = false;
+    if (!fits(rest) && rest.size() > 3) {
+        std::string alone = dirty.empty() ? rest.substr(3) : "*" + rest; // "Phong shading | ..." without the name
+        std::string shown = fitText(alone, width);
+        restCut = shown != alone;
+        return shown;
+    }
+    const float restWidth = ImGui::CalcTextSize((dirty + rest).c_str()).x;
+    const std::string shown = fitText(rest, width - dots * 1.5f);
+    restCut = shown != rest;
+    return fitText(m.documentName, width - restWidth) + dirty + shown;
 }
 
 // The frame time, and the room it takes at the footer's right while it is shown.
@@ -365,21 +391,28 @@ struct Clip {
     ImDrawList* dl_;
 };
 
-// The preset's name (larger) and description, wrapped: the lecture's story. Its size at `width`.
-// A scene that differs from its file says so after its name: the description may no longer hold.
-ImVec2 captionSize(const Preset& p, bool edited, float width) {
-    float size = ImGui::GetFontSize(), pad = inset();
+// The preset's name (larger) and description, wrapped: the lecture's story. Its size at `width`,
+// its text at `scale` of the UI's font. A scene that differs from its file says so after its name:
+// the description may no longer hold.
+ImVec2 captionSize(const Preset& p, bool edited, float width, float scale = 1.0f) {
+    float size = ImGui::GetFontSize() * scale, pad = inset();
     const std::string name = printable(p.name, true) + (edited ? " (edited)" : ""), description = printable(p.description); // from the file
     float inner = std::max(width - 2 * pad, 1.0f);
     ImVec2 title = wrapped(name.c_str(), inner, size * 1.35f);
-    ImVec2 text = description.empty() ? ImVec2(0, 0) : wrapped(description.c_str(), inner);
+    ImVec2 text = description.empty() ? ImVec2(0, 0) : wrapped(description.c_str(), inner, size);
     return {std::max(title.x, text.x) + 2 * pad, title.y + (description.empty() ? 0.0f : text.y + 0.3f * size) + 2 * pad};
 }
 
+// Where the strip has less room than the caption takes (at most half the model's height), its text
+// is drawn smaller, down to 0.6 of the UI's font, rather than cut; smaller than that it is cut.
 void caption(const Preset& p, bool edited, const Rect& r, ImDrawList* dl) {
     Clip clip(dl, r);
+    float scale = 1.0f;
+    while (scale > 0.6f && captionSize(p, edited, r.w, scale).y > r.h + 1.0f) {
+        scale -= 0.05f;
+    }
     ImFont* font = ImGui::GetFont();
-    float size = ImGui::GetFontSize(), pad = inset(), inner = std::max(r.w - 2 * pad, 1.0f);
+    float size = ImGui::GetFontSize() * scale, pad = inset(), inner = std::max(r.w - 2 * pad, 1.0f);
     const std::string name = printable(p.name, true) + (edited ? " (edited)" : ""), description = printable(p.description);
     ImVec2 title = wrapped(name.c_str(), inner, size * 1.35f);
     dl->AddText(font, size * 1.35f, ImVec2(r.x + pad, r.y + pad), IM_COL32(255, 255, 255, 255), name.c_str(), nullptr, inner);
@@ -387,8 +420,11 @@ void caption(const Preset& p, bool edited, const Rect& r, ImDrawList* dl) {
         dl->AddText(font, size, ImVec2(r.x + pad, r.y + pad + title.y + 0.3f * size), IM_COL32(225, 225, 225, 255),
                     description.c_str(), nullptr, inner);
     }
-    ImVec2 used = captionSize(p, edited, r.w);
+    ImVec2 used = captionSize(p, edited, r.w, scale);
     textWidget("view.caption", {r.x, r.y, used.x, used.y}, r);
+    if (used.y > r.h + 1.0f) { // still more than its room at 0.6: its end is cut
+        widgets().set("clipped:view.caption", r);
+    }
 }
 
 void strip(const Rect& r, ImDrawList* dl) {
@@ -400,10 +436,23 @@ void strip(const Rect& r, ImDrawList* dl) {
 void header(const CaptionStrips& m, const Rect& r, ImDrawList* dl) {
     Clip clip(dl, r);
     float pad = inset();
-    std::string head = headerText(m, r.w - 2 * pad);
-    ImVec2 size = ImGui::CalcTextSize(head.c_str());
-    dl->AddText(ImVec2(r.x + pad, r.y + pad), IM_COL32(255, 255, 255, 215), head.c_str());
-    textWidget("view.header", {r.x + pad, r.y + pad, size.x, size.y}, r);
+    // What the model shows is never cut while a smaller text (down to 0.75 of the font) holds it.
+    bool cut = false;
+    float scale = 1.0f;
+    std::string head = headerText(m, r.w - 2 * pad, cut);
+    while (cut && scale > 0.75f) {
+        scale -= 0.05f;
+        head = headerText(m, (r.w - 2 * pad) / scale, cut);
+    }
+    const float size = ImGui::GetFontSize() * scale;
+    const ImVec2 text = ImGui::CalcTextSize(head.c_str());
+    const ImVec2 used(text.x * scale, text.y * scale);
+    dl->AddText(ImGui::GetFont(), size, ImVec2(r.x + pad, r.y + pad + (ImGui::GetFontSize() - size) * 0.5f),
+                IM_COL32(255, 255, 255, 215), head.c_str());
+    textWidget("view.header", {r.x + pad, r.y + pad, used.x, used.y}, r);
+    if (cut) { // what the model shows, cut even so
+        widgets().set("clipped:view.header", r);
+    }
 }
 
 // The toast at the footer's left, wrapped to its width; the frame time at its right while shown.
