@@ -338,13 +338,13 @@ std::string headerRest(const CaptionStrips& m, bool brief) {
 // The header: which file and what the model shows, on one line whatever the window, so that the
 // model's viewport keeps its size from preset to preset. Where the line is too long the file's name
 // gives way first ("13-cook-torr... *"), then the words ("Phong shading | Cook-Torrance"), then
-// the name altogether (presenter mode's caption says it), and last what the model shows, at its
+// the name altogether (the caption and the panel say it), and last what the model shows, at its
 // end: `restCut` says so.
 std::string headerText(const CaptionStrips& m, float width, bool& restCut) {
     const std::string dirty = m.dirty ? " *" : "";
     const float dots = ImGui::CalcTextSize("...").x;
-    // Whether `rest` fits after the name given way to "..." (as fitText leaves it, a margin to spare).
-    auto fits = [&](const std::string& rest) { return ImGui::CalcTextSize((dirty + rest).c_str()).x + dots * 1.5f <= width; };
+    // Whether `after` fits behind the name given way to "..." (as fitText leaves it, a margin to spare).
+    auto fits = [&](const std::string& after) { return ImGui::CalcTextSize((dirty + after).c_str()).x + dots * 1.5f <= width; };
     std::string rest = headerRest(m, false);
     if (!fits(rest)) {
         rest = headerRest(m, true);
