@@ -244,6 +244,23 @@ TEST(PageModel, RefusedEditsAreSaidAndNamedForTheirControls) {
     EXPECT_NE(notes.back().find("got \"--5\""), std::string::npos) << notes.back();
 }
 
+// The speaker's notes the canvas shows are in the page's description too (web/access.js renders
+// them as a region); none while the strip is closed.
+TEST(PageModel, TheSpeakersNotesAreDescribedWhileShown) {
+    Workspace ws{WorkspaceOptions{{kPresets}, {}, true, {}}};
+    ws.start(kPresets);
+    PageModel model;
+    PageFacts facts;
+    EXPECT_FALSE(json::parse(model.json(ws, facts)).contains("notes"));
+    const ui::NotesModel notes{"Slide 2 of 3: Diffuse", "Say \"Lambert\".", "Specular", "10:15"};
+    facts.notes = &notes;
+    const json page = json::parse(model.json(ws, facts));
+    ASSERT_TRUE(page.contains("notes"));
+    EXPECT_EQ(page["notes"]["position"], "Slide 2 of 3: Diffuse");
+    EXPECT_EQ(page["notes"]["text"], "Say \"Lambert\".");
+    EXPECT_EQ(page["notes"]["next"], "Specular");
+}
+
 TEST(PageModel, AnExerciseShowsOnlyItsOpenFieldsAndRefusesTheOthers) {
     Workspace ws{WorkspaceOptions{{kPresets}, {}, true, {}}};
     ws.start(kPresets);

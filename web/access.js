@@ -328,11 +328,22 @@
     if (first) first.focus();
   }
 
+  // The speaker's notes while the canvas shows them (S): the slide, its notes, the next slide.
+  function notes(n) {
+    const region = document.getElementById('lab-notes');
+    region.hidden = !n;
+    if (!n) return;
+    const set = (id, text) => { const e = document.getElementById(id); if (e.textContent !== text) e.textContent = text; };
+    set('lab-notes-position', n.position);
+    set('lab-notes-text', n.text || 'No notes for this slide.');
+    set('lab-notes-next', n.next ? 'Next: ' + n.next : 'The last slide.');
+  }
+
   // A description from the lab (every frame it changed).
   Module.labPage = (text) => {
     const m = JSON.parse(text);
     window.labPageModel = m; // the browser tests read it
-    const { title, pictures, messages: said, readouts, dialog: asked, ...structure } = m;
+    const { title, pictures, messages: said, readouts, dialog: asked, notes: spoken, ...structure } = m;
     const s = JSON.stringify(structure, (k, v) => (k === 'value' || k === 'current' || k === 'score' || k === 'solved') ? undefined : v);
     if (s !== shape) {
       shape = s;
@@ -351,6 +362,7 @@
     if (theme && theme !== document.activeElement) theme.value = m.theme;
     messages(m);
     dialog(asked);
+    notes(spoken);
     // The pictures' words once a change has settled (a second without one), not every frame.
     const p = JSON.stringify(m.pictures);
     if (!model || p !== JSON.stringify(model.pictures)) {

@@ -432,7 +432,8 @@ FrameOutput App::Impl::output(bool touch, const ui::ScreenModel& drawn, bool des
                                          q ? ui::unsavedQuestionText(drawn.captions.documentName, *q) : std::string(),
                                          probeWords(probe.shown() ? probe.result() : nullptr),
                                          legendWords(drawn.captions.legend), out.movingLights, toString(theme),
-                                         drawn.shareCode, tools.shader, tools.sweep, std::exchange(news, {})});
+                                         drawn.shareCode, tools.shader, tools.sweep, std::exchange(news, {}),
+                                         showNotes ? &drawn.notes : nullptr});
     }
     return out;
 }

@@ -384,6 +384,12 @@ const std::string& PageModel::json(Workspace& ws, const PageFacts& facts) {
         }
         w.close('}');
     }
+    // The speaker's notes the canvas shows (S), as the page's region (web/access.js notes): a student
+    // stepping through a deck with a screen reader reads them too.
+    if (facts.notes) {
+        w.key("notes").open('{').key("position").str(facts.notes->position).key("text").str(facts.notes->notes);
+        w.key("next").str(facts.notes->next).close('}');
+    }
     w.key("readouts").open('{').key("probe").str(facts.probe).key("legend").str(facts.legend);
     w.close('}').key("theme").str(facts.theme);
     w.key("messages").open('{').key("problem").str(facts.problem).key("said").open('[');

@@ -17,6 +17,7 @@
 #include "ui/layout.h"
 #include "ui/panel/exercise_panel.h"
 #include "ui/panel/panel.h"
+#include "ui/tools/notes.h"
 #include "ui/tools/shader_editor.h"
 #include "ui/tools/share_code.h"
 #include "ui/tools/sweep_view.h"
@@ -58,6 +59,7 @@ struct PageFacts {
     ui::ShaderEditorState* shader = nullptr;
     ui::SweepViewState* sweep = nullptr;
     PageNews news; // what was said and refused since the last description
+    const ui::NotesModel* notes = nullptr; // the speaker's notes while their strip is shown (S)
 };
 
 // The page's description of the lab (a JSON object; web/access.js reads it). The pictures' words

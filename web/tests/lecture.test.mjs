@@ -28,6 +28,12 @@ test('#deck=lecture opens the bundled deck; Right and Space step it after an edi
   await press(page, 's');
   const notes = (await widgets(page)).notes;
   assert.ok(notes && notes.w > 0, 'S shows the speaker notes');
+  // ... in the page's parallel DOM too, for a screen reader: the slide, its notes, the next one.
+  await page.waitForFunction(() => !document.getElementById('lab-notes').hidden, null, { timeout: 10000 });
+  const region = await page.getByRole('region', { name: 'Speaker notes' }).textContent();
+  assert.match(region, /Slide 3 of 28/, region);
+  assert.match(region, /Next: /, region);
+  assert.ok(region.length > 80, `the slide's notes are there: ${region}`);
   await press(page, 'S'); // Shift+S: the page has no second window, so the strip goes again
   assert.equal((await widgets(page)).notes, undefined, 'Shift+S on the page toggles the same strip');
   assert.deepEqual(problems, [], 'nothing uncaught, no console error');
