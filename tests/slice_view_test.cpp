@@ -162,6 +162,58 @@ TEST(SliceView, TheReadoutUnderThePointerIsTheExactValueWithLAndV) {
     ImGui::EndFrame();
 }
 
+// Where the images need the room, the readout is brief (no explanations), then cut to whole lines,
+// and a cut is named in the widget map; where there is room it is whole. Its words wrap, so none
+// runs past the plots' side.
+TEST(SliceView, TheReadoutGivesWayToTheImagesAndSaysWhenItIsCut) {
+    CpuImGui imgui(2.5f);
+    ImGui::GetIO().DisplaySize = ImVec2(1920, 1080);
+    ImGui::NewFrame();
+    const ui::plotkit::Pens p = ui::plotkit::pens();
+    ui::slice::Frame f;
+    f.images.inA = lobeInputs(blinnPhong(), 0.0f);
+    f.marker = planeToSlice(30.0f, 20.0f);
+    f.shown = ui::slice::Shown::A;
+    auto text = [&](const ui::slice::Frame& at) {
+        std::string t;
+        for (const ui::plotkit::Token& k : ui::slice::readout(at, ui::slice::Hover{}, p).tokens) {
+            t += k.text + "|";
+        }
+        return t;
+    };
+    const ui::slice::Placement roomy = ui::slice::placeReadout(f, ImVec2(0, 0), ImVec2(560, 1400), p);
+    EXPECT_FALSE(roomy.brief || roomy.cut);
+    EXPECT_NE(text(f).find("from N to H"), std::string::npos) << text(f);
+    const float whole = roomy.strip.w;
+    EXPECT_GE(whole, 5.0f * p.line) << "its long tokens wrap at 560 px and 2.5x";
+
+    const ui::slice::Placement tight = ui::slice::placeReadout(f, ImVec2(0, 0), ImVec2(560, whole + p.gap + 12.0f * p.line - 1.0f), p);
+    EXPECT_TRUE(tight.brief);
+    EXPECT_LT(tight.strip.w, whole);
+    EXPECT_GE(tight.images.w, 12.0f * p.line);
+    ui::slice::Frame brief = f;
+    brief.brief = true;
+    EXPECT_EQ(text(brief).find("from N to H"), std::string::npos) << text(brief);
+    EXPECT_NE(text(brief).find("off this slice|"), std::string::npos) << text(brief);
+
+    const ui::slice::Placement cut = ui::slice::placeReadout(f, ImVec2(0, 0), ImVec2(560, 13.0f * p.line), p);
+    EXPECT_TRUE(cut.brief && cut.cut);
+    EXPECT_GE(cut.images.w, 12.0f * p.line);
+    ImGui::EndFrame();
+
+    // Drawn in such a window, the cut is in the widget map; in a roomy one nothing is.
+    ui::PlotSettings settings;
+    settings.view = ui::PlotTab::Slice;
+    Preset a = blinnPhong();
+    const Outcome small = drawPlots({1360, 600, 560, 480}, 1920, 1080, a, nullptr, settings);
+    EXPECT_TRUE(rects(small.widgets).count("clipped:plot.slice.readout")) << small.widgets;
+    settings.shownView = -1;
+    const Outcome large = drawPlots({1360, 0, 560, 1080}, 1920, 1080, a, nullptr, settings);
+    for (const auto& [name, r] : rects(large.widgets)) {
+        EXPECT_NE(name.rfind("clipped:", 0), 0u) << name;
+    }
+}
+
 // The Slice view at every window and UI scale, alone and in compare mode: it fits and never scrolls;
 // compare mode shows A, B and A − B, or, where three do not fit, the choice between A | B and A − B.
 TEST(SliceView, FitsItsWindowAtEverySizeAndScale) {

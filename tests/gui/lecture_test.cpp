@@ -153,9 +153,8 @@ std::vector<std::string> clipped(Lab& lab, const std::string& when) {
 
 // A projector's screen in presenter mode with every panel shown (H until the panel is there): no
 // window and no widget is cut at a side, on any tab of the plots, nor in the help; no plots tab's
-// name shortened, no caption cut at its strip's end, and the header's "what the model shows" whole
-// (its file name may give way: the caption and the panel say it). Not seen here (issue 50's note):
-// a plots readout's token wider than the plots (the slice's), which the draw list clips.
+// name shortened, no readout word past the plots' side, no caption cut at its strip's end, and the
+// header's "what the model shows" whole (its file name may give way: the caption and the panel say it).
 TEST(GuiLecture, PresenterModeOnAProjectorCutsNoText) {
     for (const std::string size : {"1024x768", "1280x800"}) {
         for (const std::string name : {"13-cook-torrance-beckmann-schlick", "23-spot-light"}) {

@@ -3,6 +3,7 @@
 #include "ui/plots/plot_kit.h"
 
 #include "ui/theme_style.h"
+#include "ui/widget_map.h"
 #include "ui/widgets.h"
 
 #include <glm/geometric.hpp>
@@ -303,11 +304,59 @@ void Readout::measure(const Pens& p) {
     }
 }
 
+const Readout& Readout::flowed(float width, Readout& scratch) const {
+    auto tooWide = [&](const Token& t) { return t.width != kLineBreak && !t.swatch && t.width > width; };
+    if (std::none_of(tokens.begin(), tokens.end(), tooWide)) {
+        return *this;
+    }
+    scratch.tokens.clear();
+    scratch.widths.clear();
+    for (const Token& t : tokens) {
+        if (!tooWide(t)) {
+            scratch.tokens.push_back(t);
+            scratch.widths.push_back(t.width);
+            continue;
+        }
+        // As many words to a piece as fit in `width`, a space apart, as the text was.
+        std::string piece;
+        auto endPiece = [&] {
+            if (!piece.empty()) {
+                const float w = textSize(piece).x;
+                scratch.tokens.push_back({std::move(piece), t.ink, false, w});
+                scratch.widths.push_back(w);
+                piece.clear();
+            }
+        };
+        for (std::size_t at = 0; at < t.text.size();) {
+            const std::size_t space = t.text.find(' ', at);
+            const std::string word = t.text.substr(at, space == std::string::npos ? std::string::npos : space - at);
+            at = space == std::string::npos ? t.text.size() : space + 1;
+            if (word.empty()) {
+                continue;
+            }
+            if (!piece.empty() && textSize(piece + " " + word).x > width) {
+                endPiece();
+            }
+            piece += (piece.empty() ? "" : " ") + word;
+        }
+        endPiece();
+    }
+    return scratch;
+}
+
 float Readout::height(const Pens& p, float width) const {
-    return static_cast<float>(flowLines(widths, p.font * 0.5f, width)) * p.line;
+    Readout scratch;
+    return static_cast<float>(flowLines(flowed(width, scratch).widths, p.font * 0.5f, width)) * p.line;
 }
 
 void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width, PaintedLines* kept) const {
+    // A word wider than the plots is cut at their side: said in the widget map (markClippedWindows()),
+    // on every frame, painted or kept.
+    Readout scratch;
+    const Readout& f = flowed(width, scratch);
+    if (std::any_of(f.widths.begin(), f.widths.end(), [&](float w) { return w != kLineBreak && w > width + 1.0f; })) {
+        widgets().set("clipped:readout", {at.x, at.y, width, p.line});
+    }
     if (!kept) {
         drawTokens(dl, p, at, width);
         return;
@@ -325,9 +374,11 @@ void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width, Painte
 }
 
 void Readout::drawTokens(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const {
-    std::vector<FlowPlace> places = flowTokens(widths, p.font * 0.5f, width);
-    for (std::size_t i = 0; i < tokens.size(); ++i) {
-        const Token& t = tokens[i];
+    Readout scratch;
+    const Readout& f = flowed(width, scratch);
+    std::vector<FlowPlace> places = flowTokens(f.widths, p.font * 0.5f, width);
+    for (std::size_t i = 0; i < f.tokens.size(); ++i) {
+        const Token& t = f.tokens[i];
         if (t.width == kLineBreak) {
             continue;
         }

@@ -120,6 +120,10 @@ struct Readout {
 
 private:
     void drawTokens(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const;
+    // The tokens as they flow in `width`: this readout, or (into `scratch`) one whose tokens wider
+    // than `width` are broken at their spaces into pieces that fit, so that they wrap instead of
+    // running past the plots' side (presenter mode's font in a projector's narrow plots).
+    const Readout& flowed(float width, Readout& scratch) const;
 };
 
 // What the outer circle stands for, in words (in tokens that can wrap), with a warning when a

@@ -317,6 +317,7 @@ SliceKey keyOf(const Frame& f, const PlotSettings& s) {
 void drawView(PlotSettings& s, const Pens& p, Frame& f, ImVec2 origin, ImVec2 room) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const Placement at = placeReadout(f, origin, room, p);
+    f.brief = at.brief;
     f.layout = arrangeImages(at.images, f.shown, p);
     // The readout: what is under the pointer (found before the images are submitted).
     if (at.strip.w >= 1.0f) {
@@ -328,6 +329,9 @@ void drawView(PlotSettings& s, const Pens& p, Frame& f, ImVec2 origin, ImVec2 ro
         ImGui::SetCursorScreenPos(ImVec2(q.x, q.y));
         ImGui::Dummy(ImVec2(q.z, q.w));
         mark("plot.slice.readout");
+    }
+    if (at.cut) { // lines left out below the strip (or all of them): cut text, named as ui/widget_map.h says
+        widgets().set("clipped:plot.slice.readout", {at.strip.x, at.strip.y, room.x, std::max(at.strip.w, 1.0f)});
     }
     const ImVec4& area = f.layout.area;
     if (area.z < 1.0f || area.w < 1.0f) {

@@ -83,7 +83,7 @@ struct SliceState {
     // The readout strip's height (slice_parts.h readoutHeight: two readouts written and measured) for
     // the latest inputs it was asked for, at up to two widths a frame (whether three images fit, the view).
     struct ReadoutHeight {
-        bool made = false, hasB = false;
+        bool made = false, hasB = false, brief = false;
         LobeInputs a, b;
         PlotComponent component = PlotComponent::Specular;
         float markerH = 0.0f, markerD = 0.0f;

@@ -187,15 +187,20 @@ Readout readout(const Frame& f, const Hover& hover, const Pens& p) {
         hoverTokens(r, f, hover);
     } else {
         r.add(format("over an image: %s, %s, the value there, its L and V", kThetaH, kThetaD), Ink::Muted);
-        r.lineBreak();
-        r.add(format("%s: from N to H; %s: from H to L and V; \xcf\x86" "d = 90%s", kThetaH, kThetaD, kDeg), Ink::Muted);
+        if (!f.brief) {
+            r.lineBreak();
+            r.add(format("%s: from N to H; %s: from H to L and V; \xcf\x86" "d = 90%s", kThetaH, kThetaD, kDeg), Ink::Muted);
+        }
     }
     r.lineBreak();
     const SliceMarker& m = f.marker;
     r.add(format("plane plot (%si %.0f%s, V %+.0f%s): %s %.1f%s, %s %.1f%s", kTheta, double(std::fabs(f.incidentDeg)), kDeg,
                  double(f.viewerDeg), kDeg, kThetaH, double(m.thetaHDeg), kDeg, kThetaD, double(m.thetaDDeg), kDeg),
           Ink::Viewer);
-    r.add(m.onSlice ? "on this slice" : "off this slice (in the plane, \xcf\x86" "d is 0\xc2\xb0 or 180\xc2\xb0)", Ink::Muted);
+    r.add(m.onSlice ? "on this slice"
+                    : f.brief ? "off this slice"
+                              : "off this slice (in the plane, \xcf\x86" "d is 0\xc2\xb0 or 180\xc2\xb0)",
+          Ink::Muted);
     r.measure(p);
     return r;
 }
@@ -208,11 +213,11 @@ float readoutHeight(const Frame& f, const Pens& p, float width) {
     }
     // What the readouts' text depends on (the value at `over` too: the surfaces).
     const Images& im = f.images;
-    SliceState::ReadoutHeight now{true, im.b != nullptr, im.inA, im.b ? im.inB : LobeInputs{}, f.component,
+    SliceState::ReadoutHeight now{true, im.b != nullptr, f.brief, im.inA, im.b ? im.inB : LobeInputs{}, f.component,
                                   f.marker.thetaHDeg, f.marker.thetaDDeg, f.marker.onSlice, f.incidentDeg, f.viewerDeg,
                                   p.font, width, 0.0f};
     auto same = [&](const SliceState::ReadoutHeight& k) {
-        return k.made && k.hasB == now.hasB && k.a == now.a && k.b == now.b && k.component == now.component &&
+        return k.made && k.hasB == now.hasB && k.brief == now.brief && k.a == now.a && k.b == now.b && k.component == now.component &&
                k.markerH == now.markerH && k.markerD == now.markerD && k.onSlice == now.onSlice &&
                k.incidentDeg == now.incidentDeg && k.viewerDeg == now.viewerDeg && k.font == now.font && k.width == now.width;
     };
@@ -232,13 +237,36 @@ Placement placeReadout(const Frame& f, ImVec2 origin, ImVec2 room, const Pens& p
     Placement at;
     if (room.x > 1.6f * room.y) { // a low band: the readout beside the images
         const float w = std::clamp(0.35f * room.x, std::min(14.0f * p.font, 0.5f * room.x), 0.5f * room.x);
-        at.strip = ImVec4(origin.x + room.x - w, origin.y, w, std::min(readoutHeight(f, p, w), room.y));
+        float h = readoutHeight(f, p, w);
+        if (h > room.y) {
+            Frame brief = f;
+            brief.brief = at.brief = true;
+            h = readoutHeight(brief, p, w);
+            at.cut = h > room.y + 0.5f;
+        }
+        at.strip = ImVec4(origin.x + room.x - w, origin.y, w, std::min(h, room.y));
         at.images = ImVec4(origin.x, origin.y, room.x - w - p.gapX, room.y);
         return at;
     }
+    // Whether a strip `h` high leaves the images their room.
+    auto roomy = [&](float h) {
+        const float top = h > 0.0f ? h + p.gap : 0.0f;
+        if (room.y - top < 12.0f * p.line) {
+            return false;
+        }
+        const Layout l = arrangeImages(ImVec4(origin.x, origin.y + top, room.x, room.y - top), f.shown, p);
+        return l.area.z > 0.0f && std::any_of(l.images.begin(), l.images.end(), [&](const ImVec4& r) { return r.z >= 3.0f * p.font; });
+    };
     float h = readoutHeight(f, p, room.x);
-    if (room.y - h - p.gap < 12.0f * p.line) {
-        h = std::max(std::floor((room.y - p.gap - 12.0f * p.line) / p.line), 0.0f) * p.line;
+    if (!roomy(h)) {
+        Frame brief = f;
+        brief.brief = at.brief = true;
+        h = readoutHeight(brief, p, room.x);
+        while (h > 0.0f && !roomy(h)) {
+            h = std::max(h - p.line, 0.0f);
+            h = h < p.line ? 0.0f : h;
+            at.cut = true;
+        }
     }
     at.strip = ImVec4(origin.x, origin.y, room.x, h);
     const float top = h > 0.0f ? h + p.gap : 0.0f;

@@ -53,6 +53,7 @@ struct Frame {
     Shown shown = Shown::A;
     Layout layout;
     SliceState* state = nullptr; // where readoutHeight keeps what it measured (none: measured each time)
+    bool brief = false;          // the readout without its explanations (placeReadout: where the images need the room)
 };
 
 // What the pointer is over: an image (-1 none) and the angles there (to 0.1°).
@@ -64,15 +65,19 @@ Hover hoverOf(const Layout& layout);
 
 // The readout: under the pointer θh, θd, the exact values (sliceValue), L and V; else what to do; and
 // where the plane plot's marker is. Its strip is as high as the higher of the two, so that nothing
-// moves as the pointer comes and goes.
+// moves as the pointer comes and goes. A brief one (f.brief) leaves out what the angles are and why
+// the marker is off the slice.
 plotkit::Readout readout(const Frame& f, const Hover& hover, const plotkit::Pens& p);
 float readoutHeight(const Frame& f, const plotkit::Pens& p, float width);
 
 // Where the readout and the images go in the region at `origin`: the readout a strip above the images,
-// in a low band a column at their right; where the strip would leave the images fewer than 12 lines,
-// it keeps only the whole lines that leave them those (its first: what is under the pointer).
+// in a low band a column at their right. Where the strip would leave the images (f.shown) too little
+// room (fewer than 12 lines, or a side under 3 em), the readout is brief; where even that is too high,
+// it keeps only the whole lines that leave them the room (its first: what is under the pointer), and
+// says so (`cut`: the view marks "clipped:readout").
 struct Placement {
     ImVec4 strip{0, 0, 0, 0}, images{0, 0, 0, 0};
+    bool brief = false, cut = false;
 };
 Placement placeReadout(const Frame& f, ImVec2 origin, ImVec2 room, const plotkit::Pens& p);
 
