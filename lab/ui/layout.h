@@ -19,6 +19,7 @@ namespace lab::ui {
 struct Rect {
     float x = 0, y = 0, w = 0, h = 0;
     bool contains(float px, float py) const { return px >= x && py >= y && px < x + w && py < y + h; }
+    bool overlaps(const Rect& o) const { return x < o.x + o.w && o.x < x + w && y < o.y + o.h && o.y < y + h; }
 };
 
 // The compact layout's tabs, in the order they are shown: the control panel in three parts and

@@ -169,10 +169,11 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
                                        wipe ? &m.view->wipeAt : nullptr);
     m.captions.wipeAt = wipe ? std::optional<float>(m.view->wipeAt) : std::nullopt;
     m.captions.wipeDragged = m.viewportControls->drag == ViewportControls::Drag::Wipe;
-    lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewportControls->light, m.lightShapes);
+    const std::vector<Rect> markers =
+        lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewportControls->light, m.lightShapes);
     captionStrips(m.captions, layout);
     if (m.equation && !m.captions.exercise && !*m.showHelp) { // (over the model, not over the help)
-        equationOverlay(*m.a, m.b ? layout.halves[0] : layout.viewport);
+        equationOverlay(*m.a, m.b ? layout.halves[0] : layout.viewport, markers); // (leaving the lights seen)
     }
     if (m.pointer) {
         roomPointer(events.pointerX, events.pointerY, layout.viewport);

@@ -101,7 +101,7 @@ std::string equationText(const Preset& preset) {
     return text;
 }
 
-void equationOverlay(const Preset& preset, const Rect& view) {
+void equationOverlay(const Preset& preset, const Rect& view, const std::vector<Rect>& keepClear) {
     if (view.w <= 0.0f || view.h <= 0.0f) {
         return;
     }
@@ -137,7 +137,13 @@ void equationOverlay(const Preset& preset, const Rect& view) {
             break;
         }
     }
-    const float x0 = view.x + std::max(pad, (view.w - widest) * 0.5f - pad), y0 = view.y + pad * 0.5f;
+    const float x0 = view.x + std::max(pad, (view.w - widest) * 0.5f - pad);
+    auto covered = [&](float y) {
+        const Rect band{x0 - pad, y, widest + 2.0f * pad, h};
+        return std::count_if(keepClear.begin(), keepClear.end(), [&](const Rect& r) { return band.overlaps(r); });
+    };
+    const float top = view.y + pad * 0.5f, bottom = view.y + view.h - h - pad * 0.5f;
+    const float y0 = covered(top) > covered(bottom) ? bottom : top;
     ImDrawList* dl = ImGui::GetForegroundDrawList();
     dl->PushClipRect(ImVec2(view.x, view.y), ImVec2(view.x + view.w, view.y + view.h), true);
     dl->AddRectFilled(ImVec2(x0 - pad, y0), ImVec2(x0 + widest + pad, y0 + h), IM_COL32(10, 10, 16, 215), 0.6f * pad);

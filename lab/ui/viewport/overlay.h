@@ -27,9 +27,10 @@ std::vector<EquationPiece> equationPieces(const Preset& preset);
 // The same as plain text, for the page and the tests ("... max(0, R·V)^n").
 std::string equationText(const Preset& preset);
 
-// The equation across the top of `view`, on a dark band, one line at the largest size that fits
-// (named "view.equation" for the GUI tests).
-void equationOverlay(const Preset& preset, const Rect& view);
+// The equation across the top of `view` (across its bottom where that covers fewer of `keepClear`,
+// the light markers), on a dark band, its lines at the largest size that leaves three quarters of
+// the model to be seen (named "view.equation" for the GUI tests).
+void equationOverlay(const Preset& preset, const Rect& view, const std::vector<Rect>& keepClear = {});
 
 // The pointer at (x, y) window units, while it is over `view`: a ring of `pointerRadius()`.
 void roomPointer(float x, float y, const Rect& view);

@@ -247,7 +247,7 @@ void directionalRays(const Preset& scene, const LightDesc& l, const Rect& r, int
     }
 }
 
-void marker(const LightDesc& l, ImVec2 at, bool outside, bool dragged, int number, ImDrawList* dl) {
+Rect marker(const LightDesc& l, ImVec2 at, bool outside, bool dragged, int number, ImDrawList* dl) {
     float radius = 7.0f * uiUnit();
     ImU32 ring = dragged ? IM_COL32(255, 255, 0, 255) : IM_COL32(255, 255, 255, 200);
     if (outside) { // hollow, at the edge: the light is out there
@@ -258,12 +258,15 @@ void marker(const LightDesc& l, ImVec2 at, bool outside, bool dragged, int numbe
     dl->AddCircle(at, radius + 1.5f, ring, 0, 2.0f);
     std::string label = std::to_string(number);
     dl->AddText(ImVec2(at.x + radius + 3, at.y - radius - 3), IM_COL32(255, 255, 255, 220), label.c_str());
-    widgets().set("view.light" + std::to_string(number), {at.x - radius, at.y - radius, 2 * radius, 2 * radius});
+    const Rect r{at.x - radius, at.y - radius, 2 * radius + 3 + ImGui::CalcTextSize(label.c_str()).x, 2 * radius};
+    widgets().set("view.light" + std::to_string(number), {r.x, r.y, 2 * radius, r.h});
+    return r; // with its number
 }
 
 } // namespace
 
-void lightMarkers(const Preset& scene, const Rect& r, int draggedLight, bool shapes) {
+std::vector<Rect> lightMarkers(const Preset& scene, const Rect& r, int draggedLight, bool shapes) {
+    std::vector<Rect> markers;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h), true);
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -280,9 +283,10 @@ void lightMarkers(const Preset& scene, const Rect& r, int draggedLight, bool sha
         }
         bool outside = false;
         ImVec2 at = markerPosition(scene, l.position, r, outside);
-        marker(l, at, outside, draggedLight == static_cast<int>(i), number, dl);
+        markers.push_back(marker(l, at, outside, draggedLight == static_cast<int>(i), number, dl));
     }
     dl->PopClipRect();
+    return markers;
 }
 
 namespace {

@@ -57,8 +57,9 @@ ViewportEvents viewportControls(Preset& scene, const Rect& active, const Rect& w
                         const glm::vec3* probePoint = nullptr, float* wipeAt = nullptr);
 
 // Numbered markers at the point and spot lights (window units, named for the GUI tests), and
-// with `shapes` the spot cones and the directional lights' rays.
-void lightMarkers(const Preset& scene, const Rect& r, int draggedLight, bool shapes);
+// with `shapes` the spot cones and the directional lights' rays; returns where the markers are
+// (each with its number), which the presenter's equation leaves seen.
+std::vector<Rect> lightMarkers(const Preset& scene, const Rect& r, int draggedLight, bool shapes);
 
 struct CaptionStrips {
     std::string documentName;
