@@ -1,7 +1,8 @@
 // gui_bench.cpp — the interactive lab as a user on a machine without a GPU feels it: the real
 // program in a real window (run it under Xvfb: `tools/dev bench` does), real X input, Mesa's
 // llvmpipe. Five rows of the README's Performance table:
-//   idle      the lab's CPU share over 5 s with no input (target: at most 2% of a core);
+//   idle      the lab's CPU share over 5 s with no input (target: at most 2% of a core), with the
+//             shipped deck's speaker notes in their own window (Shift+S) too;
 //   orbit     the time per frame while orbiting at 1280x800, with the 50 ms frame budget (the
 //             view drawn smaller while dragging) against --frame-budget 0 (always full size);
 //             target: at most 60 ms;
@@ -41,13 +42,21 @@ double cpuSeconds(pid_t pid) {
     return ticks / static_cast<double>(::sysconf(_SC_CLK_TCK));
 }
 
-double idleShare() {
-    Lab lab(kArgs);
+double idleShare(bool notesWindow = false) {
+    Lab lab(notesWindow ? std::vector<std::string>{"--size", "1280x800", "--deck", std::string(LAB_SOURCE_DIR) + "/presets/decks/lecture.json"} : kArgs);
     if (!lab.ready()) {
         return -1;
     }
     Rect view = lab.widget("view");
     lab.moveTo(view.cx(), view.cy());
+    if (notesWindow) {
+        lab.press("s", "Shift_L");
+        if (lab.x().findWindow("Speaker notes", 10.0) == 0) {
+            return -1;
+        }
+        lab.settle();
+        std::this_thread::sleep_for(std::chrono::milliseconds(500)); // its first frames drawn
+    }
     double before = cpuSeconds(lab.pid());
     std::this_thread::sleep_for(std::chrono::seconds(5));
     return (cpuSeconds(lab.pid()) - before) / 5.0;
@@ -152,7 +161,7 @@ double keyToScreenMs() {
 
 int main() {
     using namespace lab::test;
-    double idle = idleShare();
+    double idle = idleShare(), idleNotes = idleShare(true);
     double orbitBudget = orbitMs("50"), orbitFull = orbitMs("0");
     double lightBudget = lightOrbitMs("50"), lightFull = lightOrbitMs("0");
     double slider = sliderDragMs();
@@ -161,6 +170,8 @@ int main() {
     std::printf("\n| row | lab | baseline | target |\n|---|---|---|---|\n");
     std::printf("| idle CPU over 5 s, no input, 1280×800 | %.1f%% of a core | | ≤ 2%% %s |\n", 100.0 * idle,
                 idle >= 0 && idle <= 0.02 ? "met" : "MISSED");
+    std::printf("| idle CPU over 5 s, no input, 1280×800, the notes' window open | %.1f%% of a core | | ≤ 2%% %s |\n",
+                100.0 * idleNotes, idleNotes >= 0 && idleNotes <= 0.02 ? "met" : "MISSED");
     std::printf("| a frame while orbiting at 1280×800 (50 ms budget) against full resolution | %.0f ms | %.0f ms | ≤ 60 ms %s |\n",
                 orbitBudget, orbitFull, met(orbitBudget, 60));
     std::printf("| a frame while a light orbits at 1280×800 (50 ms budget) against full resolution | %.0f ms | %.0f ms | ≤ 50 ms %s |\n",
@@ -168,5 +179,5 @@ int main() {
     std::printf("| the whole GUI frame while dragging the shininess slider at 1280×800 | %.0f ms | | ≤ 50 ms %s |\n", slider,
                 met(slider, 50));
     std::printf("| key press to the screen showing it (median of 10) | %.0f ms | | |\n", key);
-    return idle < 0 || orbitBudget < 0 || orbitFull < 0 || lightBudget < 0 || lightFull < 0 || slider < 0 ? 1 : 0;
+    return idle < 0 || idleNotes < 0 || orbitBudget < 0 || orbitFull < 0 || lightBudget < 0 || lightFull < 0 || slider < 0 ? 1 : 0;
 }
