@@ -242,14 +242,24 @@ function(lab_configure_web_target target)
     "-sINCOMING_MODULE_JS_API=[canvas,print,printErr,onAbort,preRun]" -sTEXTDECODER=2
     # The bundled models stay out of lab.data: the site's models/ folder, fetched the first time a
     # preset names one (lab/core/io/site_files.h; the trefoil is 16.4 KB of gzip).
-    "--preload-file=${CMAKE_SOURCE_DIR}/presets@/presets" --exclude-file "${CMAKE_SOURCE_DIR}/presets/models"
+    # The presets, exercises and decks as compact JSON (tools/compact_presets.py: 0.45 KB less gzip).
+    "--preload-file=${CMAKE_BINARY_DIR}/presets-compact@/presets"
     "--preload-file=${font}@/fonts/DejaVuSans-ui.ttf")
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS "${font}")
+  find_package(Python3 REQUIRED COMPONENTS Interpreter)
   file(GLOB_RECURSE bundled CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/presets/*")
-  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${bundled})
+  set(compact_stamp "${CMAKE_BINARY_DIR}/presets-compact.stamp")
+  add_custom_command(OUTPUT "${compact_stamp}"
+    COMMAND Python3::Interpreter "${CMAKE_SOURCE_DIR}/tools/compact_presets.py" "${CMAKE_SOURCE_DIR}/presets"
+            "${CMAKE_BINARY_DIR}/presets-compact"
+    COMMAND "${CMAKE_COMMAND}" -E touch "${compact_stamp}"
+    DEPENDS ${bundled} "${CMAKE_SOURCE_DIR}/tools/compact_presets.py" VERBATIM)
+  add_custom_target(lab_presets_compact DEPENDS "${compact_stamp}")
+  add_dependencies(${target} lab_presets_compact)
+  # (and the bundled models, which the link's last step copies into the site)
+  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS "${compact_stamp}" ${bundled})
   # The page is written after each link, without its comments (tools/minify_page.py): a changed
   # page relinks, so the site never keeps an old one.
-  find_package(Python3 REQUIRED COMPONENTS Interpreter)
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS "${CMAKE_SOURCE_DIR}/web/index.html"
                                                              "${CMAKE_SOURCE_DIR}/tools/minify_page.py"
                                                              "${CMAKE_SOURCE_DIR}/web/access.js")
