@@ -240,8 +240,9 @@ function(lab_configure_web_target target)
     # lab.js reads only the Module properties index.html sets (and the file packager's preRun), and
     # decodes text with the TextDecoder every WebGL2 browser has: 0.4 KB less gzip (issue 40).
     "-sINCOMING_MODULE_JS_API=[canvas,print,printErr,onAbort,preRun]" -sTEXTDECODER=2
-    # The bundled models stay out of lab.data: the site's models/ folder, fetched the first time a
-    # preset names one (lab/core/io/site_files.h; the trefoil is 16.4 KB of gzip).
+    # The bundled models stay out of lab.data (compact_presets.py leaves out presets/models): the
+    # site's models/ folder, fetched the first time a preset names one (lab/core/io/site_files.h; the
+    # trefoil is 16.4 KB of gzip).
     # The presets, exercises and decks as compact JSON (tools/compact_presets.py: 0.45 KB less gzip).
     "--preload-file=${CMAKE_BINARY_DIR}/presets-compact@/presets"
     "--preload-file=${font}@/fonts/DejaVuSans-ui.ttf")
@@ -249,11 +250,15 @@ function(lab_configure_web_target target)
   find_package(Python3 REQUIRED COMPONENTS Interpreter)
   file(GLOB_RECURSE bundled CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/presets/*")
   set(compact_stamp "${CMAKE_BINARY_DIR}/presets-compact.stamp")
+  # The files' names, written only when they change: a preset deleted or renamed packs anew too.
+  set(compact_list "${CMAKE_BINARY_DIR}/presets-compact.list")
+  string(REPLACE ";" "\n" bundled_lines "${bundled}")
+  file(CONFIGURE OUTPUT "${compact_list}" CONTENT "${bundled_lines}\n" @ONLY)
   add_custom_command(OUTPUT "${compact_stamp}"
     COMMAND Python3::Interpreter "${CMAKE_SOURCE_DIR}/tools/compact_presets.py" "${CMAKE_SOURCE_DIR}/presets"
             "${CMAKE_BINARY_DIR}/presets-compact"
     COMMAND "${CMAKE_COMMAND}" -E touch "${compact_stamp}"
-    DEPENDS ${bundled} "${CMAKE_SOURCE_DIR}/tools/compact_presets.py" VERBATIM)
+    DEPENDS ${bundled} "${compact_list}" "${CMAKE_SOURCE_DIR}/tools/compact_presets.py" VERBATIM)
   add_custom_target(lab_presets_compact DEPENDS "${compact_stamp}")
   add_dependencies(${target} lab_presets_compact)
   # (and the bundled models, which the link's last step copies into the site)

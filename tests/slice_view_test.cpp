@@ -189,6 +189,7 @@ TEST(SliceView, TheReadoutGivesWayToTheImagesAndSaysWhenItIsCut) {
 
     const ui::slice::Placement tight = ui::slice::placeReadout(f, ImVec2(0, 0), ImVec2(560, whole + p.gap + 12.0f * p.line - 1.0f), p);
     EXPECT_TRUE(tight.brief);
+    EXPECT_FALSE(tight.cut) << "the brief readout fits whole";
     EXPECT_LT(tight.strip.w, whole);
     EXPECT_GE(tight.images.w, 12.0f * p.line);
     ui::slice::Frame brief = f;
@@ -198,6 +199,7 @@ TEST(SliceView, TheReadoutGivesWayToTheImagesAndSaysWhenItIsCut) {
 
     const ui::slice::Placement cut = ui::slice::placeReadout(f, ImVec2(0, 0), ImVec2(560, 13.0f * p.line), p);
     EXPECT_TRUE(cut.brief && cut.cut);
+    EXPECT_NEAR(std::fmod(cut.strip.w, p.line), 0.0f, 0.01f) << "whole lines";
     EXPECT_GE(cut.images.w, 12.0f * p.line);
     ImGui::EndFrame();
 
@@ -209,6 +211,7 @@ TEST(SliceView, TheReadoutGivesWayToTheImagesAndSaysWhenItIsCut) {
     EXPECT_TRUE(rects(small.widgets).count("clipped:plot.slice.readout")) << small.widgets;
     settings.shownView = -1;
     const Outcome large = drawPlots({1360, 0, 560, 1080}, 1920, 1080, a, nullptr, settings);
+    EXPECT_TRUE(rects(large.widgets).count("plot.slice.readout") && rects(large.widgets).count("plot.slice.a")) << large.widgets;
     for (const auto& [name, r] : rects(large.widgets)) {
         EXPECT_NE(name.rfind("clipped:", 0), 0u) << name;
     }

@@ -173,7 +173,12 @@ ScreenEvents drawScreen(const Layout& layout, ScreenModel& m) {
         lightMarkers(m.motion ? orbitedScene(*m.a, *m.motion) : *m.a, active, m.viewportControls->light, m.lightShapes);
     captionStrips(m.captions, layout);
     if (m.equation && !m.captions.exercise && !*m.showHelp) { // (over the model, not over the help)
-        equationOverlay(*m.a, m.b ? layout.halves[0] : layout.viewport, markers); // (leaving the lights seen)
+        const Rect& over = m.b ? layout.halves[0] : layout.viewport;
+        std::vector<Rect> keepClear = markers; // the lights, and the notes' strip at the view's bottom left
+        if (m.showNotes && *m.showNotes) {
+            keepClear.push_back({layout.viewport.x, layout.viewport.y + 0.75f * layout.viewport.h, 0.6f * layout.viewport.w, 0.25f * layout.viewport.h});
+        }
+        equationOverlay(*m.a, over, keepClear);
     }
     if (m.pointer) {
         roomPointer(events.pointerX, events.pointerY, layout.viewport);

@@ -1,6 +1,6 @@
 // gui_bench.cpp — the interactive lab as a user on a machine without a GPU feels it: the real
 // program in a real window (run it under Xvfb: `tools/dev bench` does), real X input, Mesa's
-// llvmpipe. Five rows of the README's Performance table:
+// llvmpipe. Six rows of the README's Performance table:
 //   idle      the lab's CPU share over 5 s with no input (target: at most 2% of a core), with the
 //             shipped deck's speaker notes in their own window (Shift+S) too;
 //   orbit     the time per frame while orbiting at 1280x800, with the 50 ms frame budget (the

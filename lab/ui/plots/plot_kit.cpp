@@ -350,8 +350,8 @@ float Readout::height(const Pens& p, float width) const {
 }
 
 void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width, PaintedLines* kept) const {
-    // A word wider than the plots is cut at their side: said in the widget map (markClippedWindows()),
-    // on every frame, painted or kept.
+    // A word wider than the plots is cut at their side: named in the widget map as cut text
+    // ("clipped:readout", ui/widget_map.h), on every frame, painted or kept.
     Readout scratch;
     const Readout& f = flowed(width, scratch);
     if (std::any_of(f.widths.begin(), f.widths.end(), [&](float w) { return w != kLineBreak && w > width + 1.0f; })) {

@@ -330,8 +330,8 @@ void drawView(PlotSettings& s, const Pens& p, Frame& f, ImVec2 origin, ImVec2 ro
         ImGui::Dummy(ImVec2(q.z, q.w));
         mark("plot.slice.readout");
     }
-    if (at.cut) { // lines left out below the strip (or all of them): cut text, named as ui/widget_map.h says
-        widgets().set("clipped:plot.slice.readout", {at.strip.x, at.strip.y, room.x, std::max(at.strip.w, 1.0f)});
+    if (at.cut) { // lines left out below the strip (or all of them): cut text, a "clipped:" name (ui/widget_map.h)
+        widgets().set("clipped:plot.slice.readout", {at.strip.x, at.strip.y, at.strip.z, std::max(at.strip.w, 1.0f)});
     }
     const ImVec4& area = f.layout.area;
     if (area.z < 1.0f || area.w < 1.0f) {

@@ -81,7 +81,8 @@ struct SliceState {
     LaggingDraft<std::array<LobeInputs, 2>> draft;
     bool draftHasB = false;
     // The readout strip's height (slice_parts.h readoutHeight: two readouts written and measured) for
-    // the latest inputs it was asked for, at up to two widths a frame (whether three images fit, the view).
+    // the latest inputs it was asked for, at up to two widths a frame (whether three images fit, the view),
+    // full or brief (slice_parts.h placeReadout).
     struct ReadoutHeight {
         bool made = false, hasB = false, brief = false;
         LobeInputs a, b;
@@ -91,7 +92,7 @@ struct SliceState {
         float incidentDeg = 0.0f, viewerDeg = 0.0f, font = 0.0f, width = 0.0f;
         float height = 0.0f;
     };
-    std::array<ReadoutHeight, 2> readoutHeights;
+    std::array<ReadoutHeight, 4> readoutHeights;
     // The scales of the images last drawn (each a scan of 8,281 values), found again while the images
     // and the component stay the same.
     struct Scales {

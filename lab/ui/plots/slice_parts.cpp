@@ -221,53 +221,57 @@ float readoutHeight(const Frame& f, const Pens& p, float width) {
                k.markerH == now.markerH && k.markerD == now.markerD && k.onSlice == now.onSlice &&
                k.incidentDeg == now.incidentDeg && k.viewerDeg == now.viewerDeg && k.font == now.font && k.width == now.width;
     };
-    std::array<SliceState::ReadoutHeight, 2>& kept = f.state->readoutHeights;
+    std::array<SliceState::ReadoutHeight, 4>& kept = f.state->readoutHeights;
     for (const SliceState::ReadoutHeight& k : kept) {
         if (same(k)) {
             return k.height;
         }
     }
     now.height = measured();
-    kept[1] = kept[0];
+    std::move_backward(kept.begin(), kept.end() - 1, kept.end()); // the oldest goes
     kept[0] = now;
     return now.height;
 }
 
 Placement placeReadout(const Frame& f, ImVec2 origin, ImVec2 room, const Pens& p) {
     Placement at;
+    auto lines = [&](float h) { return static_cast<int>(std::lround(h / p.line)); }; // a readout is whole lines high
+    auto briefLines = [&](float w) {
+        Frame brief = f;
+        brief.brief = at.brief = true;
+        return lines(readoutHeight(brief, p, w));
+    };
     if (room.x > 1.6f * room.y) { // a low band: the readout beside the images
         const float w = std::clamp(0.35f * room.x, std::min(14.0f * p.font, 0.5f * room.x), 0.5f * room.x);
-        float h = readoutHeight(f, p, w);
-        if (h > room.y) {
-            Frame brief = f;
-            brief.brief = at.brief = true;
-            h = readoutHeight(brief, p, w);
-            at.cut = h > room.y + 0.5f;
-        }
-        at.strip = ImVec4(origin.x + room.x - w, origin.y, w, std::min(h, room.y));
+        const int most = static_cast<int>(std::floor(room.y / p.line));
+        int n = lines(readoutHeight(f, p, w));
+        n = n > most ? briefLines(w) : n;
+        at.cut = n > most;
+        at.strip = ImVec4(origin.x + room.x - w, origin.y, w, static_cast<float>(std::min(n, most)) * p.line);
         at.images = ImVec4(origin.x, origin.y, room.x - w - p.gapX, room.y);
         return at;
     }
-    // Whether a strip `h` high leaves the images their room.
-    auto roomy = [&](float h) {
-        const float top = h > 0.0f ? h + p.gap : 0.0f;
+    // Whether a strip of n lines leaves the images their room.
+    auto roomy = [&](int n) {
+        const float top = n > 0 ? static_cast<float>(n) * p.line + p.gap : 0.0f;
         if (room.y - top < 12.0f * p.line) {
             return false;
         }
         const Layout l = arrangeImages(ImVec4(origin.x, origin.y + top, room.x, room.y - top), f.shown, p);
         return l.area.z > 0.0f && std::any_of(l.images.begin(), l.images.end(), [&](const ImVec4& r) { return r.z >= 3.0f * p.font; });
     };
-    float h = readoutHeight(f, p, room.x);
-    if (!roomy(h)) {
-        Frame brief = f;
-        brief.brief = at.brief = true;
-        h = readoutHeight(brief, p, room.x);
-        while (h > 0.0f && !roomy(h)) {
-            h = std::max(h - p.line, 0.0f);
-            h = h < p.line ? 0.0f : h;
+    int n = lines(readoutHeight(f, p, room.x));
+    if (!roomy(n) && roomy(0)) { // the images can have their room: the brief readout, then fewer lines
+        n = briefLines(room.x);
+        for (; n > 0 && !roomy(n); --n) {
             at.cut = true;
         }
+    } else if (!roomy(n)) { // no strip gives images worth reading (a narrow column): the lines that leave 12
+        const int most = std::max(static_cast<int>(std::floor((room.y - p.gap - 12.0f * p.line) / p.line)), 0);
+        at.cut = n > most;
+        n = std::min(n, most);
     }
+    const float h = static_cast<float>(n) * p.line;
     at.strip = ImVec4(origin.x, origin.y, room.x, h);
     const float top = h > 0.0f ? h + p.gap : 0.0f;
     at.images = ImVec4(origin.x, origin.y + top, room.x, room.y - top);

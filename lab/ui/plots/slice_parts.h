@@ -74,7 +74,8 @@ float readoutHeight(const Frame& f, const plotkit::Pens& p, float width);
 // in a low band a column at their right. Where the strip would leave the images (f.shown) too little
 // room (fewer than 12 lines, or a side under 3 em), the readout is brief; where even that is too high,
 // it keeps only the whole lines that leave them the room (its first: what is under the pointer), and
-// says so (`cut`: the view marks "clipped:readout").
+// says so (`cut`: the view marks "clipped:plot.slice.readout"). In a column too narrow for such
+// images whatever the strip, the readout keeps the whole lines that leave 12.
 struct Placement {
     ImVec4 strip{0, 0, 0, 0}, images{0, 0, 0, 0};
     bool brief = false, cut = false;

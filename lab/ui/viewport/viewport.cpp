@@ -258,8 +258,9 @@ Rect marker(const LightDesc& l, ImVec2 at, bool outside, bool dragged, int numbe
     dl->AddCircle(at, radius + 1.5f, ring, 0, 2.0f);
     std::string label = std::to_string(number);
     dl->AddText(ImVec2(at.x + radius + 3, at.y - radius - 3), IM_COL32(255, 255, 255, 220), label.c_str());
-    const Rect r{at.x - radius, at.y - radius, 2 * radius + 3 + ImGui::CalcTextSize(label.c_str()).x, 2 * radius};
-    widgets().set("view.light" + std::to_string(number), {r.x, r.y, 2 * radius, r.h});
+    const float edge = 4.0f; // the ring's stroke and the number's lift
+    const Rect r{at.x - radius - edge, at.y - radius - edge, 2 * (radius + edge) + 3 + ImGui::CalcTextSize(label.c_str()).x, 2 * (radius + edge)};
+    widgets().set("view.light" + std::to_string(number), {at.x - radius, at.y - radius, 2 * radius, 2 * radius});
     return r; // with its number
 }
 
