@@ -184,6 +184,18 @@ void helpMarker(const char* text) {
     ImGui::PopID();
 }
 
+std::vector<std::string_view> spaceSeparated(std::string_view text) {
+    std::vector<std::string_view> words;
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t space = std::min(text.find(' ', at), text.size());
+        if (space > at) {
+            words.push_back(text.substr(at, space - at));
+        }
+        at = space + 1;
+    }
+    return words;
+}
+
 void sameLineIfFits(float width, float spacing) {
     const float gap = spacing < 0.0f ? ImGui::GetStyle().ItemSpacing.x : spacing;
     float right = ImGui::GetItemRectMax().x + gap + width;

@@ -12,6 +12,7 @@
 #include <imgui.h>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lab::ui {
@@ -40,6 +41,9 @@ void sameLineIfFits(float width, float spacing = -1.0f);
 void sameLineIfFits(const char* buttonLabel);
 // ... for a radio button labelled `label`.
 void sameLineIfFitsRadio(const char* label);
+// The words of `text`, a space apart (a run of spaces is one gap), in order: where a text too wide
+// for its room may break (the panel's equation, the plots' readouts).
+std::vector<std::string_view> spaceSeparated(std::string_view text);
 // Greyed text wrapped at the window's edge (a phone's panel is narrow).
 void disabledWrapped(const char* text);
 // A Selectable as wide as the window's room whose `text` (drawn as it is: no "##" in it) wraps

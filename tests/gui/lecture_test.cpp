@@ -193,14 +193,19 @@ TEST(GuiLecture, PresenterModeOnAProjectorCutsNoText) {
     }
 }
 
+// Preset 13 with `display` (a JSON object) as its opening display, written into `dir`: its path.
+std::string withDisplay(const TempFolder& dir, const std::string& display) {
+    std::string text = readText(preset("13-cook-torrance-beckmann-schlick"));
+    text.insert(text.rfind('}'), ", \"display\": " + display);
+    writeText(dir.path() / "with-display.json", text);
+    return (dir.path() / "with-display.json").string();
+}
+
 // A preset's display.plots opens the plots window on that tab; the next preset (the shipped list's
 // first: none names a tab) leaves it.
 TEST(GuiLecture, ThePresetsDisplayOpensThePlotsOnItsTab) {
     TempFolder dir;
-    std::string text = readText(preset("13-cook-torrance-beckmann-schlick"));
-    text.insert(text.rfind('}'), R"(, "display": {"plots": "energy"})");
-    writeText(dir.path() / "a.json", text);
-    START_LAB(lab, "--preset", (dir.path() / "a.json").string(), "--size", "1280x800");
+    START_LAB(lab, "--preset", withDisplay(dir, R"({"plots": "energy"})"), "--size", "1280x800");
     EXPECT_TRUE(lab.has("plot.energy.readout")) << "the preset's display names the Energy tab";
     Rect view = lab.widget("view");
     lab.moveTo(view.cx(), view.cy());
@@ -214,10 +219,7 @@ TEST(GuiLecture, ThePresetsDisplayOpensThePlotsOnItsTab) {
 
 TEST(GuiLecture, AViewThatIsConstantOnTheModelSaysSo) {
     TempFolder dir;
-    std::string text = readText(preset("13-cook-torrance-beckmann-schlick"));
-    text.insert(text.rfind('}'), R"(, "display": {"view": "f"})");
-    writeText(dir.path() / "f.json", text);
-    START_LAB(lab, "--preset", (dir.path() / "f.json").string(), "--size", "1280x800");
+    START_LAB(lab, "--preset", withDisplay(dir, R"({"view": "f"})"), "--size", "1280x800");
     ASSERT_TRUE(lab.has("view.legend")) << "the preset's display opens the F view";
     Rect legend = lab.widget("view.legend");
     EXPECT_GT(legend.w, 0);

@@ -491,8 +491,11 @@ void readDisplayKeys(Reader& r, OpeningDisplay& display) {
     r.readBool("wireframe", display.wireframe);
     r.readString("plots", display.plots);
     if (!display.plots.empty() && std::find(std::begin(kPlotTabNames), std::end(kPlotTabNames), display.plots) == std::end(kPlotTabNames)) {
-        r.error("plots", "no plots tab " + inQuotes(display.plots, 60) + suggestion(display.plots, kPlotTabNames) +
-                             "; the tabs are plane, lobe3d, energy and slice");
+        std::string tabs; // "plane, lobe3d, energy and slice", from the table
+        for (std::size_t i = 0; i < std::size(kPlotTabNames); ++i) {
+            tabs += (i == 0 ? "" : i + 1 == std::size(kPlotTabNames) ? " and " : ", ") + std::string(kPlotTabNames[i]);
+        }
+        r.error("plots", "no plots tab " + inQuotes(display.plots, 60) + suggestion(display.plots, kPlotTabNames) + "; the tabs are " + tabs);
     }
 }
 

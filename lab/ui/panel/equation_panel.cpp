@@ -19,18 +19,12 @@ namespace {
 void words(std::string_view text, bool newLine = false) {
     const float space = ImGui::CalcTextSize(" ").x;
     bool first = true;
-    while (!text.empty()) {
-        const std::size_t end = text.find(' ');
-        const std::string word(text.substr(0, end));
-        text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
-        if (word.empty()) {
-            continue;
-        }
+    for (std::string_view word : spaceSeparated(text)) {
         if (!(first && newLine)) {
-            sameLineIfFits(ImGui::CalcTextSize(word.c_str()).x, first ? -1.0f : space);
+            sameLineIfFits(ImGui::CalcTextSize(word.data(), word.data() + word.size()).x, first ? -1.0f : space);
         }
         ImGui::AlignTextToFramePadding();
-        ImGui::TextUnformatted(word.c_str());
+        ImGui::TextUnformatted(word.data(), word.data() + word.size());
         first = false;
     }
 }

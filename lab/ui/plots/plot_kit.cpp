@@ -327,17 +327,14 @@ const Readout& Readout::flowed(float width, Readout& scratch) const {
                 piece.clear();
             }
         };
-        for (std::size_t at = 0; at < t.text.size();) {
-            const std::size_t space = t.text.find(' ', at);
-            const std::string word = t.text.substr(at, space == std::string::npos ? std::string::npos : space - at);
-            at = space == std::string::npos ? t.text.size() : space + 1;
-            if (word.empty()) {
-                continue;
-            }
-            if (!piece.empty() && textSize(piece + " " + word).x > width) {
+        for (std::string_view word : spaceSeparated(t.text)) {
+            const std::string longer = piece.empty() ? std::string(word) : piece + " " + std::string(word);
+            if (!piece.empty() && textSize(longer).x > width) {
                 endPiece();
+                piece = word;
+            } else {
+                piece = longer;
             }
-            piece += (piece.empty() ? "" : " ") + word;
         }
         endPiece();
     }
@@ -358,7 +355,7 @@ void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width, Painte
         widgets().set("clipped:readout", {at.x, at.y, width, p.line});
     }
     if (!kept) {
-        drawTokens(dl, p, at, width);
+        f.drawTokens(dl, p, at, width);
         return;
     }
     // Everything the tokens' painting is made from.
@@ -370,15 +367,13 @@ void Readout::draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width, Painte
         describe(d, t.ink, color, t.swatch, t.width, length);
         d += t.text;
     }
-    drawKept(dl, d, *kept, [&] { drawTokens(dl, p, at, width); });
+    drawKept(dl, d, *kept, [&] { f.drawTokens(dl, p, at, width); });
 }
 
 void Readout::drawTokens(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const {
-    Readout scratch;
-    const Readout& f = flowed(width, scratch);
-    std::vector<FlowPlace> places = flowTokens(f.widths, p.font * 0.5f, width);
-    for (std::size_t i = 0; i < f.tokens.size(); ++i) {
-        const Token& t = f.tokens[i];
+    std::vector<FlowPlace> places = flowTokens(widths, p.font * 0.5f, width);
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const Token& t = tokens[i];
         if (t.width == kLineBreak) {
             continue;
         }

@@ -119,7 +119,7 @@ struct Readout {
     void draw(ImDrawList* dl, const Pens& p, ImVec2 at, float width, PaintedLines* kept = nullptr) const;
 
 private:
-    void drawTokens(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const;
+    void drawTokens(ImDrawList* dl, const Pens& p, ImVec2 at, float width) const; // of a flowed() readout
     // The tokens as they flow in `width`: this readout, or (into `scratch`) one whose tokens wider
     // than `width` are broken at their spaces into pieces that fit, so that they wrap instead of
     // running past the plots' side (presenter mode's font in a projector's narrow plots).
